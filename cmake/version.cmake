@@ -1,0 +1,14 @@
+# Writes build/generated/beamimpact/version.hpp with the project version and git description,
+# so every output can say which code produced it.
+find_package(Git QUIET)
+set(BEAMIMPACT_GIT "unknown")
+if(GIT_FOUND)
+  execute_process(COMMAND ${GIT_EXECUTABLE} describe --always --dirty --tags
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} OUTPUT_VARIABLE BEAMIMPACT_GIT
+    OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
+  if(NOT BEAMIMPACT_GIT)
+    set(BEAMIMPACT_GIT "unknown")
+  endif()
+endif()
+configure_file(${PROJECT_SOURCE_DIR}/cmake/version.hpp.in
+  ${PROJECT_BINARY_DIR}/generated/beamimpact/version.hpp @ONLY)

@@ -1,0 +1,132 @@
+#include "contact/ContactPair.hpp"
+
+#include <cmath>
+
+#include "scene/SceneError.hpp"
+
+namespace beamimpact {
+namespace {
+
+double dot(const Vec2& a, const Vec2& b) { return a[0] * b[0] + a[1] * b[1]; }
+Vec2 sub(const Vec2& a, const Vec2& b) { return {a[0] - b[0], a[1] - b[1]}; }
+
+/// Weights closer than this to a node snap to it (node-to-node): 1e-9 of an element.
+constexpr double kSnap = 1e-9;
+
+}  // namespace
+
+const char* to_string(ContactKind k) {
+  switch (k) {
+    case ContactKind::kEndToEnd: return "end_to_end";
+    case ContactKind::kNodeToNode: return "node_to_node";
+    default: return "node_to_surface";
+  }
+}
+
+ContactPair::ContactPair(const Model& model, const Scene& scene, int index) : model_(model) {
+  const Contact& c = scene.contacts[index];
+  const Body& tb = scene.bodies[c.target];
+  const std::string key = "contacts[" + std::to_string(index) + "]";
+  striker_ = model.node_id(c.striker, c.node);
+  target_body_ = c.target;
+  target_first_ = model.node_id(c.target, 0);
+  target_elements_ = tb.elements;
+  const Vec2 xs = model.node_position(striker_);
+  const double L = tb.length();
+  const Vec2 axis{(tb.end[0] - tb.start[0]) / L, (tb.end[1] - tb.start[1]) / L};
+  const Vec2 rel = sub(xs, tb.start);
+  const double along = dot(rel, axis);                      // m, along the target from its start
+  const double across = rel[0] * axis[1] - rel[1] * axis[0];  // m, signed distance from its axis
+  const double tol = 1e-9 * L;
+  if (std::abs(across) <= tol && (along < -tol || along > L + tol)) {
+    // Collinear: the striker node faces the target's nearer end.
+    kind_ = ContactKind::kEndToEnd;
+    const bool at_start = along < 0;
+    element_ = at_start ? 0 : tb.elements - 1;
+    xi1_ = at_start ? 1.0 : 0.0;
+    xi2_ = 1.0 - xi1_;
+    n_ = at_start ? Vec2{-axis[0], -axis[1]} : axis;
+    t_ = {n_[1], -n_[0]};
+  } else if (along >= -tol && along <= L + tol && std::abs(across) > tol) {
+    // The striker node faces the target's surface: normal across the axis, toward the striker.
+    const double sgn = across > 0 ? 1.0 : -1.0;  // across > 0: striker on the right of the axis
+    n_ = {sgn * axis[1], -sgn * axis[0]};
+    t_ = axis;
+    const double le = L / tb.elements;
+    const double s = std::clamp(along / le, 0.0, static_cast<double>(tb.elements));
+    element_ = std::min(static_cast<int>(s), tb.elements - 1);
+    xi2_ = s - element_;
+    if (xi2_ < kSnap) xi2_ = 0.0;
+    if (xi2_ > 1.0 - kSnap) xi2_ = 1.0;
+    xi1_ = 1.0 - xi2_;
+    kind_ = (xi2_ == 0.0 || xi2_ == 1.0) ? ContactKind::kNodeToNode : ContactKind::kNodeToSurface;
+  } else {
+    throw SceneError(scene.file, key + ".node",
+                     "the striker node of body '" + scene.bodies[c.striker].name +
+                         "' faces neither the surface nor an end of target '" + tb.name +
+                         "'; expected a node above the target's span or on its axis beyond an end");
+  }
+  const Vec2 x1 = model.node_position(target_first_ + element_);
+  const Vec2 x2 = model.node_position(target_first_ + element_ + 1);
+  const Vec2 xt{xi1_ * x1[0] + xi2_ * x2[0], xi1_ * x1[1] + xi2_ * x2[1]};
+  g0_ = dot(n_, sub(xs, xt));
+  if (g0_ < -tol)
+    throw SceneError(scene.file, key, "the striker node penetrates the target at t = 0 (gap " +
+                                          std::to_string(g0_) + " m); expected a gap >= 0");
+  build_rows();
+}
+
+void ContactPair::build_rows() {
+  auto row = [&](const Vec2& d, std::vector<DofTerm>& out) {
+    out = model_.project(striker_, d);
+    const int n1 = target_first_ + element_;
+    for (const auto& [w, node] : {std::pair{xi1_, n1}, std::pair{xi2_, n1 + 1}}) {
+      if (w == 0.0) continue;
+      for (DofTerm t : model_.project(node, d)) out.push_back({t.eq, -w * t.coeff});
+    }
+  };
+  row(n_, gn_);
+  row(t_, gt_);
+}
+
+double ContactPair::eval(const std::vector<DofTerm>& row, const Eigen::VectorXd& U) {
+  double s = 0.0;
+  for (const DofTerm& t : row) s += t.coeff * U(t.eq);
+  return s;
+}
+
+bool ContactPair::relocate(const Eigen::VectorXd& U) {
+  if (!can_slide()) return false;
+  const Vec2 us = model_.node_vector(U, striker_);
+  const Vec2 X = model_.node_position(striker_);
+  const Vec2 xs{X[0] + us[0], X[1] + us[1]};
+  // Walk from the current element toward the striker's projection (deformed target chord).
+  int e = element_;
+  for (int guard = 0; guard <= target_elements_; ++guard) {
+    const int n1 = target_first_ + e;
+    const Vec2 p1 = model_.node_position(n1), p2 = model_.node_position(n1 + 1);
+    const Vec2 u1 = model_.node_vector(U, n1), u2 = model_.node_vector(U, n1 + 1);
+    const Vec2 a{p1[0] + u1[0], p1[1] + u1[1]}, b{p2[0] + u2[0], p2[1] + u2[1]};
+    const Vec2 ab = sub(b, a);
+    const double x = dot(sub(xs, a), ab) / dot(ab, ab);
+    if (x < 0.0 && e > 0) { --e; continue; }
+    if (x > 1.0 && e < target_elements_ - 1) { ++e; continue; }
+    if (x < -kSnap || x > 1.0 + kSnap) return false;  // beyond the target's ends: keep the last point
+    const double xi2 = std::clamp(x, 0.0, 1.0);
+    if (e == element_ && xi2 == xi2_) return false;
+    element_ = e;
+    xi2_ = xi2;
+    xi1_ = 1.0 - xi2;
+    build_rows();
+    return true;
+  }
+  return false;
+}
+
+Vec2 ContactPair::target_vector(const Eigen::VectorXd& U) const {
+  const int n1 = target_first_ + element_;
+  const Vec2 u1 = model_.node_vector(U, n1), u2 = model_.node_vector(U, n1 + 1);
+  return {xi1_ * u1[0] + xi2_ * u2[0], xi1_ * u1[1] + xi2_ * u2[1]};
+}
+
+}  // namespace beamimpact

@@ -1,0 +1,75 @@
+#pragma once
+/// @file ContactPair.hpp
+/// @brief Geometry of one scene contact: where the striker node meets the target, the normal
+/// and tangent, and the constraint rows g(U) = g0 + G_n . U (normal gap) and s(U) = G_t . U
+/// (relative tangential displacement). Linear kinematics: normal and tangent are the target's
+/// reference axes; the struck point may slide and is then re-located every step.
+
+#include <string>
+#include <vector>
+
+#include "model/Model.hpp"
+
+namespace beamimpact {
+
+/// @brief Kind of contact found at t = 0.
+enum class ContactKind {
+  kEndToEnd,       ///< collinear bodies, the striker node against the target's end node
+  kNodeToNode,     ///< the striker node faces a node of the target's surface
+  kNodeToSurface,  ///< the striker node faces a point inside a target element (weights xi1, xi2)
+};
+
+/// @brief "end_to_end" | "node_to_node" | "node_to_surface".
+const char* to_string(ContactKind k);
+
+/// @brief One contact pair of the scene and its current contact point.
+class ContactPair {
+ public:
+  /// @brief Locates contact `index` of the scene in the model. Throws SceneError when the striker
+  /// node faces neither the target's surface nor its end, or penetrates it at t = 0.
+  ContactPair(const Model& model, const Scene& scene, int index);
+
+  /// @brief Kind found at t = 0.
+  ContactKind kind() const { return kind_; }
+  /// @brief Global node id of the striker node.
+  int striker_node() const { return striker_; }
+  /// @brief Target element (0-based within the target body) and weights of the struck point.
+  int element() const { return element_; }
+  double xi1() const { return xi1_; }
+  double xi2() const { return xi2_; }
+  /// @brief Unit normal of the target pointing to the striker, and tangent (n rotated -90 deg).
+  const Vec2& normal() const { return n_; }
+  const Vec2& tangent() const { return t_; }
+  /// @brief Gap at U = 0 (m).
+  double g0() const { return g0_; }
+  /// @brief True when the struck point can move along the target (surface contacts).
+  bool can_slide() const { return kind_ != ContactKind::kEndToEnd; }
+
+  /// @brief Normal row: g(U) = g0 + sum(coeff * U[eq]).
+  const std::vector<DofTerm>& normal_row() const { return gn_; }
+  /// @brief Tangential row: relative tangential displacement s(U) = sum(coeff * U[eq]).
+  const std::vector<DofTerm>& tangent_row() const { return gt_; }
+  /// @brief Evaluates a row on U.
+  static double eval(const std::vector<DofTerm>& row, const Eigen::VectorXd& U);
+
+  /// @brief Re-locates the struck point from the configuration U (for a sliding striker): the
+  /// element and weights under the striker node, walking across element boundaries. Returns
+  /// true when the point changed (rows rebuilt). False if the striker is beyond the target's ends.
+  bool relocate(const Eigen::VectorXd& U);
+
+  /// @brief Displacement of the struck point (interpolated) from U (m).
+  Vec2 target_vector(const Eigen::VectorXd& U) const;
+
+ private:
+  void build_rows();
+  const Model& model_;
+  ContactKind kind_ = ContactKind::kEndToEnd;
+  int striker_ = 0, target_body_ = 0, target_first_ = 0, target_elements_ = 0;
+  int element_ = 0;
+  double xi1_ = 1.0, xi2_ = 0.0;
+  Vec2 n_{}, t_{};
+  double g0_ = 0.0;
+  std::vector<DofTerm> gn_, gt_;
+};
+
+}  // namespace beamimpact

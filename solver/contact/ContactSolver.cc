@@ -1,0 +1,122 @@
+#include "contact/ContactSolver.hpp"
+
+#include <cmath>
+
+namespace beamimpact {
+
+ContactSolver::ContactSolver(std::vector<ContactPair>& pairs, std::vector<double> mu, bool friction,
+                             int n, double gap_tol, ApplyH apply_H)
+    : pairs_(pairs), mu_(std::move(mu)), friction_(friction), tol_(gap_tol), apply_H_(std::move(apply_H)),
+      out_(pairs.size()), hn_(pairs.size(), Eigen::VectorXd::Zero(n)),
+      ht_(friction ? pairs.size() : 0, Eigen::VectorXd::Zero(n)), fresh_(pairs.size(), 0),
+      scratch_(Eigen::VectorXd::Zero(n)) {}
+
+void ContactSolver::refresh_response(int c) {
+  if (fresh_[c]) return;
+  auto column = [&](const std::vector<DofTerm>& row, Eigen::VectorXd& out) {
+    scratch_.setZero();
+    for (const DofTerm& t : row) scratch_(t.eq) += t.coeff;
+    apply_H_(scratch_, out);
+  };
+  column(pairs_[c].normal_row(), hn_[c]);
+  if (friction_) column(pairs_[c].tangent_row(), ht_[c]);
+  fresh_[c] = 1;
+}
+
+const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Ubar, const Eigen::VectorXd& U) {
+  const int m = static_cast<int>(pairs_.size());
+  std::vector<double> gbar(m), sbar(m);
+  std::vector<char> active(m, 0);
+  any_ = false;
+  for (int c = 0; c < m; ++c) {
+    if (pairs_[c].relocate(Ubar)) fresh_[c] = 0;
+    const ContactPair& p = pairs_[c];
+    gbar[c] = p.g0() + ContactPair::eval(p.normal_row(), Ubar);
+    sbar[c] = friction_ ? ContactPair::eval(p.tangent_row(), Ubar) - ContactPair::eval(p.tangent_row(), U) : 0.0;
+    out_[c] = ContactForce{0.0, 0.0, gbar[c], sbar[c], ContactState::kOpen};
+    active[c] = gbar[c] < -tol_;
+    if (active[c]) refresh_response(c);
+  }
+  // Gauss-Seidel over contacts: each local solve sees the others' current forces.
+  for (int sweep = 0; sweep < (m > 1 ? 100 : 1); ++sweep) {
+    double change = 0.0;
+    for (int c = 0; c < m; ++c) {
+      if (!active[c]) continue;
+      const ContactPair& p = pairs_[c];
+      double g = gbar[c], s = sbar[c];
+      for (int d = 0; d < m; ++d) {  // effect of the other contacts' forces on this one
+        if (d == c || out_[d].state == ContactState::kOpen) continue;
+        g += out_[d].R * ContactPair::eval(p.normal_row(), hn_[d]);
+        if (friction_) {
+          g += out_[d].tau * ContactPair::eval(p.normal_row(), ht_[d]);
+          s += out_[d].R * ContactPair::eval(p.tangent_row(), hn_[d]) +
+               out_[d].tau * ContactPair::eval(p.tangent_row(), ht_[d]);
+        }
+      }
+      const double Ann = ContactPair::eval(p.normal_row(), hn_[c]);
+      ContactForce f{0.0, 0.0, g, s, ContactState::kOpen};
+      if (g < -tol_) {
+        if (!friction_ || mu_[c] == 0.0) {
+          f.R = -g / Ann;  // Eq. 20 in general form: the gap closes exactly
+          f.state = friction_ ? ContactState::kSlip : ContactState::kClosed;
+        } else {
+          const double Ant = ContactPair::eval(p.normal_row(), ht_[c]);
+          const double Atn = ContactPair::eval(p.tangent_row(), hn_[c]);
+          const double Att = ContactPair::eval(p.tangent_row(), ht_[c]);
+          // Stick: no relative tangential increment (Eq. 2 second line / Eq. 31).
+          const double det = Ann * Att - Ant * Atn;
+          const double Rs = (-g * Att + s * Ant) / det, Ts = (-s * Ann + g * Atn) / det;
+          if (Rs > 0.0 && std::abs(Ts) <= mu_[c] * Rs) {
+            f.R = Rs;
+            f.tau = Ts;
+            f.state = ContactState::kStick;
+          } else {
+            // Slip: tau opposes the sliding the stick force would have prevented.
+            const double sigma = Rs > 0.0 ? (Ts >= 0 ? 1.0 : -1.0) : (s > 0 ? -1.0 : 1.0);
+            const double R = -g / (Ann + sigma * mu_[c] * Ant);
+            if (R > 0.0) {
+              f.R = R;
+              f.tau = sigma * mu_[c] * R;
+              f.state = ContactState::kSlip;
+            }
+          }
+        }
+        if (f.state != ContactState::kOpen) {
+          f.gap_next = g + f.R * Ann + (friction_ ? f.tau * ContactPair::eval(p.normal_row(), ht_[c]) : 0.0);
+          if (friction_)
+            f.slip_next = s + f.R * ContactPair::eval(p.tangent_row(), hn_[c]) +
+                          f.tau * ContactPair::eval(p.tangent_row(), ht_[c]);
+        }
+      }
+      change = std::max(change, std::abs(f.R - out_[c].R) + std::abs(f.tau - out_[c].tau));
+      out_[c] = f;
+    }
+    if (change <= 1e-13 * (1.0 + std::abs(out_[0].R))) break;
+  }
+  // Gaps of contacts left open include the others' forces (for the history's gap column).
+  for (int c = 0; c < m; ++c) {
+    any_ |= out_[c].state != ContactState::kOpen;
+    if (out_[c].state == ContactState::kOpen && m > 1) {
+      double g = gbar[c];
+      for (int d = 0; d < m; ++d)
+        if (out_[d].state != ContactState::kOpen) {
+          refresh_response(d);
+          g += out_[d].R * ContactPair::eval(pairs_[c].normal_row(), hn_[d]);
+          if (friction_) g += out_[d].tau * ContactPair::eval(pairs_[c].normal_row(), ht_[d]);
+        }
+      out_[c].gap_next = g;
+    }
+  }
+  return out_;
+}
+
+void ContactSolver::add_forces(Eigen::VectorXd& f) const {
+  for (std::size_t c = 0; c < pairs_.size(); ++c) {
+    if (out_[c].state == ContactState::kOpen) continue;
+    for (const DofTerm& t : pairs_[c].normal_row()) f(t.eq) += t.coeff * out_[c].R;
+    if (friction_)
+      for (const DofTerm& t : pairs_[c].tangent_row()) f(t.eq) += t.coeff * out_[c].tau;
+  }
+}
+
+}  // namespace beamimpact

@@ -1,0 +1,57 @@
+#pragma once
+/// @file ContactSolver.hpp
+/// @brief The paper's contact forces from displacement compatibility (Eq. 2, 20, 30-31 in the
+/// general form): for each active contact, (W^T H W) [R, tau] = -(predicted violation), with
+/// W the normal (and, with friction, tangent) rows. Stick first; slip when |tau| > mu R with
+/// tau = mu R sign(tau_stick) and R re-solved; open when R <= 0. Several contacts are coupled
+/// through H and solved by Gauss-Seidel sweeps (one sweep for a single contact).
+
+#include <functional>
+#include <vector>
+
+#include "contact/ContactPair.hpp"
+#include "io/RunResult.hpp"
+
+namespace beamimpact {
+
+/// @brief Per-contact result of one step.
+struct ContactForce {
+  double R = 0.0, tau = 0.0;  ///< N; R >= 0 compressive, tau along the target tangent on the striker
+  double gap_next = 0.0;      ///< m, gap after the corrected step
+  double slip_next = 0.0;     ///< m, relative tangential increment of the corrected step
+  ContactState state = ContactState::kOpen;
+};
+
+/// @brief Solves the contact forces of one step given the predicted displacement.
+class ContactSolver {
+ public:
+  /// @brief apply_H(f, out): out = dt^2 H f (the response of U^{p+1} to a force f).
+  using ApplyH = std::function<void(const Eigen::VectorXd&, Eigen::VectorXd&)>;
+  /// @brief friction: build tangent rows (false: normal rows only, tau = 0 and no 2x2 solves).
+  ContactSolver(std::vector<ContactPair>& pairs, std::vector<double> mu, bool friction, int n,
+                double gap_tol, ApplyH apply_H);
+
+  /// @brief Solves for Ubar (predicted U^{p+1}) and U (current U^p). Re-locates sliding points.
+  const std::vector<ContactForce>& solve(const Eigen::VectorXd& Ubar, const Eigen::VectorXd& U);
+  /// @brief Adds sum W lambda of the last solve into f (a force vector, N).
+  void add_forces(Eigen::VectorXd& f) const;
+  /// @brief True when the last solve produced any non-zero force.
+  bool any_force() const { return any_; }
+  /// @brief dt^2 H W columns of contact c (normal, tangent), valid after solve().
+  const Eigen::VectorXd& response_normal(int c) const { return hn_[c]; }
+
+ private:
+  void refresh_response(int c);
+  std::vector<ContactPair>& pairs_;
+  std::vector<double> mu_;
+  bool friction_;
+  double tol_;
+  ApplyH apply_H_;
+  std::vector<ContactForce> out_;
+  std::vector<Eigen::VectorXd> hn_, ht_;  ///< dt^2 H G_n, dt^2 H G_t per contact
+  std::vector<char> fresh_;               ///< response columns match the current rows
+  Eigen::VectorXd scratch_;
+  bool any_ = false;
+};
+
+}  // namespace beamimpact

@@ -1,0 +1,136 @@
+#include "integrator/ExplicitContactIntegrator.hpp"
+
+#include <algorithm>
+
+namespace beamimpact {
+namespace {
+
+std::vector<ContactPair> make_pairs(const Model& model, const Scene& scene) {
+  std::vector<ContactPair> pairs;
+  for (int c = 0; c < static_cast<int>(scene.contacts.size()); ++c) pairs.emplace_back(model, scene, c);
+  return pairs;
+}
+
+std::vector<double> frictions(const Scene& scene) {
+  std::vector<double> mu;
+  for (const Contact& c : scene.contacts) mu.push_back(c.friction);
+  return mu;
+}
+
+double length_scale(const Scene& scene) {
+  double L = 0.0;
+  for (const Body& b : scene.bodies) L = std::max(L, b.length());
+  return L;
+}
+
+}  // namespace
+
+ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const Scene& scene,
+                                                     const Effects& effects, double dt)
+    : model_(model),
+      dt_(dt),
+      damped_(effects.damping && model.damped()),
+      friction_(effects.friction),
+      minv_(model),
+      fint_(model, effects.corotational ? effects.rotating : std::vector<bool>(scene.bodies.size(), false)),
+      pairs_(make_pairs(model, scene)),
+      // Gap tolerance 1e-10 of the largest body: above roundoff of positions (~1e-15 relative),
+      // far below any physical penetration per step.
+      solver_(pairs_, frictions(scene), effects.friction, model.size(), 1e-10 * length_scale(scene),
+              [this](const Eigen::VectorXd& f, Eigen::VectorXd& out) { apply_H(f, out); }) {
+  const int n = model.size();
+  U_prev_ = U_ = U_next_ = Ubar_ = fc_ = work_ = work2_ = du_ = scratch_ = hwork_ = Eigen::VectorXd::Zero(n);
+  Vbar_ = V_ = model.initial_velocity();  // no contact force at t = 0: Vbar^0 = V^0
+  fint_U_ = fint_next_ = Eigen::VectorXd::Zero(n);
+  fint_.apply(U_, fint_U_);
+  gap_prev_.resize(pairs_.size());
+  slip_prev_.assign(pairs_.size(), 0.0);
+  for (std::size_t c = 0; c < pairs_.size(); ++c)
+    gap_prev_[c] = pairs_[c].g0() + ContactPair::eval(pairs_[c].normal_row(), U_);
+}
+
+void ExplicitContactIntegrator::subtract_damping_force(const Eigen::VectorXd& v, Eigen::VectorXd& f) {
+  // f -= C v with C = a0 M + a1 K, through a scratch vector (no allocation).
+  scratch_.noalias() = model_.M() * v;
+  f -= model_.rayleigh_mass() * scratch_;
+  scratch_.noalias() = fint_.linear_stiffness() * v;
+  f -= model_.rayleigh_stiffness() * scratch_;
+}
+
+void ExplicitContactIntegrator::apply_H(const Eigen::VectorXd& f, Eigen::VectorXd& out) {
+  // out = dt^2 H f = dt^2 M^-1 (f - dt/4 C M^-1 f), C = a0 M + a1 K.
+  apply_Minv(f, out);
+  if (damped_) {
+    // C M^-1 f = a0 f + a1 K M^-1 f
+    scratch_.noalias() = fint_.linear_stiffness() * out;
+    hwork_.noalias() = model_.rayleigh_mass() * f + model_.rayleigh_stiffness() * scratch_;
+    apply_Minv(hwork_, scratch_);
+    out -= 0.25 * dt_ * scratch_;
+  }
+  out *= dt_ * dt_;
+}
+
+void ExplicitContactIntegrator::solve_contacts() {
+  // Contact-free prediction of U^{p+1}.
+  work2_ = -fint_U_;
+  if (damped_) subtract_damping_force(Vbar_, work2_);
+  apply_Minv(work2_, work_);
+  Ubar_.noalias() = U_ + dt_ * Vbar_ + (0.5 * dt_ * dt_) * work_;
+
+  forces_ = &solver_.solve(Ubar_, U_);
+  V_ = Vbar_;
+  if (solver_.any_force()) {
+    fc_.setZero();
+    solver_.add_forces(fc_);
+    apply_Minv(fc_, work_);
+    V_.noalias() += (0.5 * dt_) * work_;
+    // Contact work of step p: lambda_p (g_{p+1} - g_{p-1}) / 2 (+ the tangential twin). It is the
+    // exact change of the discrete energy 1/2 v_{p+1/2} M v_{p+1/2} + 1/2 u_p K u_{p+1}.
+    for (std::size_t c = 0; c < pairs_.size(); ++c) {
+      const ContactForce& f = (*forces_)[c];
+      if (f.state == ContactState::kOpen) continue;
+      dissipated_ -= 0.5 * f.R * (f.gap_next - gap_prev_[c]);
+      dissipated_ -= 0.5 * f.tau * (f.slip_next + slip_prev_[c]);
+    }
+  }
+}
+
+void ExplicitContactIntegrator::advance() {
+  // U^{p+1} = Ubar + dt^2 H f_c
+  U_next_ = Ubar_;
+  if (solver_.any_force()) {
+    apply_H(fc_, work_);
+    U_next_ += work_;
+  }
+  fint_.apply(U_next_, fint_next_);
+  // Vbar^{p+1} = Vbar^p + M^-1 (-dt/2 (f(U^{p+1}) + f(U^p)) - C (U^{p+1} - U^p) + dt f_c)
+  work2_.noalias() = (-0.5 * dt_) * (fint_next_ + fint_U_);
+  if (solver_.any_force()) work2_.noalias() += dt_ * fc_;
+  if (damped_) {
+    // The paper's velocity line replaces C (V^p + V^{p+1}) dt/2 by C (U^{p+1} - U^p).
+    du_.noalias() = U_next_ - U_;
+    const double before = work2_.dot(du_);
+    subtract_damping_force(du_, work2_);
+    dissipated_ += (before - work2_.dot(du_)) / dt_;  // du^T C du / dt: energy the damper took
+  }
+  apply_Minv(work2_, work_);
+  Vbar_ += work_;
+  // Remember g(U^p) and s(U^{p+1}) - s(U^p) for the next step's contact work.
+  for (std::size_t c = 0; c < pairs_.size(); ++c) {
+    gap_prev_[c] = pairs_[c].g0() + ContactPair::eval(pairs_[c].normal_row(), U_);
+    if (friction_)
+      slip_prev_[c] = ContactPair::eval(pairs_[c].tangent_row(), U_next_) -
+                      ContactPair::eval(pairs_[c].tangent_row(), U_);
+  }
+  std::swap(U_prev_, U_);
+  std::swap(U_, U_next_);
+  std::swap(fint_U_, fint_next_);
+  ++p_;
+}
+
+double ExplicitContactIntegrator::kinetic_energy() const {
+  if (model_.lumped()) return 0.5 * V_.dot(model_.lumped_mass().cwiseProduct(V_));
+  return 0.5 * V_.dot(model_.M() * V_);
+}
+
+}  // namespace beamimpact

@@ -1,0 +1,82 @@
+#include "integrator/InternalForce.hpp"
+
+#include <cmath>
+
+namespace beamimpact {
+
+InternalForce::InternalForce(const Model& model, const std::vector<bool>& corotational)
+    : model_(model), K_(&model.K()) {
+  if (model.dofs_per_node() != 3) return;  // rods never rotate
+  for (int e = 0; e < static_cast<int>(model.elements().size()); ++e)
+    if (corotational[model.elements()[e].body]) corot_elements_.push_back(e);
+  if (corot_elements_.empty()) return;
+  // Linear part: K minus the corotational elements' reference stiffness.
+  std::vector<Eigen::Triplet<double>> t;
+  for (int e : corot_elements_) {
+    const Model::Element& el = model.elements()[e];
+    const Eigen::MatrixXd Ke = model.element_stiffness(e, el.c, el.s);
+    const Eigen::Matrix<int, 6, 1> eq = model.element_equations(e);
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j)
+        if (eq(i) >= 0 && eq(j) >= 0 && Ke(i, j) != 0.0) t.emplace_back(eq(i), eq(j), -Ke(i, j));
+  }
+  SparseMatrix Kc(model.size(), model.size());
+  Kc.setFromTriplets(t.begin(), t.end());
+  K_linear_ = model.K() + Kc;
+  K_linear_.prune(0.0);
+  K_ = &K_linear_;
+}
+
+InternalForce::Local InternalForce::local(int e, const Eigen::VectorXd& U,
+                                          Eigen::Matrix<int, 6, 1>& eq, double x[6]) const {
+  const Model::Element& el = model_.elements()[e];
+  eq = model_.element_equations(e);
+  for (int i = 0; i < 6; ++i) x[i] = eq(i) >= 0 ? U(eq(i)) : 0.0;
+  const Vec2 p1 = model_.node_position(el.n1), p2 = model_.node_position(el.n2);
+  const double dx = p2[0] + x[3] - p1[0] - x[0], dy = p2[1] + x[4] - p1[1] - x[1];
+  Local l;
+  l.ln = std::hypot(dx, dy);
+  l.c = dx / l.ln;
+  l.s = dy / l.ln;
+  // Rigid rotation of the chord from the reference direction (el.c, el.s), in (-pi, pi].
+  const double alpha = std::atan2(el.c * l.s - el.s * l.c, el.c * l.c + el.s * l.s);
+  l.u = l.ln - el.length;
+  l.th1 = x[2] - alpha;
+  l.th2 = x[5] - alpha;
+  return l;
+}
+
+void InternalForce::apply(const Eigen::VectorXd& U, Eigen::VectorXd& f) const {
+  f.noalias() = (*K_) * U;
+  Eigen::Matrix<int, 6, 1> eq;
+  double x[6];
+  for (int e : corot_elements_) {
+    const Model::Element& el = model_.elements()[e];
+    const Local l = local(e, U, eq, x);
+    const double N = el.E * el.area / el.length * l.u;
+    const double k = el.E * el.inertia / el.length;
+    const double M1 = k * (4 * l.th1 + 2 * l.th2), M2 = k * (2 * l.th1 + 4 * l.th2);
+    // f = r N + z (M1 + M2)/ln + e3 M1 + e6 M2, r = [-c,-s,0,c,s,0], z = [s,-c,0,-s,c,0].
+    const double q = (M1 + M2) / l.ln;
+    const double fe[6] = {-l.c * N + l.s * q, -l.s * N - l.c * q, M1,
+                          l.c * N - l.s * q,  l.s * N + l.c * q,  M2};
+    for (int i = 0; i < 6; ++i)
+      if (eq(i) >= 0) f(eq(i)) += fe[i];
+  }
+}
+
+double InternalForce::strain_energy(const Eigen::VectorXd& U) const {
+  double e = 0.5 * U.dot((*K_) * U);
+  Eigen::Matrix<int, 6, 1> eq;
+  double x[6];
+  for (int i : corot_elements_) {
+    const Model::Element& el = model_.elements()[i];
+    const Local l = local(i, U, eq, x);
+    const double k = el.E * el.inertia / el.length;
+    e += 0.5 * el.E * el.area / el.length * l.u * l.u +
+         0.5 * k * (4 * l.th1 * l.th1 + 4 * l.th1 * l.th2 + 4 * l.th2 * l.th2);
+  }
+  return e;
+}
+
+}  // namespace beamimpact

@@ -1,0 +1,39 @@
+#pragma once
+/// @file InternalForce.hpp
+/// @brief f_int(U) and the strain energy: K U for linear bodies, and the 2D corotational beam
+/// (element frame rebuilt from the current chord every call) for bodies that rotate. Only bodies
+/// listed as corotational pay for the rebuild; with none, this is one sparse product K U.
+
+#include <vector>
+
+#include "model/Model.hpp"
+
+namespace beamimpact {
+
+/// @brief Internal (elastic) force of the model.
+class InternalForce {
+ public:
+  /// @brief corotational[b]: body b uses the corotational element (frame layout only).
+  InternalForce(const Model& model, const std::vector<bool>& corotational);
+  /// @brief f = f_int(U). No allocation.
+  void apply(const Eigen::VectorXd& U, Eigen::VectorXd& f) const;
+  /// @brief Strain energy (J) at U.
+  double strain_energy(const Eigen::VectorXd& U) const;
+  /// @brief True when some body is corotational.
+  bool nonlinear() const { return !corot_elements_.empty(); }
+  /// @brief Stiffness of the linear part (all elements when nothing is corotational).
+  const SparseMatrix& linear_stiffness() const { return *K_; }
+
+ private:
+  /// Local deformation (axial stretch, end rotations relative to the chord) and the B matrix rows.
+  struct Local {
+    double u, th1, th2, ln, c, s;
+  };
+  Local local(int e, const Eigen::VectorXd& U, Eigen::Matrix<int, 6, 1>& eq, double x[6]) const;
+  const Model& model_;
+  const SparseMatrix* K_;
+  SparseMatrix K_linear_;  ///< used only when some elements are corotational
+  std::vector<int> corot_elements_;
+};
+
+}  // namespace beamimpact

@@ -1,0 +1,32 @@
+#pragma once
+/// @file Progress.hpp
+/// @brief Progress line on stderr for long runs: silent for the first second, then at most a few
+/// updates per second; never on stdout (which carries results).
+
+#include <chrono>
+#include <string>
+
+namespace beamimpact {
+
+/// @brief Reports "label: 45% (t = 1.8 of 4 s)" while a run is long.
+class Progress {
+ public:
+  /// @brief label: shown first; total: the value that means 100% (e.g. end time in s).
+  Progress(std::string label, double total);
+  /// @brief Call often; cheap (checks the clock every 256 calls).
+  void update(double value) {
+    if ((++calls_ & 255u) == 0) report(value);
+  }
+  /// @brief Ends the line if anything was printed.
+  ~Progress();
+
+ private:
+  void report(double value);
+  std::string label_;
+  double total_;
+  unsigned calls_ = 0;
+  bool printed_ = false;
+  std::chrono::steady_clock::time_point start_, last_;
+};
+
+}  // namespace beamimpact

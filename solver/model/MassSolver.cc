@@ -1,0 +1,23 @@
+#include "model/MassSolver.hpp"
+
+#include <stdexcept>
+
+namespace beamimpact {
+
+MassSolver::MassSolver(const Model& model) {
+  if (model.lumped()) {
+    if ((model.lumped_mass().array() <= 0.0).any())
+      throw std::runtime_error("lumped mass has a zero or negative entry");
+    inv_ = model.lumped_mass().cwiseInverse();
+  } else {
+    ldlt_ = std::make_unique<Eigen::SimplicialLDLT<SparseMatrix>>(model.M());
+    if (ldlt_->info() != Eigen::Success) throw std::runtime_error("consistent mass matrix is singular");
+  }
+}
+
+void MassSolver::apply(const Eigen::VectorXd& in, Eigen::VectorXd& out) const {
+  if (ldlt_) out = ldlt_->solve(in);
+  else out.noalias() = inv_.cwiseProduct(in);
+}
+
+}  // namespace beamimpact

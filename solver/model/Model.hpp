@@ -1,0 +1,117 @@
+#pragma once
+/// @file Model.hpp
+/// @brief The assembled beam model of a scene: DOF numbering with supports eliminated, sparse
+/// stiffness K, mass M (a diagonal when lumped), Rayleigh damping, initial state, and the maps
+/// from nodes to equations that contact, output and references need.
+///
+/// Two layouts: "frame" (3 DOF per node: u_x, u_y, theta) and "rod" (1 DOF per node: the
+/// displacement along the common axis of an all-collinear scene). Supported DOFs are removed from
+/// the equations; equation(node, component) returns -1 for them.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include "scene/Scene.hpp"
+
+namespace beamimpact {
+
+/// @brief Sparse matrix type of the project (column-major, double).
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+/// @brief One term of a linear functional of the equation vector: coeff * U[eq].
+struct DofTerm {
+  int eq;
+  double coeff;
+};
+
+/// @brief The assembled linear model (reference configuration, global axes).
+class Model {
+ public:
+  /// @brief Assembles the scene. bending = false builds the rod layout (the scene must be
+  /// collinear: SceneError otherwise).
+  Model(const Scene& scene, bool bending);
+
+  /// @brief 3 (frame) or 1 (rod).
+  int dofs_per_node() const { return dofs_per_node_; }
+  /// @brief Unit axis of the rod layout (undefined for frames).
+  const Vec2& rod_axis() const { return axis_; }
+  /// @brief Number of equations (free DOFs).
+  int size() const { return static_cast<int>(free_.size()); }
+  /// @brief Total number of nodes over all bodies.
+  int num_nodes() const { return static_cast<int>(node_pos_.size()); }
+  /// @brief Global node id of node `i` of body `b`.
+  int node_id(int b, int i) const { return body_first_node_[b] + i; }
+  /// @brief Body that owns global node `n`.
+  int body_of_node(int n) const { return node_body_[n]; }
+  /// @brief Reference position of global node `n` (m).
+  const Vec2& node_position(int n) const { return node_pos_[n]; }
+  /// @brief Equation of component c (0 = x, 1 = y, 2 = theta; rod layout: 0 = axial) of node n,
+  /// or -1 when that DOF is fixed or absent.
+  int equation(int n, int c) const;
+  /// @brief Terms of d . u(node n) for a direction d in global axes (handles both layouts).
+  std::vector<DofTerm> project(int n, const Vec2& d) const;
+  /// @brief Global displacement (x, y) of node n from the equation vector U.
+  Vec2 node_vector(const Eigen::VectorXd& U, int n) const;
+
+  /// @brief Stiffness, free x free.
+  const SparseMatrix& K() const { return K_; }
+  /// @brief Mass, free x free (diagonal when lumped).
+  const SparseMatrix& M() const { return M_; }
+  /// @brief True when the mass is lumped (then lumped_mass() is its diagonal).
+  bool lumped() const { return lumped_; }
+  /// @brief Diagonal of the lumped mass (empty for consistent mass).
+  const Eigen::VectorXd& lumped_mass() const { return m_diag_; }
+  /// @brief Rayleigh coefficients (a0 1/s, a1 s); damped() when any is non-zero.
+  double rayleigh_mass() const { return a0_; }
+  double rayleigh_stiffness() const { return a1_; }
+  bool damped() const { return a0_ != 0.0 || a1_ != 0.0; }
+
+  /// @brief Initial velocity (each body's rigid velocity on its free DOFs).
+  Eigen::VectorXd initial_velocity() const;
+  /// @brief Momentum covector of body b along direction c (0 = x, 1 = y): p = m^T V.
+  /// Includes the mass of every free DOF of the body (consistent mass: rotations too).
+  const Eigen::VectorXd& momentum_covector(int b, int c) const { return momentum_[b][c]; }
+  /// @brief Total mass of body b (kg).
+  double body_mass(int b) const { return body_mass_[b]; }
+  /// @brief Number of bodies.
+  int num_bodies() const { return static_cast<int>(body_first_node_.size()); }
+  /// @brief One element: its body, global node ids, section and reference geometry.
+  struct Element {
+    int body, n1, n2;
+    double E, area, inertia, rho;  ///< N/m^2, m^2, m^4, kg/m^3
+    double length, c, s;           ///< m; direction cosines of the reference axis
+  };
+  /// @brief The element list (per-element work: corotation, bounds).
+  const std::vector<Element>& elements() const { return elements_; }
+  /// @brief Element stiffness in global axes at direction (c, s): 6x6 (frame) or 2x2 (rod).
+  Eigen::MatrixXd element_stiffness(int e, double c, double s) const;
+  /// @brief Element mass in global axes at direction (c, s): 6x6 (frame) or 2x2 (rod).
+  Eigen::MatrixXd element_mass(int e, double c, double s) const;
+  /// @brief Equation index of each of the element's 6 (frame) or 2 (rod) DOFs, -1 when fixed.
+  Eigen::Matrix<int, 6, 1> element_equations(int e) const;
+
+ private:
+  int dofs_per_node_ = 3;
+  Vec2 axis_{1.0, 0.0};
+  bool lumped_ = true;
+  RotaryInertia rotary_ = RotaryInertia::kHrz;
+  double a0_ = 0.0, a1_ = 0.0;
+  std::vector<int> body_first_node_, node_body_;
+  std::vector<Vec2> node_pos_;
+  std::vector<int> dof_to_eq_;          ///< node * dofs_per_node + c -> equation or -1
+  std::vector<int> free_;               ///< equation -> node * dofs_per_node + c
+  std::vector<Element> elements_;
+  std::vector<Vec2> body_velocity_;
+  std::vector<double> body_mass_;
+  std::vector<std::array<Eigen::VectorXd, 2>> momentum_;
+  SparseMatrix K_, M_;
+  Eigen::VectorXd m_diag_;
+};
+
+/// @brief True when every body lies on one line with velocities along it (rod layout possible).
+bool scene_is_collinear(const Scene& scene, Vec2* axis = nullptr);
+
+}  // namespace beamimpact

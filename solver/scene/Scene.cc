@@ -1,0 +1,20 @@
+#include "scene/Scene.hpp"
+
+#include <cmath>
+
+namespace beamimpact {
+
+double Body::length() const { return std::hypot(end[0] - start[0], end[1] - start[1]); }
+
+Vec2 Body::node_position(int i) const {
+  const double s = static_cast<double>(i) / elements;
+  return {start[0] + s * (end[0] - start[0]), start[1] + s * (end[1] - start[1])};
+}
+
+int Scene::body_index(const std::string& n) const {
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    if (bodies[i].name == n) return static_cast<int>(i);
+  return -1;
+}
+
+}  // namespace beamimpact

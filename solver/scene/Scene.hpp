@@ -1,0 +1,102 @@
+#pragma once
+/// @file Scene.hpp
+/// @brief A collision scene as read from TOML (see shared/spec/interface.md): plain data, SI units.
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace beamimpact {
+
+/// @brief A 2D point or vector (m, m/s, ...).
+using Vec2 = std::array<double, 2>;
+
+/// @brief Time stepping: [time] table.
+struct TimeSettings {
+  std::optional<double> dt;       ///< s; empty means "auto" (fraction x critical step)
+  double fraction = 0.5;          ///< of the critical step, used when dt is "auto"
+  double end = 0.0;               ///< s, end time
+  int output_every = 1;           ///< write every n-th step to history.csv
+  bool allow_above_critical = false;  ///< accept dt above the stability limit
+};
+
+/// @brief Mass lumping choice for the element mass matrix.
+enum class MassKind { kLumped, kConsistent };
+/// @brief Lumped rotary inertia: HRZ (m le^2/78) or section (rho I le/2).
+enum class RotaryInertia { kHrz, kSection };
+/// @brief Linear (fixed global matrices) or corotational (element frames rebuilt every step).
+enum class Kinematics { kLinear, kCorotational };
+
+/// @brief Model choices: [model] table.
+struct ModelSettings {
+  MassKind mass = MassKind::kLumped;
+  RotaryInertia rotary_inertia = RotaryInertia::kHrz;
+  Kinematics kinematics = Kinematics::kLinear;
+  double rayleigh_mass = 0.0;       ///< 1/s, C = rayleigh_mass M + rayleigh_stiffness K
+  double rayleigh_stiffness = 0.0;  ///< s
+};
+
+/// @brief A support at one node of a body: the listed global DOFs are held at zero.
+struct Support {
+  int node = 0;                     ///< node index in the body (0 = start)
+  bool fix_x = false, fix_y = false, fix_theta = false;
+};
+
+/// @brief One straight beam, uniformly meshed from start to end.
+struct Body {
+  std::string name;
+  Vec2 start{}, end{};              ///< m, first and last node
+  int elements = 1;
+  double E = 0.0;                   ///< N/m^2
+  double rho = 0.0;                 ///< kg/m^3
+  double area = 0.0;                ///< m^2
+  double inertia = 0.0;             ///< m^4 (0 when not given: only valid for axial scenes)
+  Vec2 velocity{};                  ///< m/s, initial rigid velocity
+  std::vector<Support> supports;
+
+  /// @brief Length (m).
+  double length() const;
+  /// @brief Number of nodes (elements + 1).
+  int nodes() const { return elements + 1; }
+  /// @brief Reference position of node i (m).
+  Vec2 node_position(int i) const;
+};
+
+/// @brief One contact pair: a node of the striker against the surface (or end) of the target.
+struct Contact {
+  int striker = 0;                  ///< index into Scene::bodies
+  int node = 0;                     ///< striker node index (resolved from "start"/"end"/index)
+  int target = 0;                   ///< index into Scene::bodies
+  double friction = 0.0;            ///< Coulomb mu
+};
+
+/// @brief Forced effects from the optional [effects] table (empty = derived from the scene).
+struct EffectOverrides {
+  std::optional<bool> bending, friction, damping;
+};
+
+/// @brief A whole scene, validated. Method-specific tables ([ida], [exact], ...) are kept as
+/// TOML text so that each method validates its own keys (see TableReader).
+struct Scene {
+  std::string file;                 ///< path it was read from
+  std::string sha256;               ///< of the file's bytes (before --set overrides)
+  std::string name, description;
+  TimeSettings time;
+  ModelSettings model;
+  std::vector<Body> bodies;
+  std::vector<Contact> contacts;
+  EffectOverrides effects;
+  /// @brief Keys the file did not give, with the default used ("model.mass" -> "lumped").
+  std::map<std::string, std::string> assumed;
+  /// @brief --set overrides applied, as given ("time.dt" -> "0.005").
+  std::map<std::string, std::string> overrides;
+  /// @brief Method tables ("ida", "exact", "paper", "fenicsx") serialised back to TOML.
+  std::map<std::string, std::string> method_tables;
+
+  /// @brief Index of the body with this name, or -1.
+  int body_index(const std::string& name) const;
+};
+
+}  // namespace beamimpact

@@ -1,0 +1,161 @@
+#include "scene/TableReader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace beamimpact {
+namespace {
+
+std::string type_name(const toml::node& n) {
+  switch (n.type()) {
+    case toml::node_type::string: return "a string";
+    case toml::node_type::integer: return "an integer";
+    case toml::node_type::floating_point: return "a number";
+    case toml::node_type::boolean: return "a boolean";
+    case toml::node_type::array: return "an array";
+    case toml::node_type::table: return "a table";
+    default: return "a date/time";
+  }
+}
+
+std::string shortest(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+TableReader::TableReader(const toml::table& table, std::string file, std::string prefix,
+                         std::map<std::string, std::string>* assumed)
+    : table_(table), file_(std::move(file)), prefix_(std::move(prefix)), assumed_(assumed) {}
+
+std::string TableReader::path(const std::string& key) const {
+  return prefix_.empty() ? key : prefix_ + "." + key;
+}
+
+void TableReader::fail(const std::string& key, const std::string& message) const {
+  throw SceneError(file_, path(key), message);
+}
+
+const toml::node* TableReader::find(const std::string& key) {
+  seen_.insert(key);
+  return table_.get(key);
+}
+
+void TableReader::assume(const std::string& key, const std::string& value) {
+  if (assumed_) (*assumed_)[path(key)] = value;
+}
+
+bool TableReader::has(const std::string& key) { return find(key) != nullptr; }
+const toml::node* TableReader::raw(const std::string& key) { return find(key); }
+
+double TableReader::number(const std::string& key, const std::string& what) {
+  const toml::node* n = find(key);
+  if (!n) fail(key, "missing; expected " + what);
+  double v;
+  if (auto i = n->as_integer()) v = static_cast<double>(i->get());
+  else if (auto f = n->as_floating_point()) v = f->get();
+  else fail(key, "expected " + what + ", got " + type_name(*n));
+  if (!std::isfinite(v)) fail(key, "expected " + what + ", got a non-finite value");
+  return v;
+}
+
+double TableReader::number_or(const std::string& key, double fallback, const std::string& what) {
+  if (!table_.get(key)) {
+    seen_.insert(key);
+    assume(key, shortest(fallback));
+    return fallback;
+  }
+  return number(key, what);
+}
+
+long TableReader::integer(const std::string& key, const std::string& what) {
+  const toml::node* n = find(key);
+  if (!n) fail(key, "missing; expected " + what);
+  auto i = n->as_integer();
+  if (!i) fail(key, "expected " + what + ", got " + type_name(*n));
+  return static_cast<long>(i->get());
+}
+
+long TableReader::integer_or(const std::string& key, long fallback, const std::string& what) {
+  if (!table_.get(key)) {
+    seen_.insert(key);
+    assume(key, std::to_string(fallback));
+    return fallback;
+  }
+  return integer(key, what);
+}
+
+std::string TableReader::string(const std::string& key, const std::string& what) {
+  const toml::node* n = find(key);
+  if (!n) fail(key, "missing; expected " + what);
+  auto s = n->as_string();
+  if (!s) fail(key, "expected " + what + ", got " + type_name(*n));
+  return s->get();
+}
+
+std::string TableReader::choice_or(const std::string& key, const std::string& fallback,
+                                   const std::vector<std::string>& allowed) {
+  std::string expected = "one of";
+  for (const auto& a : allowed) expected += " \"" + a + "\"";
+  if (!table_.get(key)) {
+    seen_.insert(key);
+    assume(key, fallback);
+    return fallback;
+  }
+  const std::string v = string(key, expected);
+  if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), v) == allowed.end())
+    fail(key, "expected " + expected + ", got \"" + v + "\"");
+  return v;
+}
+
+bool TableReader::boolean_or(const std::string& key, bool fallback) {
+  const std::optional<bool> v = boolean_opt(key);
+  if (!v) assume(key, fallback ? "true" : "false");
+  return v.value_or(fallback);
+}
+
+std::optional<bool> TableReader::boolean_opt(const std::string& key) {
+  const toml::node* n = find(key);
+  if (!n) return std::nullopt;
+  auto b = n->as_boolean();
+  if (!b) fail(key, "expected true or false, got " + type_name(*n));
+  return b->get();
+}
+
+Vec2 TableReader::vec2(const std::string& key, const std::string& what) {
+  const toml::node* n = find(key);
+  if (!n) fail(key, "missing; expected " + what);
+  const toml::array* a = n->as_array();
+  if (!a || a->size() != 2) fail(key, "expected " + what + " (an array of two numbers)");
+  Vec2 v{};
+  for (std::size_t i = 0; i < 2; ++i) {
+    const toml::node& e = *a->get(i);
+    if (auto x = e.as_integer()) v[i] = static_cast<double>(x->get());
+    else if (auto f = e.as_floating_point()) v[i] = f->get();
+    else fail(key, "expected " + what + " (an array of two numbers), element " + std::to_string(i) +
+                       " is " + type_name(e));
+    if (!std::isfinite(v[i])) fail(key, "expected " + what + ", got a non-finite value");
+  }
+  return v;
+}
+
+void TableReader::finish() const {
+  for (auto&& [k, v] : table_) {
+    const std::string key(k.str());
+    if (!seen_.count(key)) fail(key, "unknown key (a typo? unknown keys are errors)");
+  }
+}
+
+MethodOptions::MethodOptions(const Scene& scene, const std::string& method,
+                             std::map<std::string, std::string>* assumed)
+    : table_([&] {
+        auto it = scene.method_tables.find(method);
+        return it == scene.method_tables.end() ? toml::table{} : toml::parse(it->second);
+      }()),
+      reader_(table_, scene.file, method, assumed) {}
+
+}  // namespace beamimpact

@@ -1,0 +1,83 @@
+#pragma once
+/// @file TableReader.hpp
+/// @brief Typed, checked access to one TOML table of a scene: every read names the file and the
+/// full key in its error, every default used is recorded, and finish() rejects unknown keys.
+/// Used by the scene loader and by each method for its own table ([ida], [exact], ...).
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "scene/Scene.hpp"
+#include "scene/SceneError.hpp"
+
+namespace beamimpact {
+
+/// @brief Reads keys of one table; `prefix` is the dotted path of the table ("time", "bodies[0]").
+class TableReader {
+ public:
+  /// @brief assumed (may be null) receives "prefix.key" -> default for every default used.
+  TableReader(const toml::table& table, std::string file, std::string prefix,
+              std::map<std::string, std::string>* assumed);
+
+  /// @brief A required number (integers accepted). `what` describes it ("a positive number (m)").
+  double number(const std::string& key, const std::string& what);
+  /// @brief An optional number; fallback recorded as assumed when the key is absent.
+  double number_or(const std::string& key, double fallback, const std::string& what);
+  /// @brief A required integer.
+  long integer(const std::string& key, const std::string& what);
+  /// @brief An optional integer.
+  long integer_or(const std::string& key, long fallback, const std::string& what);
+  /// @brief A required string.
+  std::string string(const std::string& key, const std::string& what);
+  /// @brief An optional string restricted to `allowed` (empty = any).
+  std::string choice_or(const std::string& key, const std::string& fallback,
+                        const std::vector<std::string>& allowed);
+  /// @brief An optional boolean.
+  bool boolean_or(const std::string& key, bool fallback);
+  /// @brief An optional boolean with no default (empty when absent).
+  std::optional<bool> boolean_opt(const std::string& key);
+  /// @brief A required array of two numbers.
+  Vec2 vec2(const std::string& key, const std::string& what);
+  /// @brief True when the key is present (marks it as known).
+  bool has(const std::string& key);
+  /// @brief The raw node (marks it as known); nullptr when absent.
+  const toml::node* raw(const std::string& key);
+  /// @brief Throws SceneError for a value that fails a check (positivity, range, ...).
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+  /// @brief Throws SceneError naming the first key that no read asked for.
+  void finish() const;
+  /// @brief "prefix.key" (or "key" when the prefix is empty).
+  std::string path(const std::string& key) const;
+  /// @brief The scene file.
+  const std::string& file() const { return file_; }
+
+ private:
+  const toml::node* find(const std::string& key);
+  void assume(const std::string& key, const std::string& value);
+  const toml::table& table_;
+  std::string file_, prefix_;
+  std::map<std::string, std::string>* assumed_;
+  std::set<std::string> seen_;
+};
+
+/// @brief A reader over a method's own table ("ida", "exact", ...) of the scene; an absent
+/// table reads as empty. Keep the returned object alive while reading (it owns the table).
+class MethodOptions {
+ public:
+  /// @brief Parses scene.method_tables[method]; assumed defaults go to `assumed`.
+  MethodOptions(const Scene& scene, const std::string& method,
+                std::map<std::string, std::string>* assumed);
+  /// @brief The reader; call finish() on it after the last read.
+  TableReader& reader() { return reader_; }
+
+ private:
+  toml::table table_;
+  TableReader reader_;
+};
+
+}  // namespace beamimpact

@@ -1,0 +1,331 @@
+#include "scene/scene_io.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "io/sha256.hpp"
+#include "model/Model.hpp"
+#include "scene/SceneError.hpp"
+#include "scene/TableReader.hpp"
+
+namespace beamimpact {
+namespace {
+
+const std::vector<std::string> kMethodTables = {"paper", "ida", "exact", "fenicsx"};
+
+// ---- --set overrides --------------------------------------------------------------------
+
+/// Splits "bodies[1].elements" / "bodies.B.elements" / "time.dt" into segments.
+std::vector<std::string> split_key(const std::string& key) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : key) {
+    if (c == '.' || c == '[') {
+      if (!cur.empty()) out.push_back(cur);
+      cur.clear();
+    } else if (c != ']') {
+      cur += c;
+    }
+  }
+  if (!cur.empty()) out.push_back(cur);
+  return out;
+}
+
+void apply_override(toml::table& root, const std::string& file, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw SceneError(file, assignment, "--set expects key=value (e.g. time.dt=0.005)");
+  const std::string key = assignment.substr(0, eq), text = assignment.substr(eq + 1);
+  const std::vector<std::string> seg = split_key(key);
+  // The value is TOML ("0.005", "[1, 0]", "true", "\"lumped\""); a bare word is a string.
+  toml::table parsed;
+  try {
+    parsed = toml::parse("v = " + text);
+  } catch (const toml::parse_error&) {
+    parsed = toml::table{{"v", text}};
+  }
+  toml::table* t = &root;
+  for (std::size_t i = 0; i + 1 < seg.size(); ++i) {
+    toml::node* next = t->get(seg[i]);
+    if (!next) {  // a new sub-table ([ida] options and the like)
+      t->insert_or_assign(seg[i], toml::table{});
+      next = t->get(seg[i]);
+    }
+    if (toml::array* arr = next->as_array()) {  // array of tables: an index or a body name
+      const std::string& sel = seg[++i];
+      toml::table* found = nullptr;
+      char* endp = nullptr;
+      const long idx = std::strtol(sel.c_str(), &endp, 10);
+      if (*endp == '\0' && idx >= 0 && static_cast<std::size_t>(idx) < arr->size()) {
+        found = arr->get(static_cast<std::size_t>(idx))->as_table();
+      } else {
+        for (auto& el : *arr)
+          if (auto* tb = el.as_table(); tb && tb->get("name") && tb->get("name")->value<std::string>() == sel)
+            found = tb;
+      }
+      if (!found)
+        throw SceneError(file, key, "--set: no entry '" + sel + "' in '" + seg[i - 1] +
+                                        "' (use an index from 0 or a body name)");
+      if (i + 1 == seg.size())
+        throw SceneError(file, key, "--set: expected a key after '" + sel + "'");
+      t = found;
+      continue;
+    }
+    t = next->as_table();
+    if (!t) throw SceneError(file, key, "--set: '" + seg[i] + "' is not a table");
+  }
+  if (seg.empty()) throw SceneError(file, key, "--set: empty key");
+  t->insert_or_assign(seg.back(), *parsed.get("v"));
+}
+
+// ---- geometry checks --------------------------------------------------------------------
+
+double cross(const Vec2& a, const Vec2& b) { return a[0] * b[1] - a[1] * b[0]; }
+Vec2 sub(const Vec2& a, const Vec2& b) { return {a[0] - b[0], a[1] - b[1]}; }
+
+/// True when segments p and q overlap: a crossing interior to both, or a collinear overlap of
+/// positive length. Touching (an end on the other segment, zero gap) is allowed.
+bool segments_overlap(const Body& p, const Body& q) {
+  const Vec2 r = sub(p.end, p.start), s = sub(q.end, q.start), qp = sub(q.start, p.start);
+  const double rxs = cross(r, s), scale = std::max(p.length(), q.length());
+  const double eps = 1e-12;
+  if (std::abs(rxs) < eps * scale * scale) {
+    if (std::abs(cross(qp, r)) > eps * scale * scale) return false;  // parallel, apart
+    const double rr = r[0] * r[0] + r[1] * r[1];
+    const double t0 = (qp[0] * r[0] + qp[1] * r[1]) / rr;
+    const double t1 = t0 + (s[0] * r[0] + s[1] * r[1]) / rr;
+    const double lo = std::max(0.0, std::min(t0, t1)), hi = std::min(1.0, std::max(t0, t1));
+    return (hi - lo) * std::sqrt(rr) > eps * scale;
+  }
+  const double t = cross(qp, s) / rxs, u = cross(qp, r) / rxs;
+  return t > eps && t < 1 - eps && u > eps && u < 1 - eps;
+}
+
+// ---- readers -----------------------------------------------------------------------------
+
+const toml::table& sub_table(TableReader& r, const std::string& key, bool required,
+                             const toml::table& empty) {
+  const toml::node* n = r.raw(key);
+  if (!n) {
+    if (required) r.fail(key, "missing; expected a table [" + key + "]");
+    return empty;
+  }
+  if (!n->as_table()) r.fail(key, "expected a table [" + key + "]");
+  return *n->as_table();
+}
+
+double positive(TableReader& r, const std::string& key, const std::string& unit) {
+  const double v = r.number(key, "a positive number (" + unit + ")");
+  if (!(v > 0.0)) r.fail(key, "expected a positive number (" + unit + "), got " + std::to_string(v));
+  return v;
+}
+
+int node_ref(TableReader& r, const std::string& key, const Body& body) {
+  const toml::node* n = r.raw(key);
+  const std::string expected = "\"start\", \"end\" or a node index 0.." + std::to_string(body.elements) +
+                               " of body '" + body.name + "'";
+  if (!n) r.fail(key, "missing; expected " + expected);
+  if (auto s = n->as_string()) {
+    if (s->get() == "start") return 0;
+    if (s->get() == "end") return body.elements;
+    r.fail(key, "expected " + expected + ", got \"" + s->get() + "\"");
+  }
+  if (auto i = n->as_integer()) {
+    if (i->get() < 0 || i->get() > body.elements)
+      r.fail(key, "expected " + expected + ", got " + std::to_string(i->get()));
+    return static_cast<int>(i->get());
+  }
+  r.fail(key, "expected " + expected);
+}
+
+void read_time(TableReader& r, TimeSettings& t) {
+  const toml::node* dt = r.raw("dt");
+  if (!dt) r.fail("dt", "missing; expected a positive number (s) or \"auto\"");
+  if (auto s = dt->as_string()) {
+    if (s->get() != "auto") r.fail("dt", "expected a positive number (s) or \"auto\", got \"" + s->get() + "\"");
+    t.dt.reset();
+    t.fraction = r.number_or("fraction", 0.5, "a fraction of the critical step in (0, 1]");
+    if (!(t.fraction > 0.0 && t.fraction <= 1.0))
+      r.fail("fraction", "expected a fraction of the critical step in (0, 1], got " + std::to_string(t.fraction));
+  } else {
+    t.dt = positive(r, "dt", "s");
+    if (r.has("fraction")) r.fail("fraction", "is used only with dt = \"auto\"; remove it or set dt = \"auto\"");
+  }
+  t.end = positive(r, "end", "s");
+  t.output_every = static_cast<int>(r.integer_or("output_every", 1, "a whole number of steps >= 1"));
+  if (t.output_every < 1) r.fail("output_every", "expected a whole number of steps >= 1");
+  t.allow_above_critical = r.boolean_or("allow_above_critical", false);
+  if (t.dt && *t.dt > t.end) r.fail("dt", "expected a step no longer than time.end");
+}
+
+void read_model(TableReader& r, ModelSettings& m) {
+  m.mass = r.choice_or("mass", "lumped", {"lumped", "consistent"}) == "lumped" ? MassKind::kLumped
+                                                                                : MassKind::kConsistent;
+  m.rotary_inertia = r.choice_or("rotary_inertia", "hrz", {"hrz", "section"}) == "hrz"
+                         ? RotaryInertia::kHrz : RotaryInertia::kSection;
+  m.kinematics = r.choice_or("kinematics", "linear", {"linear", "corotational"}) == "linear"
+                     ? Kinematics::kLinear : Kinematics::kCorotational;
+  m.rayleigh_mass = r.number_or("rayleigh_mass", 0.0, "a number >= 0 (1/s)");
+  m.rayleigh_stiffness = r.number_or("rayleigh_stiffness", 0.0, "a number >= 0 (s)");
+  if (m.rayleigh_mass < 0) r.fail("rayleigh_mass", "expected a number >= 0 (1/s)");
+  if (m.rayleigh_stiffness < 0) r.fail("rayleigh_stiffness", "expected a number >= 0 (s)");
+}
+
+void read_supports(TableReader& r, Body& b, std::map<std::string, std::string>* assumed) {
+  const toml::node* n = r.raw("supports");
+  if (!n) {
+    if (assumed) (*assumed)[r.path("supports")] = "[] (free)";
+    return;
+  }
+  const toml::array* arr = n->as_array();
+  if (!arr) r.fail("supports", "expected an array of { at = \"start\"|\"end\"|index, fix = [\"x\", \"y\", \"theta\"] }");
+  for (std::size_t i = 0; i < arr->size(); ++i) {
+    const toml::table* st = arr->get(i)->as_table();
+    const std::string key = "supports[" + std::to_string(i) + "]";
+    if (!st) r.fail(key, "expected { at = ..., fix = [...] }");
+    TableReader sr(*st, r.file(), r.path(key), nullptr);
+    Support s;
+    s.node = node_ref(sr, "at", b);
+    const toml::node* fx = sr.raw("fix");
+    if (!fx || !fx->as_array() || fx->as_array()->empty())
+      sr.fail("fix", "expected a non-empty array of \"x\", \"y\", \"theta\"");
+    for (const toml::node& c : *fx->as_array()) {
+      const std::string v = c.value<std::string>().value_or("?");
+      if (v == "x") s.fix_x = true;
+      else if (v == "y") s.fix_y = true;
+      else if (v == "theta") s.fix_theta = true;
+      else sr.fail("fix", "expected \"x\", \"y\" or \"theta\", got " + v);
+    }
+    sr.finish();
+    b.supports.push_back(s);
+  }
+}
+
+}  // namespace
+
+Scene load_scene(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
+  Scene sc;
+  sc.file = path.string();
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(sc.file, "", "cannot open the scene file");
+  std::stringstream buf;
+  buf << in.rdbuf();
+  const std::string text = buf.str();
+  sc.sha256 = sha256_hex(text);
+
+  toml::table root;
+  try {
+    root = toml::parse(text, sc.file);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream msg;
+    msg << "TOML syntax error at line " << e.source().begin.line << ", column "
+        << e.source().begin.column << ": " << e.description();
+    throw SceneError(sc.file, "", msg.str());
+  }
+  for (const std::string& o : overrides) {
+    apply_override(root, sc.file, o);
+    const auto eq = o.find('=');
+    sc.overrides[o.substr(0, eq)] = o.substr(eq + 1);
+  }
+
+  auto* assumed = &sc.assumed;
+  TableReader top(root, sc.file, "", assumed);
+  sc.name = top.string("name", "a string naming the scene");
+  sc.description = top.has("description") ? top.string("description", "a string") : "";
+  const toml::table empty;
+  {
+    TableReader r(sub_table(top, "time", true, empty), sc.file, "time", assumed);
+    read_time(r, sc.time);
+    r.finish();
+  }
+  {
+    TableReader r(sub_table(top, "model", false, empty), sc.file, "model", assumed);
+    read_model(r, sc.model);
+    r.finish();
+  }
+
+  const toml::node* bn = top.raw("bodies");
+  if (!bn || !bn->as_array() || bn->as_array()->size() < 2)
+    top.fail("bodies", "expected at least two [[bodies]] tables");
+  const toml::array& barr = *bn->as_array();
+  for (std::size_t i = 0; i < barr.size(); ++i) {
+    const std::string key = "bodies[" + std::to_string(i) + "]";
+    if (!barr.get(i)->as_table()) top.fail(key, "expected a table");
+    TableReader r(*barr.get(i)->as_table(), sc.file, key, assumed);
+    Body b;
+    b.name = r.string("name", "a string naming the body");
+    if (sc.body_index(b.name) >= 0) r.fail("name", "body name '" + b.name + "' is used twice");
+    b.start = r.vec2("start", "[x, y] of the first node (m)");
+    b.end = r.vec2("end", "[x, y] of the last node (m)");
+    if (!(b.length() > 0.0)) r.fail("end", "expected a point different from start: the length must be positive (m)");
+    const long ne = r.integer("elements", "a whole number of elements >= 1");
+    if (ne < 1 || ne > 10'000'000) r.fail("elements", "expected a whole number of elements >= 1");
+    b.elements = static_cast<int>(ne);
+    b.E = positive(r, "E", "N/m^2");
+    b.rho = positive(r, "rho", "kg/m^3");
+    b.area = positive(r, "area", "m^2");
+    if (r.has("inertia")) b.inertia = positive(r, "inertia", "m^4");
+    if (r.has("velocity")) b.velocity = r.vec2("velocity", "[vx, vy] (m/s)");
+    else (*assumed)[r.path("velocity")] = "[0, 0]";
+    read_supports(r, b, assumed);
+    r.finish();
+    sc.bodies.push_back(std::move(b));
+  }
+
+  const toml::node* cn = top.raw("contacts");
+  if (!cn || !cn->as_array() || cn->as_array()->empty())
+    top.fail("contacts", "expected at least one [[contacts]] table");
+  const toml::array& carr = *cn->as_array();
+  for (std::size_t i = 0; i < carr.size(); ++i) {
+    const std::string key = "contacts[" + std::to_string(i) + "]";
+    if (!carr.get(i)->as_table()) top.fail(key, "expected a table");
+    TableReader r(*carr.get(i)->as_table(), sc.file, key, assumed);
+    Contact c;
+    const std::string s = r.string("striker", "the name of a body");
+    c.striker = sc.body_index(s);
+    if (c.striker < 0) r.fail("striker", "expected the name of a body, got '" + s + "'");
+    c.node = node_ref(r, "node", sc.bodies[c.striker]);
+    const std::string t = r.string("target", "the name of a body");
+    c.target = sc.body_index(t);
+    if (c.target < 0) r.fail("target", "expected the name of a body, got '" + t + "'");
+    if (c.target == c.striker) r.fail("target", "expected a body other than the striker");
+    c.friction = r.number_or("friction", 0.0, "a Coulomb coefficient >= 0");
+    if (c.friction < 0) r.fail("friction", "expected a Coulomb coefficient >= 0");
+    r.finish();
+    sc.contacts.push_back(c);
+  }
+
+  {
+    TableReader r(sub_table(top, "effects", false, empty), sc.file, "effects", nullptr);
+    sc.effects.bending = r.boolean_opt("bending");
+    sc.effects.friction = r.boolean_opt("friction");
+    sc.effects.damping = r.boolean_opt("damping");
+    r.finish();
+  }
+  for (const std::string& m : kMethodTables) {
+    if (const toml::node* n = top.raw(m)) {
+      if (!n->as_table()) top.fail(m, "expected a table [" + m + "]");
+      std::ostringstream os;
+      os << *n->as_table();
+      sc.method_tables[m] = os.str();
+    }
+  }
+  top.finish();
+
+  // Cross-checks that need the whole scene.
+  const bool bending = sc.effects.bending.value_or(!scene_is_collinear(sc));
+  for (std::size_t i = 0; i < sc.bodies.size(); ++i)
+    if (bending && sc.bodies[i].inertia <= 0.0)
+      throw SceneError(sc.file, "bodies[" + std::to_string(i) + "].inertia",
+                       "missing; expected a positive second moment of area (m^4): this scene bends");
+  for (std::size_t i = 0; i < sc.bodies.size(); ++i)
+    for (std::size_t j = i + 1; j < sc.bodies.size(); ++j)
+      if (segments_overlap(sc.bodies[i], sc.bodies[j]))
+        throw SceneError(sc.file, "bodies[" + std::to_string(j) + "].start",
+                         "bodies '" + sc.bodies[i].name + "' and '" + sc.bodies[j].name +
+                             "' overlap at t = 0; expected a positive gap between them");
+  return sc;
+}
+
+}  // namespace beamimpact

@@ -1,0 +1,18 @@
+#pragma once
+/// @file scene_io.hpp
+/// @brief Reads and validates a scene TOML file (shared/spec/interface.md).
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "scene/Scene.hpp"
+
+namespace beamimpact {
+
+/// @brief Loads `path`, applies `overrides` ("time.dt=0.005", "bodies.B.elements=20",
+/// "bodies[1].elements=20", "contacts[0].friction=0.3"; values are TOML, bare words are strings)
+/// and validates everything. Throws SceneError naming the file, the key and what was expected.
+Scene load_scene(const std::filesystem::path& path, const std::vector<std::string>& overrides = {});
+
+}  // namespace beamimpact

@@ -1,0 +1,41 @@
+/// @file main.cc
+/// @brief The `beamimpact` command: dispatches to its subcommands.
+/// Exit codes: 0 success; 1 a verification gate failed; 2 bad input (scene, options); 3 a run failed.
+
+#include <cstdio>
+
+#include <CLI/CLI.hpp>
+
+#include "beamimpact/run_command.hpp"
+#include "beamimpact/version.hpp"
+#include "io/CommandExit.hpp"
+#include "scene/SceneError.hpp"
+#ifdef BEAMIMPACT_HAVE_verification
+#include "verification/commands.hpp"
+#endif
+
+int main(int argc, char** argv) {
+  using namespace beamimpact;
+  CLI::App app{"beamimpact: dynamic beam-to-beam collision (Pu & Chi 2011) with independent references"};
+  app.set_version_flag("--version", kVersion);
+  app.require_subcommand(1);
+  add_run_command(app);
+#ifdef BEAMIMPACT_HAVE_verification
+  add_verification_commands(app);  // compare, verify, sweep
+#endif
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  } catch (const CommandExit& e) {
+    return e.code;
+  } catch (const SceneError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 3;
+  }
+  return 0;
+}

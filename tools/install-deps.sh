@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# @brief Installs the Debian packages beamimpact needs (idempotent; skips what is present).
+# Usage: tools/install-deps.sh [--no-fenicsx]
+#   --no-fenicsx  skip python3-dolfinx (large: PETSc, MPI); the FEniCSx reference is then unavailable.
+set -euo pipefail
+pkgs=(cmake g++ make libeigen3-dev libsundials-dev libgsl-dev libgtest-dev libbenchmark-dev
+      libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev
+      python3-numpy python3-matplotlib)
+[[ "${1:-}" == "--no-fenicsx" ]] || pkgs+=(python3-dolfinx openmpi-bin)
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]} == 0)); then echo "install-deps: all packages present"; exit 0; fi
+echo "install-deps: installing ${missing[*]}"
+SUDO=""; [[ $(id -u) -eq 0 ]] || SUDO="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install-deps: done"

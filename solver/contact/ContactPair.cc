@@ -1,5 +1,6 @@
 #include "contact/ContactPair.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "scene/SceneError.hpp"
@@ -23,7 +24,8 @@ const char* to_string(ContactKind k) {
   }
 }
 
-ContactPair::ContactPair(const Model& model, const Scene& scene, int index) : model_(model) {
+ContactPair::ContactPair(const Model& model, const Scene& scene, int index, SurfaceInterpolation surface)
+    : model_(model), surface_(surface) {
   const Contact& c = scene.contacts[index];
   const Body& tb = scene.bodies[c.target];
   const std::string key = "contacts[" + std::to_string(index) + "]";
@@ -77,16 +79,35 @@ ContactPair::ContactPair(const Model& model, const Scene& scene, int index) : mo
 }
 
 void ContactPair::build_rows() {
-  auto row = [&](const Vec2& d, std::vector<DofTerm>& out) {
+  const int n1 = target_first_ + element_;
+  auto linear = [&](const Vec2& d, std::vector<DofTerm>& out) {
     out = model_.project(striker_, d);
-    const int n1 = target_first_ + element_;
     for (const auto& [w, node] : {std::pair{xi1_, n1}, std::pair{xi2_, n1 + 1}}) {
       if (w == 0.0) continue;
       for (DofTerm t : model_.project(node, d)) out.push_back({t.eq, -w * t.coeff});
     }
   };
-  row(n_, gn_);
-  row(t_, gt_);
+  linear(t_, gt_);
+  if (surface_ == SurfaceInterpolation::kLinear || kind_ == ContactKind::kEndToEnd || model_.dofs_per_node() != 3) {
+    linear(n_, gn_);
+    return;
+  }
+  // Hermite: w(s) = H1 w_j + H2 theta'_j + H3 w_j+1 + H4 theta'_j+1 along the element, s = xi2,
+  // with the slope dw/dx = +-theta (sign: n is the axis turned +90 deg or -90 deg).
+  const double s = xi2_;
+  const Vec2 p1 = model_.node_position(n1), p2 = model_.node_position(n1 + 1);
+  const double L = std::hypot(p2[0] - p1[0], p2[1] - p1[1]);
+  const double turn = t_[0] * n_[1] - t_[1] * n_[0];  // +1: n = t turned +90 deg
+  const double H[4] = {1 - 3 * s * s + 2 * s * s * s, L * (s - 2 * s * s + s * s * s), 3 * s * s - 2 * s * s * s,
+                       L * (-s * s + s * s * s)};
+  gn_ = model_.project(striker_, n_);
+  for (int k = 0; k < 2; ++k) {
+    const int node = n1 + k;
+    if (H[2 * k] != 0.0)
+      for (DofTerm t : model_.project(node, n_)) gn_.push_back({t.eq, -H[2 * k] * t.coeff});
+    if (const int eq = model_.equation(node, 2); eq >= 0 && H[2 * k + 1] != 0.0)
+      gn_.push_back({eq, -H[2 * k + 1] * turn});
+  }
 }
 
 double ContactPair::eval(const std::vector<DofTerm>& row, const Eigen::VectorXd& U) {
@@ -124,9 +145,12 @@ bool ContactPair::relocate(const Eigen::VectorXd& U) {
 }
 
 Vec2 ContactPair::target_vector(const Eigen::VectorXd& U) const {
-  const int n1 = target_first_ + element_;
-  const Vec2 u1 = model_.node_vector(U, n1), u2 = model_.node_vector(U, n1 + 1);
-  return {xi1_ * u1[0] + xi2_ * u2[0], xi1_ * u1[1] + xi2_ * u2[1]};
+  // Tangential part from the tangent row (linear), normal part from the normal row: both rows
+  // are "striker minus target", so the target's part is the striker's minus the row value.
+  const Vec2 us = model_.node_vector(U, striker_);
+  const double un = us[0] * n_[0] + us[1] * n_[1] - eval(gn_, U);
+  const double ut = us[0] * t_[0] + us[1] * t_[1] - eval(gt_, U);
+  return {un * n_[0] + ut * t_[0], un * n_[1] + ut * t_[1]};
 }
 
 }  // namespace beamimpact

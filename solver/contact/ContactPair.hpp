@@ -22,12 +22,20 @@ enum class ContactKind {
 /// @brief "end_to_end" | "node_to_node" | "node_to_surface".
 const char* to_string(ContactKind k);
 
+/// @brief How the target's displacement at the struck point is interpolated.
+enum class SurfaceInterpolation {
+  kLinear,   ///< the paper's Eq. 14-20: weights xi1, xi2 on the nodal translations (C0 surface)
+  kHermite,  ///< normal displacement by the beam's own cubic (uses nodal rotations: C1 surface,
+             ///< no kink at nodes for a sliding striker); tangential part stays linear
+};
+
 /// @brief One contact pair of the scene and its current contact point.
 class ContactPair {
  public:
   /// @brief Locates contact `index` of the scene in the model. Throws SceneError when the striker
   /// node faces neither the target's surface nor its end, or penetrates it at t = 0.
-  ContactPair(const Model& model, const Scene& scene, int index);
+  ContactPair(const Model& model, const Scene& scene, int index,
+              SurfaceInterpolation surface = SurfaceInterpolation::kLinear);
 
   /// @brief Kind found at t = 0.
   ContactKind kind() const { return kind_; }
@@ -57,12 +65,13 @@ class ContactPair {
   /// true when the point changed (rows rebuilt). False if the striker is beyond the target's ends.
   bool relocate(const Eigen::VectorXd& U);
 
-  /// @brief Displacement of the struck point (interpolated) from U (m).
+  /// @brief Displacement of the struck point (interpolated as the rows are) from U (m).
   Vec2 target_vector(const Eigen::VectorXd& U) const;
 
  private:
   void build_rows();
   const Model& model_;
+  SurfaceInterpolation surface_;
   ContactKind kind_ = ContactKind::kEndToEnd;
   int striker_ = 0, target_body_ = 0, target_first_ = 0, target_elements_ = 0;
   int element_ = 0;

@@ -29,7 +29,9 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
   std::vector<char> active(m, 0);
   any_ = false;
   for (int c = 0; c < m; ++c) {
-    if (pairs_[c].relocate(Ubar)) fresh_[c] = 0;
+    // A sliding (or newly closing) striker is re-located from the predicted configuration; a
+    // sticking one stays on the material point it holds.
+    if (out_[c].state != ContactState::kStick && pairs_[c].relocate(Ubar)) fresh_[c] = 0;
     const ContactPair& p = pairs_[c];
     gbar[c] = p.g0() + ContactPair::eval(p.normal_row(), Ubar);
     sbar[c] = friction_ ? ContactPair::eval(p.tangent_row(), Ubar) - ContactPair::eval(p.tangent_row(), U) : 0.0;

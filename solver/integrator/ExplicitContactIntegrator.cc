@@ -5,9 +5,9 @@
 namespace beamimpact {
 namespace {
 
-std::vector<ContactPair> make_pairs(const Model& model, const Scene& scene) {
+std::vector<ContactPair> make_pairs(const Model& model, const Scene& scene, SurfaceInterpolation surface) {
   std::vector<ContactPair> pairs;
-  for (int c = 0; c < static_cast<int>(scene.contacts.size()); ++c) pairs.emplace_back(model, scene, c);
+  for (int c = 0; c < static_cast<int>(scene.contacts.size()); ++c) pairs.emplace_back(model, scene, c, surface);
   return pairs;
 }
 
@@ -26,14 +26,15 @@ double length_scale(const Scene& scene) {
 }  // namespace
 
 ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const Scene& scene,
-                                                     const Effects& effects, double dt)
+                                                     const Effects& effects, double dt,
+                                                     SurfaceInterpolation surface)
     : model_(model),
       dt_(dt),
       damped_(effects.damping && model.damped()),
       friction_(effects.friction),
       minv_(model),
       fint_(model, effects.corotational ? effects.rotating : std::vector<bool>(scene.bodies.size(), false)),
-      pairs_(make_pairs(model, scene)),
+      pairs_(make_pairs(model, scene, surface)),
       // Gap tolerance 1e-10 of the largest body: above roundoff of positions (~1e-15 relative),
       // far below any physical penetration per step.
       solver_(pairs_, frictions(scene), effects.friction, model.size(), 1e-10 * length_scale(scene),
@@ -43,10 +44,6 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
   Vbar_ = V_ = model.initial_velocity();  // no contact force at t = 0: Vbar^0 = V^0
   fint_U_ = fint_next_ = Eigen::VectorXd::Zero(n);
   fint_.apply(U_, fint_U_);
-  gap_prev_.resize(pairs_.size());
-  slip_prev_.assign(pairs_.size(), 0.0);
-  for (std::size_t c = 0; c < pairs_.size(); ++c)
-    gap_prev_[c] = pairs_[c].g0() + ContactPair::eval(pairs_[c].normal_row(), U_);
 }
 
 void ExplicitContactIntegrator::subtract_damping_force(const Eigen::VectorXd& v, Eigen::VectorXd& f) {
@@ -84,13 +81,19 @@ void ExplicitContactIntegrator::solve_contacts() {
     solver_.add_forces(fc_);
     apply_Minv(fc_, work_);
     V_.noalias() += (0.5 * dt_) * work_;
-    // Contact work of step p: lambda_p (g_{p+1} - g_{p-1}) / 2 (+ the tangential twin). It is the
-    // exact change of the discrete energy 1/2 v_{p+1/2} M v_{p+1/2} + 1/2 u_p K u_{p+1}.
+    // Contact work of step p: f_c . (U^{p+1} - U^{p-1}) / 2 with this step's rows, i.e.
+    // R (g_{p+1} - g_{p-1})/2 + tau (s_{p+1} - s_{p-1})/2. It is the exact change of the discrete
+    // energy 1/2 v_{p+1/2} M v_{p+1/2} + 1/2 u_p K u_{p+1} (linear kinematics).
     for (std::size_t c = 0; c < pairs_.size(); ++c) {
       const ContactForce& f = (*forces_)[c];
       if (f.state == ContactState::kOpen) continue;
-      dissipated_ -= 0.5 * f.R * (f.gap_next - gap_prev_[c]);
-      dissipated_ -= 0.5 * f.tau * (f.slip_next + slip_prev_[c]);
+      const ContactPair& pc = pairs_[c];
+      const double g_prev = pc.g0() + ContactPair::eval(pc.normal_row(), U_prev_);
+      dissipated_ -= 0.5 * f.R * (f.gap_next - g_prev);
+      if (friction_) {
+        const double s_now = ContactPair::eval(pc.tangent_row(), U_), s_prev = ContactPair::eval(pc.tangent_row(), U_prev_);
+        dissipated_ -= 0.5 * f.tau * (f.slip_next + s_now - s_prev);
+      }
     }
   }
 }
@@ -115,13 +118,6 @@ void ExplicitContactIntegrator::advance() {
   }
   apply_Minv(work2_, work_);
   Vbar_ += work_;
-  // Remember g(U^p) and s(U^{p+1}) - s(U^p) for the next step's contact work.
-  for (std::size_t c = 0; c < pairs_.size(); ++c) {
-    gap_prev_[c] = pairs_[c].g0() + ContactPair::eval(pairs_[c].normal_row(), U_);
-    if (friction_)
-      slip_prev_[c] = ContactPair::eval(pairs_[c].tangent_row(), U_next_) -
-                      ContactPair::eval(pairs_[c].tangent_row(), U_);
-  }
   std::swap(U_prev_, U_);
   std::swap(U_, U_next_);
   std::swap(fint_U_, fint_next_);

@@ -23,8 +23,10 @@ namespace beamimpact {
 /// solve_contacts() (forces of step p, physical V^p), read the state, then advance().
 class ExplicitContactIntegrator {
  public:
-  /// @brief scene: contacts and friction; effects: which code paths run; dt in s.
-  ExplicitContactIntegrator(const Model& model, const Scene& scene, const Effects& effects, double dt);
+  /// @brief scene: contacts and friction; effects: which code paths run; dt in s; surface: how
+  /// the struck point of a surface contact is interpolated (the paper's linear weights by default).
+  ExplicitContactIntegrator(const Model& model, const Scene& scene, const Effects& effects, double dt,
+                            SurfaceInterpolation surface = SurfaceInterpolation::kLinear);
 
   /// @brief Predicts U^{p+1} without contact, solves the contact forces of step p and the physical
   /// velocity V^p, and adds this step's contact work to the dissipated energy.
@@ -67,9 +69,9 @@ class ExplicitContactIntegrator {
   ContactSolver solver_;
   const std::vector<ContactForce>* forces_ = nullptr;
   long p_ = 0;
-  Eigen::VectorXd U_prev_, U_, U_next_, Vbar_, V_, fint_U_, fint_next_, Ubar_, fc_, work_, work2_,
+  Eigen::VectorXd U_prev_, U_, U_next_,  // U^{p-1}, U^p, U^{p+1} (rotated by swaps)
+      Vbar_, V_, fint_U_, fint_next_, Ubar_, fc_, work_, work2_,
       du_, scratch_, hwork_;
-  std::vector<double> gap_prev_, slip_prev_;  ///< g(U^{p-1}) per contact, s(U^p) - s(U^{p-1})
   double dissipated_ = 0.0;
 };
 

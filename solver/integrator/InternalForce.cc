@@ -38,8 +38,10 @@ InternalForce::Local InternalForce::local(int e, const Eigen::VectorXd& U,
   l.ln = std::hypot(dx, dy);
   l.c = dx / l.ln;
   l.s = dy / l.ln;
-  // Rigid rotation of the chord from the reference direction (el.c, el.s), in (-pi, pi].
-  const double alpha = std::atan2(el.c * l.s - el.s * l.c, el.c * l.c + el.s * l.s);
+  // Rigid rotation of the chord from the reference direction: atan2 gives it in (-pi, pi], but the
+  // nodal rotations accumulate past pi on a spinning body, so take the branch nearest to them.
+  double alpha = std::atan2(el.c * l.s - el.s * l.c, el.c * l.c + el.s * l.s);
+  alpha += 2 * M_PI * std::round((0.5 * (x[2] + x[5]) - alpha) / (2 * M_PI));
   l.u = l.ln - el.length;
   l.th1 = x[2] - alpha;
   l.th2 = x[5] - alpha;
@@ -56,8 +58,10 @@ void InternalForce::apply(const Eigen::VectorXd& U, Eigen::VectorXd& f) const {
     const double N = el.E * el.area / el.length * l.u;
     const double k = el.E * el.inertia / el.length;
     const double M1 = k * (4 * l.th1 + 2 * l.th2), M2 = k * (2 * l.th1 + 4 * l.th2);
-    // f = r N + z (M1 + M2)/ln + e3 M1 + e6 M2, r = [-c,-s,0,c,s,0], z = [s,-c,0,-s,c,0].
-    const double q = (M1 + M2) / l.ln;
+    // f = B^T [N, M1, M2] with B = [r; e3 - z/ln; e6 - z/ln] (theta_local = theta - chord rotation,
+    // d(chord angle) = z . dp / ln), r = [-c,-s,0,c,s,0], z = [s,-c,0,-s,c,0]:
+    // f = r N - z (M1 + M2)/ln + e3 M1 + e6 M2.
+    const double q = -(M1 + M2) / l.ln;
     const double fe[6] = {-l.c * N + l.s * q, -l.s * N - l.c * q, M1,
                           l.c * N - l.s * q,  l.s * N + l.c * q,  M2};
     for (int i = 0; i < 6; ++i)

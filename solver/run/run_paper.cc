@@ -68,6 +68,8 @@ RunResult run_paper(const Scene& scene_in) {
   MethodOptions options(scene, "paper", &r.assumed);
   const long merge_steps = options.reader().integer_or("merge_steps", 3, "a whole number of steps >= 0");
   if (merge_steps < 0) options.reader().fail("merge_steps", "expected a whole number of steps >= 0");
+  const SurfaceInterpolation surface = options.reader().choice_or("surface", "linear", {"linear", "hermite"}) == "linear"
+                                           ? SurfaceInterpolation::kLinear : SurfaceInterpolation::kHermite;
   options.reader().finish();
   if (effects.corotational && scene.model.mass == MassKind::kConsistent)
     throw SceneError(scene.file, "model.mass",
@@ -82,7 +84,7 @@ RunResult run_paper(const Scene& scene_in) {
   const long N = static_cast<long>(std::ceil(scene.time.end / dt - 1e-9));
   r.steps = N;
 
-  ExplicitContactIntegrator integ(model, scene, effects, dt);
+  ExplicitContactIntegrator integ(model, scene, effects, dt, surface);
   const std::string rule = fmt::format("contact phases separated by fewer than {} open steps ({:.6g} s) are "
                                        "merged; an interval runs from its first to its last step with R > 0",
                                        merge_steps, static_cast<double>(merge_steps) * dt);

@@ -1,0 +1,133 @@
+// The assembled model against beam and rod theory: natural frequencies converge to the exact
+// ones at the order the discretisation predicts.
+#include "model/Model.hpp"
+
+#include <cmath>
+
+#include <Eigen/Eigenvalues>
+#include <gtest/gtest.h>
+
+#include "scene/SceneError.hpp"
+#include "testing/test_scenes.hpp"
+
+namespace beamimpact {
+namespace {
+
+using testing::soft_body;
+
+/// Scene with one body to study (and a far-away dummy body, scenes need two).
+Scene single(const Body& b, MassKind mass) {
+  Scene s;
+  s.file = "test";
+  // On b's line, far beyond its end: keeps the scene collinear when b is (rod layout).
+  const Vec2 d{b.end[0] - b.start[0], b.end[1] - b.start[1]};
+  s.bodies = {b, soft_body("far", {b.start[0] + 10 * d[0], b.start[1] + 10 * d[1]},
+                           {b.start[0] + 11 * d[0], b.start[1] + 11 * d[1]}, 1)};
+  s.model.mass = mass;
+  return s;
+}
+
+/// Sorted generalized eigenvalues omega^2 of the model, restricted to body 0's equations.
+Eigen::VectorXd omegas(const Model& m) {
+  // The dummy body adds its own modes; it is far and free: its rigid and (high) elastic modes are
+  // filtered below by taking body-0 modes only, through the equations of body 0.
+  std::vector<int> eqs;
+  for (int n = 0; n < m.num_nodes(); ++n)
+    if (m.body_of_node(n) == 0)
+      for (int c = 0; c < m.dofs_per_node(); ++c)
+        if (m.equation(n, c) >= 0) eqs.push_back(m.equation(n, c));
+  const int k = static_cast<int>(eqs.size());
+  Eigen::MatrixXd K(k, k), M(k, k);
+  const Eigen::MatrixXd Kd(m.K()), Md(m.M());
+  for (int i = 0; i < k; ++i)
+    for (int j = 0; j < k; ++j) {
+      K(i, j) = Kd(eqs[i], eqs[j]);
+      M(i, j) = Md(eqs[i], eqs[j]);
+    }
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, M);
+  return es.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+}
+
+/// Relative error of the first simply supported bending frequency with n elements.
+double ss_error(int n, MassKind mass, RotaryInertia rot) {
+  Body b = soft_body("B", {0, 0}, {10, 0}, n);
+  b.supports = {{0, true, true, false}, {n, false, true, false}};
+  Scene s = single(b, mass);
+  s.model.rotary_inertia = rot;
+  const Model m(s, true);
+  // Exact Euler-Bernoulli: omega_1 = (pi/L)^2 sqrt(EI / (rho A)).
+  const double exact = std::pow(M_PI / 10.0, 2) * std::sqrt(b.E * b.inertia / (b.rho * b.area));
+  // The lowest non-zero frequency: the body's axial rigid mode is held by the pin; the first mode
+  // is bending (axial modes are far higher for this slender beam).
+  return std::abs(omegas(m)(0) - exact) / exact;
+}
+
+TEST(Model, SimplySupportedBendingFrequencyConvergesSecondOrderWithLumpedMass) {
+  const double e8 = ss_error(8, MassKind::kLumped, RotaryInertia::kHrz);
+  const double e16 = ss_error(16, MassKind::kLumped, RotaryInertia::kHrz);
+  const double e32 = ss_error(32, MassKind::kLumped, RotaryInertia::kHrz);
+  const double p1 = std::log2(e8 / e16), p2 = std::log2(e16 / e32);
+  // Lumped mass: frequency error O(h^2). Observed orders within 0.2 of 2 once asymptotic.
+  EXPECT_NEAR(p2, 2.0, 0.2) << e8 << " " << e16 << " " << e32;
+  EXPECT_NEAR(p1, 2.0, 0.3);
+  EXPECT_LT(e32, 1e-3);
+}
+
+TEST(Model, SimplySupportedBendingFrequencyConvergesFourthOrderWithConsistentMass) {
+  const double e4 = ss_error(4, MassKind::kConsistent, RotaryInertia::kHrz);
+  const double e8 = ss_error(8, MassKind::kConsistent, RotaryInertia::kHrz);
+  const double e16 = ss_error(16, MassKind::kConsistent, RotaryInertia::kHrz);
+  // Hermite cubics with consistent mass: frequency error O(h^4).
+  EXPECT_NEAR(std::log2(e8 / e16), 4.0, 0.3) << e4 << " " << e8 << " " << e16;
+  EXPECT_LT(e16, 1e-5);
+}
+
+TEST(Model, HigherSimplySupportedModesConverge) {
+  // Mode n = 1..3 at 64 elements within 0.5 % of (n pi / L)^2 sqrt(EI / rho A): the lumped
+  // O((n h / L)^2) error is 0.3 % for n = 3.
+  const int n = 64;
+  Body b = soft_body("B", {0, 0}, {10, 0}, n);
+  b.supports = {{0, true, true, false}, {n, false, true, false}};
+  const Model m(single(b, MassKind::kLumped), true);
+  const Eigen::VectorXd w = omegas(m);
+  const double c = std::sqrt(b.E * b.inertia / (b.rho * b.area));
+  for (int k = 1; k <= 3; ++k) EXPECT_NEAR(w(k - 1), std::pow(k * M_PI / 10.0, 2) * c, 5e-3 * std::pow(k * M_PI / 10.0, 2) * c);
+}
+
+TEST(Model, FreeRodAxialFrequenciesConvergeSecondOrder) {
+  auto err = [](int n) {
+    const Model m(single(soft_body("A", {0, 0}, {10, 0}, n), MassKind::kLumped), false);
+    const Eigen::VectorXd w = omegas(m);
+    EXPECT_NEAR(w(0), 0.0, 1e-6);  // the rigid mode
+    const double exact = M_PI * 10.0 / 10.0;  // omega_1 = pi c / L, c = 10 m/s
+    return std::abs(w(1) - exact) / exact;
+  };
+  const double e10 = err(10), e20 = err(20), e40 = err(40);
+  // Lumped rod: omega_k = (2c/h) sin(k pi h / (2L)), error ~ (k pi h / L)^2 / 24: order 2.
+  EXPECT_NEAR(std::log2(e10 / e20), 2.0, 0.05);
+  EXPECT_NEAR(std::log2(e20 / e40), 2.0, 0.05);
+  EXPECT_NEAR(e10, std::pow(M_PI / 10.0, 2) / 24.0, 0.05 * e10);  // the leading term itself
+}
+
+TEST(Model, RodLayoutNeedsACollinearScene) {
+  Scene s = single(soft_body("A", {0, 0}, {10, 0}, 4), MassKind::kLumped);
+  s.bodies[1] = soft_body("B", {0, 1}, {10, 1}, 4);  // parallel but offset: not one line
+  EXPECT_THROW(Model(s, false), SceneError);
+}
+
+TEST(Model, MomentumCovectorGivesRigidMomentum) {
+  // A rigid translation v carries momentum m v, for lumped and consistent mass alike.
+  for (MassKind mk : {MassKind::kLumped, MassKind::kConsistent}) {
+    Body a = soft_body("A", {0, 0}, {3, 4}, 5, {0.3, -0.7});
+    Scene s = single(a, mk);
+    const Model m(s, true);
+    const Eigen::VectorXd v = m.initial_velocity();
+    const double mass = a.rho * a.area * 5.0;
+    EXPECT_NEAR(m.body_mass(0), mass, 1e-12);
+    EXPECT_NEAR(m.momentum_covector(0, 0).dot(v), 0.3 * mass, 1e-12);
+    EXPECT_NEAR(m.momentum_covector(0, 1).dot(v), -0.7 * mass, 1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace beamimpact

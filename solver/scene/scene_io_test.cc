@@ -1,0 +1,117 @@
+// Scene files: the shipped scenes load, --set overrides work, and every kind of bad input gives
+// a SceneError naming the file, the key and what was expected.
+#include "scene/scene_io.hpp"
+
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "scene/SceneError.hpp"
+#include "testing/test_scenes.hpp"
+
+namespace beamimpact {
+namespace {
+
+using testing::paper_scene;
+
+TEST(SceneIo, LoadsThePaperScenes) {
+  const Scene s1 = load_scene(paper_scene("s1_central"));
+  EXPECT_EQ(s1.name, "s1_central");
+  ASSERT_EQ(s1.bodies.size(), 2u);
+  EXPECT_EQ(s1.bodies[1].start, (Vec2{10.5, 0.0}));
+  EXPECT_EQ(s1.contacts[0].node, 10);  // "end" of a 10-element body
+  EXPECT_EQ(s1.sha256.size(), 64u);
+  const Scene s2 = load_scene(paper_scene("s2_transverse"));
+  ASSERT_EQ(s2.bodies[1].supports.size(), 2u);
+  EXPECT_TRUE(s2.bodies[1].supports[0].fix_x && s2.bodies[1].supports[0].fix_y);
+  EXPECT_TRUE(!s2.bodies[1].supports[1].fix_x && s2.bodies[1].supports[1].fix_y);
+  const Scene s4 = load_scene(paper_scene("s4_oblique_45"));
+  EXPECT_FALSE(s4.time.dt.has_value());  // "auto"
+  EXPECT_DOUBLE_EQ(s4.contacts[0].friction, 0.3);
+}
+
+TEST(SceneIo, RecordsAssumedDefaults) {
+  const Scene s = load_scene(paper_scene("s1_central"));
+  EXPECT_EQ(s.assumed.at("time.allow_above_critical"), "false");
+  EXPECT_EQ(s.assumed.at("model.rayleigh_mass"), "0");
+}
+
+TEST(SceneIo, SetOverridesByPathIndexAndName) {
+  const Scene s = load_scene(paper_scene("s1_central"),
+                             {"time.dt=0.005", "bodies[1].elements=20", "bodies.A.E=200", "contacts.0.friction=0.1",
+                              "model.mass=consistent"});
+  EXPECT_DOUBLE_EQ(*s.time.dt, 0.005);
+  EXPECT_EQ(s.bodies[1].elements, 20);
+  EXPECT_DOUBLE_EQ(s.bodies[0].E, 200.0);
+  EXPECT_DOUBLE_EQ(s.contacts[0].friction, 0.1);
+  EXPECT_EQ(s.model.mass, MassKind::kConsistent);  // a bare word is read as a string
+  EXPECT_EQ(s.overrides.at("time.dt"), "0.005");
+}
+
+// Writes `text` to a temporary scene file and returns the SceneError it raises.
+SceneError error_of(const std::string& text, const std::vector<std::string>& sets = {}) {
+  const std::string path = ::testing::TempDir() + "/bad_scene.toml";
+  std::ofstream(path) << text;
+  try {
+    load_scene(path, sets);
+  } catch (const SceneError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no error for:\n" << text;
+  return SceneError("", "", "");
+}
+
+std::string good() {
+  std::ifstream in(paper_scene("s2_transverse"));
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+  const auto at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return s.replace(at, from.size(), to);
+}
+
+struct BadCase {
+  const char* what;
+  std::string text;
+  const char* key;
+  const char* says;
+};
+
+TEST(SceneIo, BadInputNamesFileKeyAndExpectation) {
+  const std::string g = good();
+  const std::vector<BadCase> cases = {
+      {"missing key", replace(g, "end = 3.0", ""), "time.end", "missing"},
+      {"unknown key", replace(g, "output_every = 1", "output_every = 1\nsteps = 3"), "time.steps", "unknown key"},
+      {"wrong type", replace(g, "elements = 5", "elements = \"five\""), "bodies[0].elements", "expected a whole number"},
+      {"negative area", replace(g, "area = 0.4", "area = -0.4"), "bodies[0].area", "positive"},
+      {"zero modulus", replace(g, "E = 100.0", "E = 0.0"), "bodies[0].E", "positive"},
+      {"zero density", replace(g, "rho = 1.0", "rho = 0"), "bodies[0].rho", "positive"},
+      {"zero length", replace(g, "end = [5.0, 0.1]", "end = [5.0, 5.1]"), "bodies[0].end", "length must be positive"},
+      {"missing support node", replace(g, "{ at = \"end\", fix = [\"y\"] }", "{ at = 11, fix = [\"y\"] }"),
+       "bodies[1].supports[1].at", "node index 0..10"},
+      {"missing contact node", replace(g, "node = \"end\"", "node = 6"), "contacts[0].node", "node index 0..5"},
+      {"unknown body", replace(g, "target = \"B\"", "target = \"C\""), "contacts[0].target", "name of a body"},
+      {"overlap", replace(g, "end = [5.0, 0.1]", "end = [5.0, -0.1]"), "bodies[1].start", "overlap at t = 0"},
+      {"bad choice", replace(g, "mass = \"lumped\"", "mass = \"heavy\""), "model.mass", "one of \"lumped\" \"consistent\""},
+      {"syntax", replace(g, "[time]", "[time"), "", "TOML syntax error at line"},
+      {"bad dt", replace(g, "dt = 0.01", "dt = \"fast\""), "time.dt", "\"auto\""},
+  };
+  for (const BadCase& c : cases) {
+    const SceneError e = error_of(c.text);
+    EXPECT_EQ(e.key(), c.key) << c.what << ": " << e.what();
+    EXPECT_NE(std::string(e.what()).find(c.says), std::string::npos) << c.what << ": " << e.what();
+    EXPECT_NE(std::string(e.what()).find("bad_scene.toml"), std::string::npos) << c.what;
+  }
+}
+
+TEST(SceneIo, BadOverrideIsAnError) {
+  const SceneError e = error_of(good(), {"bodies.Z.elements=3"});
+  EXPECT_NE(std::string(e.what()).find("no entry 'Z'"), std::string::npos) << e.what();
+  const SceneError typo = error_of(good(), {"time.ddt=0.1"});
+  EXPECT_EQ(typo.key(), "time.ddt");  // a typo becomes an unknown key, not a silent default
+}
+
+}  // namespace
+}  // namespace beamimpact

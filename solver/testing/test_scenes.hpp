@@ -1,0 +1,39 @@
+#pragma once
+/// @file test_scenes.hpp
+/// @brief Helpers for tests: paths of the shipped scenes and small scenes built in code.
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "scene/Scene.hpp"
+
+namespace beamimpact::testing {
+
+/// @brief Root of the source tree (env BEAMIMPACT_SOURCE_DIR set by ctest, else the compile-time path).
+inline std::filesystem::path source_dir() {
+  if (const char* s = std::getenv("BEAMIMPACT_SOURCE_DIR")) return s;
+  return BEAMIMPACT_SOURCE_DIR_DEFAULT;
+}
+
+/// @brief Path of a paper scene, e.g. paper_scene("s1_central").
+inline std::string paper_scene(const std::string& name) {
+  return (source_dir() / "verification/scenes/paper" / (name + ".toml")).string();
+}
+
+/// @brief A straight body from (x0, y0) to (x1, y1) with the paper's soft material (E 100, rho 1, A 0.4).
+inline Body soft_body(const std::string& name, Vec2 a, Vec2 b, int elements, Vec2 v = {0, 0}) {
+  Body body;
+  body.name = name;
+  body.start = a;
+  body.end = b;
+  body.elements = elements;
+  body.E = 100.0;
+  body.rho = 1.0;
+  body.area = 0.4;
+  body.inertia = 0.4 * 0.4 * 0.4 / 12.0;
+  body.velocity = v;
+  return body;
+}
+
+}  // namespace beamimpact::testing

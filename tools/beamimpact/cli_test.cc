@@ -1,0 +1,110 @@
+// End-to-end: the `beamimpact` binary's exit codes, messages and outputs for good and bad input.
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
+
+#include "testing/test_scenes.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using beamimpact::testing::paper_scene;
+
+struct Result {
+  int code;
+  std::string output;  // stdout and stderr
+};
+
+Result run(const std::string& args) {
+  const std::string cmd = std::string(BEAMIMPACT_EXE) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf;
+  while (std::fgets(buf.data(), buf.size(), p)) out += buf.data();
+  const int status = pclose(p);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::path(::testing::TempDir()) / ("cli_" + name);
+  fs::remove_all(d);
+  return d;
+}
+
+std::string bad_scene(const std::string& from, const std::string& to) {
+  std::ifstream in(paper_scene("s2_transverse"));
+  std::string s(std::istreambuf_iterator<char>(in), {});
+  s.replace(s.find(from), from.size(), to);
+  static int count = 0;  // one file per case: all cases are built before any runs
+  const std::string path = ::testing::TempDir() + "/cli_bad_" + std::to_string(++count) + ".toml";
+  std::ofstream(path) << s;
+  return path;
+}
+
+TEST(Cli, RunWritesHistoryAndSummary) {
+  const fs::path out = fresh_dir("ok");
+  const Result r = run("run " + paper_scene("s1_central") + " --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream h(out / "history.csv");
+  std::string header;
+  std::getline(h, header);
+  EXPECT_EQ(header.rfind("t,R,tau,gap,ua_x,ua_y,va_x,va_y,ub_x,ub_y,vb_x,vb_y", 0), 0u) << header;
+  const auto j = nlohmann::json::parse(std::ifstream(out / "summary.json"));
+  EXPECT_EQ(j["method"], "paper");
+  EXPECT_EQ(j["steps"], 400);
+  EXPECT_EQ(j["effects"], nlohmann::json::array({"axial"}));
+  EXPECT_TRUE(j["complete"].get<bool>());
+  EXPECT_EQ(j["contacts"][0]["intervals"].size(), 1u);
+  EXPECT_NEAR(j["contacts"][0]["impulse_normal"].get<double>(), 4.0, 0.16);  // exact 4 N s, 4 % mesh error
+}
+
+struct Bad {
+  const char* what;
+  std::string args;
+  const char* says;
+};
+
+TEST(Cli, BadInputExitsTwoWithOneMessageAndNoResult) {
+  const std::vector<Bad> cases = {
+      {"missing file", "run /nonexistent/scene.toml", "cannot open the scene file"},
+      {"malformed", "run " + bad_scene("[time]", "[time"), "TOML syntax error"},
+      {"unknown key", "run " + bad_scene("output_every = 1", "output_evry = 1"), "key 'time.output_evry': unknown key"},
+      {"negative length area", "run " + bad_scene("area = 0.4", "area = -1"), "key 'bodies[0].area': expected a positive number (m^2)"},
+      {"contact node", "run " + bad_scene("node = \"end\"", "node = 9"), "key 'contacts[0].node'"},
+      {"overlap", "run " + bad_scene("end = [5.0, 0.1]", "end = [5.0, -0.5]"), "overlap at t = 0"},
+      {"dt above critical", "run " + paper_scene("s2_transverse") + " --set time.dt=0.1",
+       "key 'time.dt': expected at most the critical step"},
+      {"unknown method", "run " + paper_scene("s1_central") + " --method magic", "key '--method'"},
+      {"bad --set", "run " + paper_scene("s1_central") + " --set nonsense", "--set expects key=value"},
+  };
+  for (const Bad& c : cases) {
+    const fs::path out = fresh_dir("bad");
+    const Result r = run(c.args + " --out " + out.string());
+    EXPECT_EQ(r.code, 2) << c.what << ": " << r.output;
+    EXPECT_NE(r.output.find(c.says), std::string::npos) << c.what << ": " << r.output;
+    EXPECT_EQ(r.output.find("error:"), r.output.rfind("error:")) << c.what << ": one message";
+    EXPECT_FALSE(fs::exists(out / "summary.json")) << c.what;
+    EXPECT_FALSE(fs::exists(out / "history.csv")) << c.what;
+  }
+}
+
+TEST(Cli, FailedRerunRemovesAStaleSummary) {
+  // A directory that held a complete result must not look complete after a failed run into it.
+  const fs::path out = fresh_dir("stale");
+  ASSERT_EQ(run("run " + paper_scene("s1_central") + " --out " + out.string()).code, 0);
+  ASSERT_TRUE(fs::exists(out / "summary.json"));
+  // dt = 0.2 s is twice the critical step: allowed by the flag, the run diverges -> exit 3.
+  const Result r = run("run " + paper_scene("s1_central") + " --out " + out.string() +
+                       " --set time.dt=0.2 --set time.allow_above_critical=true --set time.end=400");
+  EXPECT_EQ(r.code, 3) << r.output;
+  EXPECT_NE(r.output.find("diverged"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+}
+
+}  // namespace

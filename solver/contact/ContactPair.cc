@@ -75,17 +75,20 @@ ContactPair::ContactPair(const Model& model, const Scene& scene, int index, Surf
   if (g0_ < -tol)
     throw SceneError(scene.file, key, "the striker node penetrates the target at t = 0 (gap " +
                                           std::to_string(g0_) + " m); expected a gap >= 0");
+  // Room for the largest row (striker + two target nodes with rotations): no growth while sliding.
+  gn_.reserve(8);
+  gt_.reserve(8);
   build_rows();
 }
 
 void ContactPair::build_rows() {
   const int n1 = target_first_ + element_;
+  // Rows are rebuilt in place (clear keeps the capacity): a sliding point allocates nothing.
   auto linear = [&](const Vec2& d, std::vector<DofTerm>& out) {
-    out = model_.project(striker_, d);
-    for (const auto& [w, node] : {std::pair{xi1_, n1}, std::pair{xi2_, n1 + 1}}) {
-      if (w == 0.0) continue;
-      for (DofTerm t : model_.project(node, d)) out.push_back({t.eq, -w * t.coeff});
-    }
+    out.clear();
+    model_.append_projection(striker_, d, 1.0, out);
+    if (xi1_ != 0.0) model_.append_projection(n1, d, -xi1_, out);
+    if (xi2_ != 0.0) model_.append_projection(n1 + 1, d, -xi2_, out);
   };
   linear(t_, gt_);
   if (surface_ == SurfaceInterpolation::kLinear || kind_ == ContactKind::kEndToEnd || model_.dofs_per_node() != 3) {
@@ -100,11 +103,11 @@ void ContactPair::build_rows() {
   const double turn = t_[0] * n_[1] - t_[1] * n_[0];  // +1: n = t turned +90 deg
   const double H[4] = {1 - 3 * s * s + 2 * s * s * s, L * (s - 2 * s * s + s * s * s), 3 * s * s - 2 * s * s * s,
                        L * (-s * s + s * s * s)};
-  gn_ = model_.project(striker_, n_);
+  gn_.clear();
+  model_.append_projection(striker_, n_, 1.0, gn_);
   for (int k = 0; k < 2; ++k) {
     const int node = n1 + k;
-    if (H[2 * k] != 0.0)
-      for (DofTerm t : model_.project(node, n_)) gn_.push_back({t.eq, -H[2 * k] * t.coeff});
+    if (H[2 * k] != 0.0) model_.append_projection(node, n_, -H[2 * k], gn_);
     if (const int eq = model_.equation(node, 2); eq >= 0 && H[2 * k + 1] != 0.0)
       gn_.push_back({eq, -H[2 * k + 1] * turn});
   }

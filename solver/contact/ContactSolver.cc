@@ -9,7 +9,7 @@ ContactSolver::ContactSolver(std::vector<ContactPair>& pairs, std::vector<double
     : pairs_(pairs), mu_(std::move(mu)), friction_(friction), tol_(gap_tol), apply_H_(std::move(apply_H)),
       out_(pairs.size()), hn_(pairs.size(), Eigen::VectorXd::Zero(n)),
       ht_(friction ? pairs.size() : 0, Eigen::VectorXd::Zero(n)), fresh_(pairs.size(), 0),
-      scratch_(Eigen::VectorXd::Zero(n)) {}
+      scratch_(Eigen::VectorXd::Zero(n)), gbar_(pairs.size()), sbar_(pairs.size()), active_(pairs.size()) {}
 
 void ContactSolver::refresh_response(int c) {
   if (fresh_[c]) return;
@@ -25,8 +25,9 @@ void ContactSolver::refresh_response(int c) {
 
 const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Ubar, const Eigen::VectorXd& U) {
   const int m = static_cast<int>(pairs_.size());
-  std::vector<double> gbar(m), sbar(m);
-  std::vector<char> active(m, 0);
+  std::vector<double>& gbar = gbar_;
+  std::vector<double>& sbar = sbar_;
+  std::vector<char>& active = active_;
   any_ = false;
   for (int c = 0; c < m; ++c) {
     // A sliding (or newly closing) striker is re-located from the predicted configuration; a

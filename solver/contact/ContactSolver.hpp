@@ -51,6 +51,8 @@ class ContactSolver {
   std::vector<Eigen::VectorXd> hn_, ht_;  ///< dt^2 H G_n, dt^2 H G_t per contact
   std::vector<char> fresh_;               ///< response columns match the current rows
   Eigen::VectorXd scratch_;
+  std::vector<double> gbar_, sbar_;  ///< predicted violations per contact (sized once)
+  std::vector<char> active_;
   bool any_ = false;
 };
 

@@ -153,14 +153,18 @@ int Model::equation(int n, int c) const {
 
 std::vector<DofTerm> Model::project(int n, const Vec2& d) const {
   std::vector<DofTerm> terms;
+  append_projection(n, d, 1.0, terms);
+  return terms;
+}
+
+void Model::append_projection(int n, const Vec2& d, double scale, std::vector<DofTerm>& out) const {
   if (dofs_per_node_ == 3) {
     for (int c = 0; c < 2; ++c)
-      if (const int e = equation(n, c); e >= 0 && d[c] != 0.0) terms.push_back({e, d[c]});
+      if (const int e = equation(n, c); e >= 0 && d[c] != 0.0) out.push_back({e, scale * d[c]});
   } else if (const int e = equation(n, 0); e >= 0) {
     const double a = dot(axis_, d);
-    if (a != 0.0) terms.push_back({e, a});
+    if (a != 0.0) out.push_back({e, scale * a});
   }
-  return terms;
 }
 
 Vec2 Model::node_vector(const Eigen::VectorXd& U, int n) const {

@@ -53,6 +53,8 @@ class Model {
   int equation(int n, int c) const;
   /// @brief Terms of d . u(node n) for a direction d in global axes (handles both layouts).
   std::vector<DofTerm> project(int n, const Vec2& d) const;
+  /// @brief Appends scale * (terms of d . u(node n)) to out (no allocation once out has capacity).
+  void append_projection(int n, const Vec2& d, double scale, std::vector<DofTerm>& out) const;
   /// @brief Global displacement (x, y) of node n from the equation vector U.
   Vec2 node_vector(const Eigen::VectorXd& U, int n) const;
 

@@ -1,0 +1,128 @@
+#include "exact/recognise_scene.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "scene/SceneError.hpp"
+
+namespace beamimpact::exact {
+namespace {
+
+// Geometry is given with ~15 significant digits (e.g. 60-degree coordinates); 1e-9 relative
+// accepts roundoff in the file and rejects any real misalignment.
+constexpr double kTol = 1e-9;
+
+double dot(Vec2 a, Vec2 b) { return a[0] * b[0] + a[1] * b[1]; }
+double cross(Vec2 a, Vec2 b) { return a[0] * b[1] - a[1] * b[0]; }
+Vec2 sub(Vec2 a, Vec2 b) { return {a[0] - b[0], a[1] - b[1]}; }
+double norm(Vec2 a) { return std::hypot(a[0], a[1]); }
+Vec2 unit(Vec2 a) {
+  const double n = norm(a);
+  return {a[0] / n, a[1] / n};
+}
+
+Rod as_rod(const Body& b) { return Rod{b.length(), b.E, b.rho, b.area}; }
+
+// True when the support holds the displacement along the unit normal n (and nothing else
+// than translations): pin or roller for transverse bending.
+bool holds_normal(const Support& s, Vec2 n) {
+  if (s.fix_theta) return false;
+  if (std::abs(n[0]) < kTol) return s.fix_y;
+  if (std::abs(n[1]) < kTol) return s.fix_x;
+  return s.fix_x && s.fix_y;
+}
+
+}  // namespace
+
+ExactProblem recognise_scene(const Scene& scene) {
+  auto refuse = [&](const std::string& key, const std::string& msg) {
+    throw SceneError(scene.file, key, "the exact method cannot solve this scene: " + msg);
+  };
+  if (scene.bodies.size() != 2)
+    refuse("bodies", fmt::format("it needs exactly two bodies, found {}", scene.bodies.size()));
+  if (scene.contacts.size() != 1)
+    refuse("contacts", fmt::format("it needs exactly one contact, found {}", scene.contacts.size()));
+  const Contact& c = scene.contacts[0];
+  if (c.friction != 0.0)
+    refuse("contacts[0].friction",
+           fmt::format("friction is not zero (mu = {}); the exact solutions are frictionless "
+                       "(compare with --set contacts[0].friction=0)", c.friction));
+  if (scene.model.rayleigh_mass != 0.0 || scene.model.rayleigh_stiffness != 0.0)
+    refuse("model.rayleigh_mass", "damping is not zero; the exact solutions are undamped");
+
+  ExactProblem p;
+  p.striker = c.striker;
+  p.target = c.target;
+  const Body& A = scene.bodies[c.striker];
+  const Body& B = scene.bodies[c.target];
+  const std::string ka = fmt::format("bodies[{}]", c.striker), kb = fmt::format("bodies[{}]", c.target);
+  if (c.node != 0 && c.node != A.elements)
+    refuse("contacts[0].node", "the striker's contact node is not an end of the striker");
+  if (!A.supports.empty()) refuse(ka + ".supports", "the striker has supports; it must be free");
+  const Vec2 pc = A.node_position(c.node);
+  const Vec2 po = A.node_position(c.node == 0 ? A.elements : 0);
+  p.dir = unit(sub(pc, po));
+  const double La = A.length(), Lb = B.length(), scale = La + Lb;
+  const double va_norm = norm(A.velocity), vb_norm = norm(B.velocity);
+  if (std::abs(cross(A.velocity, p.dir)) > kTol * (va_norm + vb_norm + 1e-300))
+    refuse(ka + ".velocity", "the striker's velocity is not along its own axis");
+  p.striker_rod = as_rod(A);
+  const Vec2 eb = unit(sub(B.end, B.start));
+
+  if (B.supports.empty()) {
+    // Two free rods: coaxial, end to end, both moving along the common axis.
+    if (std::abs(cross(eb, p.dir)) > kTol || std::abs(cross(sub(B.start, pc), p.dir)) > kTol * scale)
+      refuse(kb + ".start", "the target is not coaxial with the striker (free target: the coaxial "
+                            "rod solution needs both bodies on one line)");
+    const double s1 = dot(sub(B.start, pc), p.dir), s2 = dot(sub(B.end, pc), p.dir);
+    if (std::min(s1, s2) < -kTol * scale)
+      refuse(kb + ".start", "the target is not ahead of the striker's contact end");
+    if (std::abs(cross(B.velocity, p.dir)) > kTol * (va_norm + vb_norm + 1e-300))
+      refuse(kb + ".velocity", "the target's velocity is not along the common axis");
+    p.kind = ExactKind::kCoaxialRods;
+    p.gap = std::max(0.0, std::min(s1, s2));
+    p.target_speed = dot(B.velocity, p.dir);
+    p.v0 = dot(A.velocity, p.dir) - p.target_speed;
+    p.target_rod = as_rod(B);
+    p.contact_kind = "end_to_end";
+    return p;
+  }
+
+  // A rod end-on onto a simply supported beam.
+  if (std::abs(dot(eb, p.dir)) > kTol)
+    refuse(ka + ".end", "the striker is not perpendicular to the target (supported target: the "
+                        "rod-on-beam solution needs a normal, end-on impact)");
+  const Vec2 n = {-eb[1], eb[0]};
+  bool simple = B.supports.size() == 2;
+  bool start_held = false, end_held = false;
+  for (const Support& s : B.supports) {
+    if (s.node == 0) start_held = holds_normal(s, n);
+    else if (s.node == B.elements) end_held = holds_normal(s, n);
+    else simple = false;
+  }
+  if (!(simple && start_held && end_held))
+    refuse(kb + ".supports", "the target is not simply supported (it needs one support at each "
+                             "end holding the transverse displacement, rotation free, no other supports)");
+  if (vb_norm != 0.0) refuse(kb + ".velocity", "the supported target is not at rest");
+  if (!(B.inertia > 0.0)) refuse(kb + ".inertia", "the target has no bending stiffness (inertia = 0)");
+  if (scene.effects.bending && !*scene.effects.bending)
+    refuse("effects.bending", "bending is forced off, but the rod-on-beam solution is all bending");
+  const Vec2 rel = sub(pc, B.start);
+  const double x_c = dot(rel, eb), h = dot(rel, n);
+  if (x_c <= kTol * Lb || x_c >= Lb * (1.0 - kTol))
+    refuse(kb + ".start", "the struck point is not strictly between the target's supports");
+  // The contact end must face the beam: moving along dir brings it towards the axis.
+  if (h * dot(p.dir, n) > 0.0)
+    refuse(ka + ".end", "the striker's contact end does not face the target");
+  p.kind = ExactKind::kRodOnBeam;
+  p.gap = std::abs(h);
+  p.v0 = dot(A.velocity, p.dir);
+  p.beam = SimpleBeam{Lb, B.E, B.rho, B.area, B.inertia};
+  p.x_c = x_c;
+  const double le = Lb / B.elements, k = x_c / le;
+  p.contact_kind = std::abs(k - std::round(k)) < 1e-9 ? "node_to_node" : "node_to_surface";
+  return p;
+}
+
+}  // namespace beamimpact::exact

@@ -1,0 +1,38 @@
+#pragma once
+/// @file recognise_scene.hpp
+/// @brief Decides whether a scene has an exact (or semi-analytic) counterpart and extracts
+/// its 1D data; any other scene is refused with the condition that failed.
+
+#include <string>
+
+#include "exact/Rod.hpp"
+#include "exact/SimpleBeam.hpp"
+#include "scene/Scene.hpp"
+
+namespace beamimpact::exact {
+
+/// @brief The two problems the exact method solves.
+enum class ExactKind {
+  kCoaxialRods,  ///< two free coaxial rods, end to end (references.md section 1)
+  kRodOnBeam,    ///< a free rod end-on onto a simply supported beam (references.md section 2)
+};
+
+/// @brief The 1D problem a scene describes, in the frame of its contact.
+struct ExactProblem {
+  ExactKind kind = ExactKind::kCoaxialRods;
+  int striker = 0, target = 0;  ///< body indices in the scene
+  Vec2 dir{};                   ///< unit vector: striker contact end towards the target
+  double v0 = 0.0;              ///< m/s, approach speed along dir (relative to the target)
+  double target_speed = 0.0;    ///< m/s, target's initial speed along dir (rods only; 0 for beams)
+  double gap = 0.0;             ///< m, initial gap along dir
+  Rod striker_rod;              ///< the striker as a rod
+  Rod target_rod;               ///< the target as a rod (kCoaxialRods)
+  SimpleBeam beam;              ///< the target as a beam (kRodOnBeam)
+  double x_c = 0.0;             ///< m, struck point from the target's start node (kRodOnBeam)
+  std::string contact_kind;     ///< "end_to_end" | "node_to_node" | "node_to_surface"
+};
+
+/// @brief Recognises the scene or throws SceneError(scene.file, key, condition that failed).
+ExactProblem recognise_scene(const Scene& scene);
+
+}  // namespace beamimpact::exact

@@ -1,0 +1,91 @@
+// Scene recognition: what the exact method accepts, and the condition named when it refuses.
+#include "exact/recognise_scene.hpp"
+
+#include <gtest/gtest.h>
+
+#include "scene/SceneError.hpp"
+#include "scene/scene_io.hpp"
+#include "testing/test_scenes.hpp"
+
+namespace beamimpact::exact {
+namespace {
+
+using beamimpact::testing::paper_scene;
+
+// Expects a SceneError whose key is `key` and whose message contains `text`.
+void expect_refused(const Scene& s, const std::string& key, const std::string& text) {
+  try {
+    recognise_scene(s);
+    ADD_FAILURE() << "accepted, expected refusal: " << text;
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.key(), key);
+    EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+  }
+}
+
+TEST(RecogniseScene, PaperScenes) {
+  const ExactProblem s1 = recognise_scene(load_scene(paper_scene("s1_central")));
+  EXPECT_EQ(s1.kind, ExactKind::kCoaxialRods);
+  EXPECT_DOUBLE_EQ(s1.gap, 0.5);
+  EXPECT_DOUBLE_EQ(s1.v0, 1.0);
+  EXPECT_EQ(s1.contact_kind, "end_to_end");
+
+  const ExactProblem s2 = recognise_scene(load_scene(paper_scene("s2_transverse")));
+  EXPECT_EQ(s2.kind, ExactKind::kRodOnBeam);
+  EXPECT_NEAR(s2.gap, 0.1, 1e-15);
+  EXPECT_NEAR(s2.x_c, 5.0, 1e-15);
+  EXPECT_DOUBLE_EQ(s2.v0, 1.0);
+  EXPECT_EQ(s2.contact_kind, "node_to_node");
+
+  EXPECT_EQ(recognise_scene(load_scene(paper_scene("s3_surface_10"))).contact_kind, "node_to_surface");
+  EXPECT_EQ(recognise_scene(load_scene(paper_scene("s3_surface_20"))).contact_kind, "node_to_node");
+  EXPECT_NEAR(recognise_scene(load_scene(paper_scene("s3_surface_10"))).x_c, 4.5, 1e-15);
+
+  expect_refused(load_scene(paper_scene("s4_oblique_45")), "contacts[0].friction", "friction is not zero");
+  // Without friction, the 45-degree striker is still oblique to the beam.
+  expect_refused(load_scene(paper_scene("s4_oblique_45"), {"contacts[0].friction=0"}), "bodies[0].end",
+                 "not perpendicular");
+  EXPECT_EQ(recognise_scene(load_scene(paper_scene("s4_oblique_90"), {"contacts[0].friction=0"})).kind,
+            ExactKind::kRodOnBeam);
+}
+
+TEST(RecogniseScene, RefusesWhatItCannotSolve) {
+  const Scene s2 = load_scene(paper_scene("s2_transverse"));
+  Scene s = s2;
+  s.bodies[1].supports[0].fix_theta = true;  // clamped end
+  expect_refused(s, "bodies[1].supports", "not simply supported");
+  s = s2;
+  s.bodies[1].supports.pop_back();  // cantilever-like: one support only
+  expect_refused(s, "bodies[1].supports", "not simply supported");
+  s = s2;
+  s.bodies[0].velocity = {0.3, -1.0};
+  expect_refused(s, "bodies[0].velocity", "not along its own axis");
+  s = s2;
+  s.bodies[1].velocity = {0.0, 0.5};
+  expect_refused(s, "bodies[1].velocity", "not at rest");
+  s = s2;
+  s.model.rayleigh_mass = 0.1;
+  expect_refused(s, "model.rayleigh_mass", "damping is not zero");
+  s = s2;
+  s.bodies[0].supports.push_back(Support{0, true, true, false});
+  expect_refused(s, "bodies[0].supports", "striker has supports");
+  s = s2;
+  s.contacts.push_back(s.contacts[0]);
+  expect_refused(s, "contacts", "exactly one contact");
+  s = s2;  // rod moved onto the support line x = 0
+  s.bodies[0].start = {0.0, 5.1};
+  s.bodies[0].end = {0.0, 0.1};
+  expect_refused(s, "bodies[1].start", "not strictly between");
+
+  const Scene s1 = load_scene(paper_scene("s1_central"));
+  s = s1;
+  s.bodies[1].start = {10.5, 1.0};  // parallel but offset
+  s.bodies[1].end = {20.5, 1.0};
+  expect_refused(s, "bodies[1].start", "not coaxial");
+  s = s1;
+  s.bodies[1].velocity = {0.0, 0.2};
+  expect_refused(s, "bodies[1].velocity", "not along the common axis");
+}
+
+}  // namespace
+}  // namespace beamimpact::exact

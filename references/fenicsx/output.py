@@ -1,0 +1,95 @@
+"""history.csv and summary.json in the layout of interface.md, and the contact statistics
+(intervals, impulses, peaks) computed the way solver/io/ContactStats.hpp describes them:
+a sample is "in contact" when R > 0, an interval is [first, last] contact sample time, and
+intervals separated by less than the merge gap are merged."""
+
+import json
+import math
+import os
+
+CONTACT_COLUMNS = ["R", "tau", "gap", "ua_x", "ua_y", "va_x", "va_y",
+                   "ub_x", "ub_y", "vb_x", "vb_y"]
+TOTAL_COLUMNS = ["kinetic", "strain", "dissipated", "px", "py"]
+
+
+def history_columns(n_contacts):
+    """Column names for a scene with n contacts (contact columns repeat with _2, _3, ...)."""
+    cols = ["t"]
+    for k in range(n_contacts):
+        cols += [c + ("" if k == 0 else f"_{k + 1}") for c in CONTACT_COLUMNS]
+    return cols + TOTAL_COLUMNS
+
+
+class ContactStats:
+    """Accumulates one contact's per-step samples into the summary's contact entry."""
+
+    def __init__(self, merge_gap, rule):
+        self.merge_gap, self.rule = merge_gap, rule
+        self.intervals = []            # [start, end, peak_after_closure, closure_R]
+        self.in_contact = False
+        self.impulse_n = self.impulse_t = self.peak = 0.0
+        self.stick = self.slip = 0
+
+    def add(self, t, R, tau, dt, state):
+        self.impulse_n += R * dt
+        self.impulse_t += tau * dt
+        if R > 0:
+            self.peak = max(self.peak, R)
+            if not self.in_contact and not (self.intervals and t - self.intervals[-1][1] < self.merge_gap):
+                self.intervals.append([t, t, 0.0, R])
+            else:
+                iv = self.intervals[-1]
+                iv[1], iv[2] = t, max(iv[2], R)
+            self.in_contact = True
+            self.stick += state == "stick"
+            self.slip += state == "slip"
+        else:
+            self.in_contact = False
+
+    def summary(self):
+        return {
+            "intervals": [[a, b] for a, b, _, _ in self.intervals],
+            "merge_rule": self.rule,
+            "impulse_normal": self.impulse_n, "impulse_tangential": self.impulse_t,
+            "peak_R": self.peak,
+            "peak_R_excluding_closure": max([iv[2] for iv in self.intervals], default=0.0),
+            "first_step_R": self.intervals[0][3] if self.intervals else 0.0,
+            "stick_steps": self.stick, "slip_steps": self.slip,
+        }
+
+
+def _check_finite(obj, where):
+    if isinstance(obj, float) and not math.isfinite(obj):
+        raise RuntimeError(f"non-finite number in {where}; no result written")
+    if isinstance(obj, dict):
+        for k, v in obj.items():
+            _check_finite(v, f"{where}.{k}")
+    if isinstance(obj, (list, tuple)):
+        for v in obj:
+            _check_finite(v, where)
+
+
+def remove_stale(out_dir):
+    """Removes a previous summary.json first, so a crash cannot leave an old one looking valid."""
+    os.makedirs(out_dir, exist_ok=True)
+    try:
+        os.remove(os.path.join(out_dir, "summary.json"))
+    except FileNotFoundError:
+        pass
+
+
+def write_run(out_dir, columns, rows, summary):
+    """Writes history.csv, then summary.json last and atomically (rename of a temporary file)."""
+    for r in rows:
+        if not all(math.isfinite(v) for v in r):
+            raise RuntimeError(f"non-finite value in history row at t = {r[0]}; no result written")
+    _check_finite(summary, "summary")
+    with open(os.path.join(out_dir, "history.csv"), "w") as f:
+        f.write(",".join(columns) + "\n")
+        for r in rows:
+            f.write(",".join(repr(float(v)) for v in r) + "\n")
+    tmp = os.path.join(out_dir, ".summary.json.tmp")
+    with open(tmp, "w") as f:
+        json.dump(summary, f, indent=2)
+        f.write("\n")
+    os.replace(tmp, os.path.join(out_dir, "summary.json"))

@@ -1,0 +1,328 @@
+"""Reads and validates a beamimpact scene file (interface.md) with Python's tomllib.
+
+Independent of the C++ loader on purpose: the FEniCSx reference shares nothing with the
+paper's code but the scene file. Unknown keys are errors, as in the C++ loader; every default
+used is recorded in `assumed` so that summary.json can list it. SI units throughout.
+"""
+
+import difflib
+import hashlib
+import math
+import tomllib
+from dataclasses import dataclass, field
+
+
+class SceneError(Exception):
+    """Bad input: names the file, the dotted key and what was expected (exit code 2)."""
+
+    def __init__(self, file, key, message):
+        self.file, self.key = str(file), key
+        super().__init__(f"{file}" + (f": key '{key}'" if key else "") + f": {message}")
+
+
+@dataclass
+class Support:
+    """A support on the body's axis: `s` (m) along the axis from the start; fixed global components."""
+    s: float
+    fix_x: bool
+    fix_y: bool
+    key: str
+
+
+@dataclass
+class Body:
+    """One straight beam of the scene, as given (the continuum geometry is derived in geometry.py)."""
+    name: str
+    start: tuple
+    end: tuple
+    elements: int
+    E: float          # N/m^2
+    rho: float        # kg/m^3
+    area: float       # m^2
+    inertia: float    # m^4
+    velocity: tuple   # m/s
+    supports: list = field(default_factory=list)
+    index: int = 0
+
+    @property
+    def length(self):
+        """Axis length (m)."""
+        return math.dist(self.start, self.end)
+
+
+@dataclass
+class Contact:
+    """A contact pair: striker end ("start"/"end") against the target body; Coulomb mu."""
+    striker: int
+    end: str
+    target: int
+    friction: float
+    key: str
+
+
+@dataclass
+class Scene:
+    """A validated scene. dt is None for "auto"; method_tables holds [paper]/[ida]/... untouched."""
+    file: str
+    sha256: str
+    name: str
+    description: str
+    dt: float
+    fraction: float
+    end: float
+    output_every: int
+    model: dict
+    bodies: list
+    contacts: list
+    effects: dict
+    fenicsx: dict
+    assumed: dict
+
+
+_TOP = {"name", "description", "time", "model", "bodies", "contacts", "effects",
+        "fenicsx", "paper", "ida", "exact"}
+
+
+class _Table:
+    """Typed access to one table; remembers keys read so finish() can reject unknown ones."""
+
+    def __init__(self, table, file, prefix, assumed):
+        if not isinstance(table, dict):
+            raise SceneError(file, prefix, "expected a table")
+        self.t, self.file, self.prefix, self.assumed, self.seen = table, file, prefix, assumed, set()
+
+    def path(self, key):
+        return f"{self.prefix}.{key}" if self.prefix else key
+
+    def fail(self, key, message):
+        raise SceneError(self.file, self.path(key), message)
+
+    def _get(self, key, default, shown):
+        self.seen.add(key)
+        if key in self.t:
+            return self.t[key], True
+        if default is _REQUIRED:
+            typo = difflib.get_close_matches(key, [k for k in self.t if isinstance(k, str)], 1, 0.6)
+            hint = f" (found '{typo[0]}': a typo?)" if typo else ""
+            self.fail(key, "missing; expected " + shown + hint)
+        self.assumed[self.path(key)] = str(default)
+        return default, False
+
+    def number(self, key, what, default=None, positive=False, nonneg=False):
+        v, _ = self._get(key, _REQUIRED if default is None else default, what)
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+            self.fail(key, f"expected {what}, found {v!r}")
+        if positive and v <= 0:
+            self.fail(key, f"expected {what} > 0, found {v!r}")
+        if nonneg and v < 0:
+            self.fail(key, f"expected {what} >= 0, found {v!r}")
+        return float(v)
+
+    def integer(self, key, what, default=None, minimum=None):
+        v, _ = self._get(key, _REQUIRED if default is None else default, what)
+        if isinstance(v, bool) or not isinstance(v, int):
+            self.fail(key, f"expected {what} (an integer), found {v!r}")
+        if minimum is not None and v < minimum:
+            self.fail(key, f"expected {what} >= {minimum}, found {v!r}")
+        return v
+
+    def string(self, key, what, default=None, allowed=None):
+        v, _ = self._get(key, _REQUIRED if default is None else default, what)
+        if not isinstance(v, str):
+            self.fail(key, f"expected {what} (a string), found {v!r}")
+        if allowed and v not in allowed:
+            self.fail(key, f"expected one of {', '.join(allowed)}, found {v!r}")
+        return v
+
+    def boolean(self, key, default):
+        v, _ = self._get(key, default, "true or false")
+        if v is not None and not isinstance(v, bool):
+            self.fail(key, f"expected true or false, found {v!r}")
+        return v
+
+    def vec2(self, key, what):
+        v, _ = self._get(key, _REQUIRED, what)
+        if (not isinstance(v, list) or len(v) != 2
+                or any(isinstance(x, bool) or not isinstance(x, (int, float)) or not math.isfinite(x)
+                       for x in v)):
+            self.fail(key, f"expected {what} (an array of two numbers), found {v!r}")
+        return (float(v[0]), float(v[1]))
+
+    def raw(self, key, default=None):
+        self.seen.add(key)
+        return self.t.get(key, default)
+
+    def finish(self):
+        for k in self.t:
+            if k not in self.seen:
+                self.fail(k, "unknown key (a typo must not fall back to a default)")
+
+
+_REQUIRED = object()
+
+
+def load_scene(path, overrides=None):
+    """Reads `path` and validates it; `overrides` maps dotted keys ("time.end") to values."""
+    file = str(path)
+    try:
+        with open(path, "rb") as f:
+            data = f.read()
+    except OSError as e:
+        raise SceneError(file, "", f"cannot read the scene file ({e.strerror})")
+    try:
+        doc = tomllib.loads(data.decode("utf-8"))
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as e:
+        raise SceneError(file, "", f"not valid TOML ({e})")
+    for k, v in (overrides or {}).items():
+        table, _, key = k.partition(".")
+        doc.setdefault(table, {})[key] = v
+    assumed = {}
+    for k in doc:
+        if k not in _TOP:
+            raise SceneError(file, k, "unknown key (a typo must not fall back to a default)")
+    name = doc.get("name")
+    if not isinstance(name, str) or not name:
+        raise SceneError(file, "name", "missing; expected the scene's name (a string)")
+    description = doc.get("description", "")
+    if not isinstance(description, str):
+        raise SceneError(file, "description", "expected a string")
+
+    if "time" not in doc:
+        raise SceneError(file, "time", "missing; expected a [time] table")
+    t = _Table(doc["time"], file, "time", assumed)
+    dt_raw = t.raw("dt")
+    if dt_raw is None:
+        t.fail("dt", 'missing; expected a time step in s or "auto"')
+    if dt_raw == "auto":
+        dt = None
+    elif isinstance(dt_raw, (int, float)) and not isinstance(dt_raw, bool) and dt_raw > 0:
+        dt = float(dt_raw)
+    else:
+        t.fail("dt", f'expected a positive number (s) or "auto", found {dt_raw!r}')
+    fraction = t.number("fraction", "a fraction of the critical step", 0.5, positive=True)
+    end = t.number("end", "the end time (s)", positive=True)
+    output_every = t.integer("output_every", "write every n-th step", 1, minimum=1)
+    t.boolean("allow_above_critical", False)   # the continuum always picks its own stable step
+    t.finish()
+
+    m = _Table(doc.get("model", {}), file, "model", assumed)
+    model = {
+        "mass": m.string("mass", "the mass kind", "lumped", ["lumped", "consistent"]),
+        "rotary_inertia": m.string("rotary_inertia", "the rotary inertia", "hrz", ["hrz", "section"]),
+        "kinematics": m.string("kinematics", "the kinematics", "linear", ["linear", "corotational"]),
+        "rayleigh_mass": m.number("rayleigh_mass", "a damping coefficient (1/s)", 0.0, nonneg=True),
+        "rayleigh_stiffness": m.number("rayleigh_stiffness", "a damping coefficient (s)", 0.0, nonneg=True),
+    }
+    m.finish()
+    if model["rayleigh_mass"] or model["rayleigh_stiffness"]:
+        raise SceneError(file, "model.rayleigh_mass", "Rayleigh damping cannot be modelled by the "
+                         "FEniCSx reference; expected 0 (an undamped scene)")
+
+    bodies_raw = doc.get("bodies")
+    if not isinstance(bodies_raw, list) or len(bodies_raw) < 2:
+        raise SceneError(file, "bodies", "expected an array of at least two [[bodies]] tables")
+    bodies = []
+    for i, braw in enumerate(bodies_raw):
+        b = _Table(braw, file, f"bodies[{i}]", assumed)
+        body = Body(
+            name=b.string("name", "the body's name"),
+            start=b.vec2("start", "the first node (m)"), end=b.vec2("end", "the last node (m)"),
+            elements=b.integer("elements", "the beam element count", minimum=1),
+            E=b.number("E", "Young's modulus (N/m^2)", positive=True),
+            rho=b.number("rho", "the density (kg/m^3)", positive=True),
+            area=b.number("area", "the cross-section area (m^2)", positive=True),
+            inertia=b.number("inertia", "the second moment of area (m^4)", 0.0, nonneg=True),
+            velocity=(b.vec2("velocity", "the initial velocity (m/s)") if "velocity" in braw
+                      else _default_vec(b, "velocity")),
+            index=i)
+        if body.length <= 0:
+            b.fail("end", "expected a point different from start (a body of positive length)")
+        if body.inertia <= 0:
+            b.fail("inertia", "expected > 0: the continuum's depth is sqrt(12 I / A)")
+        sup_raw = b.raw("supports", [])
+        if not isinstance(sup_raw, list):
+            b.fail("supports", "expected an array of { at = ..., fix = [...] } tables")
+        for j, sraw in enumerate(sup_raw):
+            s = _Table(sraw, file, f"bodies[{i}].supports[{j}]", assumed)
+            at = s.raw("at")
+            if at == "start":
+                pos = 0.0
+            elif at == "end":
+                pos = body.length
+            elif isinstance(at, int) and not isinstance(at, bool) and 0 <= at <= body.elements:
+                pos = body.length * at / body.elements
+            else:
+                s.fail("at", f'expected "start", "end" or a node index 0..{body.elements}, found {at!r}')
+            fix = s.raw("fix")
+            if not isinstance(fix, list) or not fix or any(f not in ("x", "y", "theta") for f in fix):
+                s.fail("fix", f'expected a non-empty array of "x", "y", "theta", found {fix!r}')
+            if "theta" in fix:
+                s.fail("fix", "a rotation support cannot be modelled by the plane-stress continuum "
+                       "(supports act on the axis node); expected only \"x\" and \"y\"")
+            s.finish()
+            body.supports.append(Support(pos, "x" in fix, "y" in fix, s.prefix))
+        b.finish()
+        if any(o.name == body.name for o in bodies):
+            b.fail("name", f"expected a unique body name, {body.name!r} is used twice")
+        bodies.append(body)
+
+    contacts_raw = doc.get("contacts")
+    if not isinstance(contacts_raw, list) or not contacts_raw:
+        raise SceneError(file, "contacts", "expected an array of at least one [[contacts]] table")
+    names = {bd.name: bd.index for bd in bodies}
+    contacts = []
+    for i, craw in enumerate(contacts_raw):
+        c = _Table(craw, file, f"contacts[{i}]", assumed)
+        striker = c.string("striker", "the striker body's name")
+        target = c.string("target", "the target body's name")
+        for key, nm in (("striker", striker), ("target", target)):
+            if nm not in names:
+                c.fail(key, f"expected one of the bodies ({', '.join(names)}), found {nm!r}")
+        if striker == target:
+            c.fail("target", "expected a body other than the striker")
+        node = c.raw("node")
+        nel = bodies[names[striker]].elements
+        if node in ("start", 0):
+            end_name = "start"
+        elif node == "end" or (isinstance(node, int) and not isinstance(node, bool) and node == nel):
+            end_name = "end"
+        elif isinstance(node, int) and not isinstance(node, bool) and 0 < node < nel:
+            c.fail("node", "an interior striker node cannot be modelled by the continuum (its "
+                   "contact face is an end face); expected \"start\" or \"end\"")
+        else:
+            c.fail("node", f'expected "start", "end" or a node index 0..{nel}, found {node!r}')
+        mu = c.number("friction", "the Coulomb coefficient", 0.0, nonneg=True)
+        c.finish()
+        contacts.append(Contact(names[striker], end_name, names[target], mu, c.prefix))
+    strikers = [c.striker for c in contacts]
+    for c in contacts:
+        if strikers.count(c.striker) > 1 or c.striker in [d.target for d in contacts]:
+            raise SceneError(file, c.key + ".striker", "the FEniCSx reference models one contact per "
+                             "striker and a striker that is nobody's target; expected that")
+
+    e = _Table(doc.get("effects", {}), file, "effects", {})
+    effects = {k: e.boolean(k, None) for k in ("bending", "friction", "damping")}
+    e.finish()
+    if effects["damping"]:
+        raise SceneError(file, "effects.damping", "damping cannot be modelled by the FEniCSx reference")
+    if effects["friction"] is False:
+        for c in contacts:
+            c.friction = 0.0
+    for tbl in ("paper", "ida", "exact"):
+        if tbl in doc and not isinstance(doc[tbl], dict):
+            raise SceneError(file, tbl, "expected a table")
+    fen = doc.get("fenicsx", {})
+    if not isinstance(fen, dict):
+        raise SceneError(file, "fenicsx", "expected a table")
+
+    return Scene(file=file, sha256=hashlib.sha256(data).hexdigest(), name=name,
+                 description=description, dt=dt, fraction=fraction, end=end,
+                 output_every=output_every, model=model, bodies=bodies, contacts=contacts,
+                 effects=effects, fenicsx=fen, assumed=assumed)
+
+
+def _default_vec(b, key):
+    b.seen.add(key)
+    b.assumed[b.path(key)] = "[0, 0]"
+    return (0.0, 0.0)
+

@@ -1,0 +1,54 @@
+"""Bad input gives one clear message naming the file, the key and what was expected, exit
+code 2, and no summary.json (interface.md, "Errors")."""
+
+import os
+
+import common
+
+work = common.work_dir()
+check = common.check
+with open(os.path.join(common.SCENES, "s2_transverse.toml")) as f:
+    S2 = f.read()
+
+
+def variant(name, old, new):
+    assert old in S2, old
+    path = os.path.join(work, name + ".toml")
+    with open(path, "w") as f:
+        f.write(S2.replace(old, new, 1))
+    return path
+
+
+cases = [
+    ("unknown fenicsx key", variant("fenicsx_key", "[time]", "[fenicsx]\nbogus = 1\n\n[time]"), [],
+     "fenicsx.bogus"),
+    ("unknown top-level key", variant("top_key", "[time]", "colour = 1\n[time]"), [], "colour"),
+    ("typo in a body key", variant("body_key", "elements = 10", "elemnts = 10"), [], "'elemnts'"),
+    ("rotation support", variant("theta", 'fix = ["x", "y"] }', 'fix = ["x", "y", "theta"] }'), [],
+     "bodies[1].supports[0].fix"),
+    ("interior striker node", variant("interior", 'node = "end"', "node = 2"), [], "contacts[0].node"),
+    ("overlap at t = 0", variant("overlap", "end = [5.0, 0.1]", "end = [5.0, -0.1]"), [], "'bodies'"),
+    ("contact face not resolved", os.path.join(common.SCENES, "s2_transverse.toml"),
+     ["--elements-length", "A=25,B=5"], "fenicsx.elements_length.B"),
+    ("bad mesh option", os.path.join(common.SCENES, "s2_transverse.toml"), ["--elements-depth", "0"],
+     "--elements-depth"),
+    ("missing file", os.path.join(work, "nope.toml"), [], "cannot read"),
+]
+for what, scene, args, key in cases:
+    out = os.path.join(work, "out_" + what.replace(" ", "_"))
+    rc, err = common.run(scene, out, *args, expect=2)
+    lines = [l for l in err.strip().splitlines() if l.strip()]
+    ok = (rc == 2 and len(lines) == 1 and key in lines[0]
+          and (os.path.basename(scene) in lines[0] or what == "bad mesh option")
+          and not os.path.exists(os.path.join(out, "summary.json")))
+    check(ok, f"{what}: exit {rc}, message: {lines[-1] if lines else ''}")
+
+# A support that is not a node of the continuum mesh (needs dolfinx: checked on the mesh).
+common.require_dolfinx()
+scene = variant("support_off_node", '{ at = "end", fix = ["y"] }', '{ at = 3, fix = ["y"] }')
+out = os.path.join(work, "out_support")
+rc, err = common.run(scene, out, "--elements-length", "A=25,B=32", expect=2)
+lines = [l for l in err.strip().splitlines() if l.strip() and not l.startswith("INFO")]
+check(rc == 2 and "bodies[1].supports[1].at" in err and not os.path.exists(os.path.join(out, "summary.json")),
+      f"support off the mesh nodes: exit {rc}, message: {lines[-1] if lines else ''}")
+common.finish()

@@ -1,0 +1,141 @@
+// The third test: with a penalty set for (near) zero restitution and a large kn, the IDA
+// reference approaches the paper's discrete model (plastic closure of the contact nodes, then
+// persistent contact). On S1-S4 at the same mesh, paper and IDA must agree on impulse, contact
+// intervals and the contact points' displacement histories within bounds that follow from the
+// paper's first-order event timing, and the difference must shrink as the paper's dt falls.
+// S4 runs both methods with linear kinematics (the IDA reference has no corotation).
+//
+// Built twice: the quick variant (paper dt0, dt0/2, dt0/4, shortened end times) and, with
+// BEAMIMPACT_IDA_FULL, the "full" variant (dt0 ... dt0/16, the scenes' end times).
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <gtest/gtest.h>
+
+#include "ida/run_ida.hpp"
+#include "ida/test_scenes.hpp"
+#include "run/run_paper.hpp"
+
+namespace beamimpact {
+namespace {
+
+#ifdef BEAMIMPACT_IDA_FULL
+constexpr int kHalvings = 4;
+constexpr bool kFull = true;
+#else
+constexpr int kHalvings = 2;
+constexpr bool kFull = false;
+#endif
+
+struct Case {
+  const char* scene;
+  double quick_end;                 ///< s, end time of the quick variant
+  std::vector<std::string> extra;   ///< overrides for both methods
+  bool auto_dt;                     ///< dt = fraction x critical (S4)
+};
+
+void PrintTo(const Case& c, std::ostream* os) { *os << c.scene; }
+
+/// Largest |a - b| over the striker node's displacement (all rows) and the struck point's
+/// displacement (rows where both methods are in contact: when open, the paper re-locates the
+/// struck point on the deformed chord, a definition that differs from IDA's reference normal).
+double displacement_difference(const RunResult& p, const RunResult& i) {
+  const std::size_t n = std::min(p.history.size(), i.history.size());
+  double d = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const ContactSample& a = p.history[k].contacts[0];
+    const ContactSample& b = i.history[k].contacts[0];
+    // Rows line up on the common grid; only the paper's final row (its step N = ceil(end/dt)
+    // need not be a multiple of output_every) may fall off it.
+    if (std::abs(p.history[k].t - i.history[k].t) > 1e-9 * (1 + i.history[k].t)) {
+      EXPECT_EQ(k + 1, n) << "rows out of step at t = " << i.history[k].t;
+      break;
+    }
+    for (int c = 0; c < 2; ++c) {
+      d = std::max(d, std::abs(a.ua[c] - b.ua[c]));
+      if (a.R > 0 && b.R > 0) d = std::max(d, std::abs(a.ub[c] - b.ub[c]));
+    }
+  }
+  return d;
+}
+
+class IdaVsPaper : public ::testing::TestWithParam<Case> {};
+
+TEST_P(IdaVsPaper, AgreeAndConvergeAsPaperDtFalls) {
+  const Case& c = GetParam();
+  std::vector<std::string> common = c.extra;
+  if (!kFull) common.push_back("time.end=" + std::to_string(c.quick_end));
+  const Scene base = testing::paper_scene(c.scene, common);
+  const double f0 = c.auto_dt ? base.time.fraction : *base.time.dt;
+  const std::string key = c.auto_dt ? "time.fraction=" : "time.dt=";
+
+  // IDA: restitution 0.001 (the plastic closure's limit) and kn = 1e4 EA/le; rtol 1e-8.
+  std::vector<std::string> io = common;
+  io.insert(io.end(), {"ida.restitution=0.001", "ida.kn_factor=1e4"});
+  const RunResult ida = run_ida(testing::paper_scene(c.scene, io));
+  const ContactSummary& ci = ida.contacts.at(0);
+  ASSERT_FALSE(ci.intervals.empty());
+  const double period = ci.extra.at("contact_period").get<double>();
+  const std::size_t events = std::max<std::size_t>(4, ci.extra.at("events").size());
+  double v0 = 0.0;
+  for (const Body& b : base.bodies) v0 = std::max(v0, std::hypot(b.velocity[0], b.velocity[1]));
+
+  double first_dI = 0, first_du = 0, dI = 0, du = 0;
+  for (int k = 0; k <= kHalvings; ++k) {
+    const long every = 1L << k;
+    std::vector<std::string> po = common;
+    po.push_back(key + std::to_string(f0 / static_cast<double>(every)));
+    po.push_back("time.output_every=" + std::to_string(every));
+    const RunResult paper = run_paper(testing::paper_scene(c.scene, po));
+    const ContactSummary& cp = paper.contacts.at(0);
+    ASSERT_FALSE(cp.intervals.empty());
+    const double dt = paper.dt;
+    dI = std::abs(cp.impulse_normal - ci.impulse_normal);
+    const double ds = std::abs(cp.intervals[0][0] - ci.intervals[0][0]);
+    const double de = std::abs(cp.intervals[0][1] - ci.intervals[0][1]);
+    du = displacement_difference(paper, ida);
+    std::printf("%s dt=%.4e: |dI| %.3e N s (rel %.2e), first interval start %.2e end %.2e s, "
+                "max|du| %.3e m, intervals paper/ida %zu/%zu\n",
+                c.scene, dt, dI, dI / ci.impulse_normal, ds, de, du, cp.intervals.size(),
+                ci.intervals.size());
+    // Bounds from the paper's first-order event timing: its closure is detected at the step
+    // where the predicted gap turns negative (up to one dt early) and its interval ends at the
+    // last step with R > 0, while its forward multiplier releases up to half a step early
+    // (references.md 4): up to 1.5 dt before IDA's located release, which itself lags the
+    // constraint's by the penalty's release offset (below one penalty period). A shift of one
+    // step changes the impulse by at most dt x the contact force after closure, and the contact
+    // points' displacements by at most (relative speed <= v0) x dt per event (at least 4: two
+    // closures and releases). Those two bounds assume the same sequence of impacts: over S4's
+    // full 0.1 s the paper at dt0 merges or misses late grazing re-contacts (5 vs 7 intervals
+    // at 90 deg), which only the shrinking sequence below can judge.
+    EXPECT_LE(ds, dt + 1e-9);
+    EXPECT_LE(de, 2.0 * dt + period);
+    if (cp.intervals.size() == ci.intervals.size()) {
+      EXPECT_LE(dI, 2.0 * dt * cp.peak_R_excluding_closure);
+      EXPECT_LE(du, static_cast<double>(events) * v0 * dt);
+    }
+    if (k == 0) {
+      first_dI = dI;
+      first_du = du;
+    }
+  }
+  // The difference shrinks as the paper's dt falls (dt0 -> dt0/4 or /16): at least 2x.
+  EXPECT_LT(dI, first_dI / 2);
+  EXPECT_LT(du, first_du / 2);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    PaperScenes, IdaVsPaper,
+    ::testing::Values(Case{"s1_central", 4.0, {}, false},
+                      Case{"s2_transverse", 1.5, {}, false},
+                      Case{"s3_surface_10", 1.5, {}, false},
+                      Case{"s3_surface_20", 1.5, {}, false},
+                      Case{"s4_oblique_90", 0.03, {"model.kinematics=linear"}, true},
+                      Case{"s4_oblique_60", 0.03, {"model.kinematics=linear"}, true},
+                      Case{"s4_oblique_45", 0.03, {"model.kinematics=linear"}, true}),
+    [](const ::testing::TestParamInfo<Case>& i) { return std::string(i.param.scene); });
+
+}  // namespace
+}  // namespace beamimpact

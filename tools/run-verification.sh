@@ -6,4 +6,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/build.sh
 build=${BEAMIMPACT_BUILD_DIR:-build}
-"$build"/beamimpact verify verification/matrix.toml --out out/verify --jobs "$(nproc)" "${@:---tier quick}"
+args=("$@")
+((${#args[@]})) || args=(--tier quick)
+"$build"/beamimpact verify verification/matrix.toml --out out/verify --jobs "$(nproc)" "${args[@]}"

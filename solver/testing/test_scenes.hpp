@@ -10,7 +10,8 @@
 
 namespace beamimpact::testing {
 
-/// @brief Root of the source tree (env BEAMIMPACT_SOURCE_DIR set by ctest, else the compile-time path).
+/// @brief Root of the source tree: env BEAMIMPACT_SOURCE_DIR if set (to test another checkout),
+/// else the path compiled in.
 inline std::filesystem::path source_dir() {
   if (const char* s = std::getenv("BEAMIMPACT_SOURCE_DIR")) return s;
   return BEAMIMPACT_SOURCE_DIR_DEFAULT;

@@ -1,0 +1,30 @@
+#pragma once
+/// @file compare_runs.hpp
+/// @brief Error norms between a run and a reference run (`beamimpact compare`).
+
+#include "verification/compare/Comparison.hpp"
+#include "verification/compare/RunHistory.hpp"
+
+namespace beamimpact {
+
+/// @brief Settings of a comparison; zero means "derive from the histories" (written in the output).
+struct CompareOptions {
+  double grid_step = 0.0;     ///< s; default: the finer of the two output steps
+  double window = 0.0;        ///< s; default: 10 x the coarser output step
+  double merge_gap = 0.0;     ///< s; default: 3.5 x the coarser output step (up to 2 open samples)
+  double threshold = 1e-6;    ///< R > threshold x max R of the reference counts as contact
+};
+
+/// @brief Compares run `a` with reference `b`: relative L2 and L-infinity norms over time of the
+/// contact force, its running impulse, its window average, the displacements and velocities of
+/// both contact points (every contact), and scalar errors (impulse, contact start and end,
+/// number of impacts, peak force excluding closure samples, final velocities, final energy).
+/// Both histories are resampled onto one uniform grid over their common time span.
+/// Throws SceneError when the histories do not overlap in time.
+Comparison compare_runs(const RunHistory& a, const RunHistory& b, const CompareOptions& options = {});
+
+/// @brief True when compare_runs produces a norm of this name for some number of contacts
+/// ("R.rel_l2", "impulse_2", "final_velocity", ...): lets a matrix reject a misspelt metric.
+bool known_norm(const std::string& name);
+
+}  // namespace beamimpact

@@ -1,0 +1,211 @@
+#include "verification/matrix/evaluate.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "verification/compare/compare_runs.hpp"
+
+namespace beamimpact {
+namespace {
+
+/// Gates of an item that could not be evaluated: skipped (not required) or failed.
+void not_evaluated(ItemResult& r, const std::vector<Gate>& gates, const std::string& why, bool skipped) {
+  const bool fail = !skipped || r.required;
+  for (const auto& g : gates) {
+    r.gates.push_back({g, std::nullopt, fail ? "fail" : "skipped",
+                       skipped ? (r.required ? "skipped, and the case is required: " + why : "skipped: " + why) : why});
+  }
+}
+
+/// The runs needed, in order; returns false (and fills the gates) when one is not ok.
+bool runs_ok(ItemResult& r, const std::vector<const RunSpec*>& specs, const std::vector<Gate>& gates,
+             const std::map<std::string, RunOutcome>& runs) {
+  for (const RunSpec* s : specs) {
+    const auto it = runs.find(s->key());
+    if (it == runs.end()) {
+      not_evaluated(r, gates, "run " + s->label() + " was not run", false);
+      return false;
+    }
+    if (it->second.status != RunOutcome::Status::kOk) {
+      const bool skipped = it->second.status == RunOutcome::Status::kSkipped;
+      not_evaluated(r, gates, s->label() + (skipped ? ": " : " failed: ") + it->second.message, skipped);
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string GateResult::limit() const {
+  std::string s;
+  if (gate.min_order) s = fmt::format("order >= {:g}", *gate.min_order);
+  if (gate.tol) s += fmt::format("{}<= {:g}", s.empty() ? "" : ", error ", *gate.tol);
+  return s;
+}
+
+bool ItemResult::passed() const {
+  for (const auto& g : gates)
+    if (g.status == "fail") return false;
+  return true;
+}
+
+GateResult check_gate(const Gate& gate, const Comparison& cmp) {
+  GateResult r{gate, std::nullopt, "fail", {}};
+  const Norm* n = cmp.find(gate.metric);
+  if (!n) {
+    r.message = "norm '" + gate.metric + "' not produced (contact missing in one of the runs?)";
+    return r;
+  }
+  if (!n->value) {
+    r.message = "norm unavailable: " + n->unavailable;
+    return r;
+  }
+  r.value = n->value;
+  if (*n->value <= *gate.tol) {
+    r.status = "pass";
+  } else {
+    r.message = fmt::format("{} = {:.4g} exceeds {:g}", gate.metric, *n->value, *gate.tol);
+  }
+  return r;
+}
+
+std::optional<double> observed_order(std::optional<double> e_coarse, std::optional<double> e_fine, double r) {
+  if (!e_coarse || !e_fine || !(*e_coarse > 0.0) || !(*e_fine > 0.0) || !(r > 1.0)) return std::nullopt;
+  return std::log(*e_coarse / *e_fine) / std::log(r);
+}
+
+ItemResult evaluate_case(const Case& c, const std::map<std::string, RunOutcome>& runs) {
+  ItemResult r;
+  r.kind = "case";
+  r.scene = c.run.scene_name();
+  r.name = c.name();
+  r.settings = c.run.settings_label();
+  r.reference = c.reference.scene == c.run.scene ? c.reference.settings_label() : c.reference.label();
+  r.tier = c.tier;
+  r.required = c.required;
+  r.note = c.note;
+  if (auto it = runs.find(c.run.key()); it != runs.end()) {
+    r.wall_seconds = it->second.process_seconds;
+    r.solver_seconds = it->second.solver_seconds;
+    // Name every case by its step, also when the scene chose it (dt = "auto" or the scene's dt).
+    if (!c.run.dt && it->second.dt > 0.0) {
+      r.settings += fmt::format(" dt={:.6g}", it->second.dt);
+      r.name = r.scene + " " + r.settings + " vs " + r.reference;
+    }
+  }
+  if (!runs_ok(r, {&c.run, &c.reference}, c.gates, runs)) return r;
+  try {
+    const Comparison cmp = compare_runs(RunHistory::read(runs.at(c.run.key()).dir),
+                                        RunHistory::read(runs.at(c.reference.key()).dir));
+    for (const auto& g : c.gates) r.gates.push_back(check_gate(g, cmp));
+    r.comparisons.push_back(cmp);
+  } catch (const std::exception& e) {
+    not_evaluated(r, c.gates, std::string("comparison failed: ") + e.what(), false);
+  }
+  return r;
+}
+
+ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, RunOutcome>& runs) {
+  ItemResult r;
+  r.kind = "convergence";
+  r.scene = v.runs.front().scene_name();
+  r.name = v.name();
+  r.settings = v.runs.front().settings_label();
+  r.tier = v.tier;
+  r.required = v.required;
+  r.note = v.note;
+  std::vector<const RunSpec*> specs;
+  for (const auto& s : v.runs) {
+    specs.push_back(&s);
+    if (auto it = runs.find(s.key()); it != runs.end()) {
+      r.wall_seconds += it->second.process_seconds;
+      r.solver_seconds += it->second.solver_seconds;
+    }
+  }
+  if (!runs_ok(r, specs, v.gates, runs)) return r;
+  try {
+    for (std::size_t i = 0; i + 1 < v.runs.size(); ++i)
+      r.comparisons.push_back(compare_runs(RunHistory::read(runs.at(v.runs[i].key()).dir),
+                                           RunHistory::read(runs.at(v.runs[i + 1].key()).dir)));
+  } catch (const std::exception& e) {
+    not_evaluated(r, v.gates, std::string("comparison failed: ") + e.what(), false);
+    return r;
+  }
+  // Orders of every norm (the table in the report), then the gates on the finest pair.
+  for (const auto& n : r.comparisons.front().norms) {
+    auto& [errors, orders] = r.orders[n.name];
+    for (const auto& cmp : r.comparisons) {
+      const Norm* m = cmp.find(n.name);
+      errors.push_back(m ? m->value : std::nullopt);
+    }
+    for (std::size_t i = 0; i + 1 < errors.size(); ++i)
+      orders.push_back(observed_order(errors[i], errors[i + 1], v.steps[i] / v.steps[i + 1]));
+  }
+  for (const auto& g : v.gates) {
+    GateResult gr{g, std::nullopt, "pass", {}};
+    const auto it = r.orders.find(g.metric);
+    if (it == r.orders.end()) {
+      gr.status = "fail";
+      gr.message = "norm '" + g.metric + "' not produced";
+    } else {
+      const auto& [errors, orders] = it->second;
+      const auto finest = errors.back();
+      if (g.min_order) {
+        gr.value = orders.empty() ? std::nullopt : orders.back();
+        if (!gr.value) {
+          const bool zero = finest && *finest == 0.0;
+          gr.status = zero ? "pass" : "fail";
+          gr.message = zero ? "errors are zero (converged to round-off): no order to observe"
+                            : "order not observable (an error is zero or unavailable)";
+        } else if (*gr.value < *g.min_order) {
+          gr.status = "fail";
+          gr.message = fmt::format("observed order {:.3g} below {:g}", *gr.value, *g.min_order);
+        }
+      }
+      if (g.tol && gr.status == "pass") {
+        if (!finest || *finest > *g.tol) {
+          gr.status = "fail";
+          gr.message = finest ? fmt::format("finest-pair error {:.4g} exceeds {:g}", *finest, *g.tol)
+                              : "finest-pair error unavailable";
+        }
+        if (!g.min_order) gr.value = finest;
+      }
+    }
+    r.gates.push_back(gr);
+  }
+  return r;
+}
+
+nlohmann::json to_json(const ItemResult& r) {
+  nlohmann::json j{{"kind", r.kind}, {"scene", r.scene}, {"name", r.name}, {"settings", r.settings},
+                   {"reference", r.reference}, {"tier", r.tier}, {"required", r.required},
+                   {"wall_seconds", r.wall_seconds}, {"solver_seconds", r.solver_seconds},
+                   {"passed", r.passed()}, {"note", r.note}};
+  auto& gates = j["gates"] = nlohmann::json::array();
+  for (const auto& g : r.gates) {
+    nlohmann::json e{{"metric", g.gate.metric}, {"limit", g.limit()}, {"why", g.gate.why},
+                     {"status", g.status}, {"message", g.message}};
+    e["value"] = g.value ? nlohmann::json(*g.value) : nlohmann::json(nullptr);
+    if (g.gate.tol) e["tol"] = *g.gate.tol;
+    if (g.gate.min_order) e["min_order"] = *g.gate.min_order;
+    gates.push_back(e);
+  }
+  auto& cmps = j["comparisons"] = nlohmann::json::array();
+  for (const auto& c : r.comparisons) cmps.push_back(c.to_json());
+  if (!r.orders.empty()) {
+    auto& o = j["orders"];
+    for (const auto& [name, eo] : r.orders) {
+      auto opt = [](const std::vector<std::optional<double>>& v) {
+        nlohmann::json a = nlohmann::json::array();
+        for (const auto& x : v) a.push_back(x ? nlohmann::json(*x) : nlohmann::json(nullptr));
+        return a;
+      };
+      o[name] = {{"errors", opt(eo.first)}, {"orders", opt(eo.second)}};
+    }
+  }
+  return j;
+}
+
+}  // namespace beamimpact

@@ -1,0 +1,64 @@
+#pragma once
+/// @file evaluate.hpp
+/// @brief Turns finished runs into gate results: compares each case with its reference, computes
+/// the observed orders of convergence ladders, and decides pass / fail / skip per gate.
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "verification/compare/Comparison.hpp"
+#include "verification/matrix/Matrix.hpp"
+#include "verification/matrix/run_all.hpp"
+
+namespace beamimpact {
+
+/// @brief Outcome of one gate.
+struct GateResult {
+  Gate gate;
+  std::optional<double> value;  ///< the error (cases) or the observed order (ladders)
+  std::string status;           ///< "pass" | "fail" | "skipped"
+  std::string message;          ///< why it failed / was skipped; "" on pass
+  /// @brief "<= 0.01" or "order >= 0.9" (and "<= tol" too for ladders with both).
+  std::string limit() const;
+};
+
+/// @brief Outcome of one case or ladder: its gates and what they were computed from.
+struct ItemResult {
+  std::string kind;              ///< "case" | "convergence"
+  std::string scene;             ///< scene name (file stem)
+  std::string name;              ///< Case::name() / Convergence::name()
+  std::string settings;          ///< run settings label ("paper dt=0.01")
+  std::string reference;         ///< reference settings label ("" for ladders)
+  std::string tier;
+  bool required = true;
+  double wall_seconds = 0.0;     ///< s, process wall time of the run(s) under test
+  double solver_seconds = 0.0;   ///< s, the methods' own wall time (summary.json)
+  std::vector<GateResult> gates;
+  std::vector<Comparison> comparisons;  ///< one per case; consecutive pairs for ladders
+  /// @brief Ladders: norm name -> errors of consecutive pairs and the observed orders.
+  std::map<std::string, std::pair<std::vector<std::optional<double>>, std::vector<std::optional<double>>>> orders;
+  std::string note;
+  /// @brief True when no gate failed.
+  bool passed() const;
+};
+
+/// @brief Decides one gate on a comparison (error <= tol). A missing or unavailable norm fails.
+GateResult check_gate(const Gate& gate, const Comparison& cmp);
+
+/// @brief Evaluates a case from the finished runs (keyed by RunSpec::key()).
+ItemResult evaluate_case(const Case& c, const std::map<std::string, RunOutcome>& runs);
+
+/// @brief Evaluates a convergence ladder from the finished runs.
+ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, RunOutcome>& runs);
+
+/// @brief Observed order p = log(e_coarse / e_fine) / log(r); empty when an error is zero or missing.
+std::optional<double> observed_order(std::optional<double> e_coarse, std::optional<double> e_fine, double r);
+
+/// @brief JSON of an item: its gates and every norm of every comparison.
+nlohmann::json to_json(const ItemResult& r);
+
+}  // namespace beamimpact

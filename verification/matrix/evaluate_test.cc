@@ -1,0 +1,44 @@
+// Gate decisions and observed orders on hand-made comparisons.
+#include "verification/matrix/evaluate.hpp"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+namespace beamimpact {
+namespace {
+
+Comparison with_impulse(std::optional<double> v) {
+  Comparison c;
+  Norm n{"impulse", v, "1", "test", {}, {}, v ? "" : "reference value is zero"};
+  c.norms.push_back(n);
+  return c;
+}
+
+TEST(Evaluate, GatePassesAtOrBelowTolerance) {
+  const Gate g{"impulse", 0.01, std::nullopt, "test gate"};
+  EXPECT_EQ(check_gate(g, with_impulse(0.01)).status, "pass");  // "error <= tol"
+  const GateResult f = check_gate(g, with_impulse(0.0100001));
+  EXPECT_EQ(f.status, "fail");
+  EXPECT_NE(f.message.find("exceeds"), std::string::npos);
+}
+
+TEST(Evaluate, UnavailableOrMissingNormFails) {
+  EXPECT_EQ(check_gate({"impulse", 1.0, std::nullopt, "test"}, with_impulse(std::nullopt)).status, "fail");
+  const GateResult m = check_gate({"impulse_2", 1.0, std::nullopt, "test"}, with_impulse(0.0));
+  EXPECT_EQ(m.status, "fail");
+  EXPECT_NE(m.message.find("not produced"), std::string::npos);
+}
+
+// e = C h^p: halving h divides the error by 2^p.
+TEST(Evaluate, ObservedOrder) {
+  EXPECT_NEAR(*observed_order(4e-3, 1e-3, 2.0), 2.0, 1e-12);
+  EXPECT_NEAR(*observed_order(1e-3, 1e-3, 2.0), 0.0, 1e-12);
+  EXPECT_NEAR(*observed_order(9e-3, 1e-3, 3.0), 2.0, 1e-12);
+  EXPECT_FALSE(observed_order(0.0, 1e-3, 2.0));
+  EXPECT_FALSE(observed_order(1e-3, 0.0, 2.0));
+  EXPECT_FALSE(observed_order(std::nullopt, 1e-3, 2.0));
+}
+
+}  // namespace
+}  // namespace beamimpact

@@ -1,0 +1,39 @@
+#pragma once
+/// @file reports.hpp
+/// @brief The three outputs of `beamimpact verify`: JUnit XML (CI), JSON of every norm, and a
+/// Markdown summary with a table per scene.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "verification/matrix/evaluate.hpp"
+
+namespace beamimpact {
+
+/// @brief How the report was made (written at the top of every output).
+struct ReportContext {
+  std::string command;        ///< the command line
+  std::string matrix;         ///< matrix file
+  std::string tier;           ///< quick | full
+  std::string version;        ///< kVersion of the binary
+  std::string started;        ///< UTC time stamp
+  double wall_seconds = 0.0;  ///< s, whole verify
+  int jobs = 1;
+};
+
+/// @brief JUnit XML: one testsuite per scene, one testcase per gate, named
+/// "<scene> <method> dt=<dt> vs <reference>: <metric>" (classname "<scene>.<method>.dt=<dt>").
+void write_junit(const std::filesystem::path& file, const ReportContext& ctx, const std::vector<ItemResult>& items);
+
+/// @brief JSON with the context, every gate and every norm of every comparison.
+void write_json(const std::filesystem::path& file, const ReportContext& ctx, const std::vector<ItemResult>& items);
+
+/// @brief Markdown: how it was made, totals, a table per scene (method, dt, reference, norm,
+/// value, limit, result, wall time), the observed orders of each ladder, and the definitions.
+void write_markdown(const std::filesystem::path& file, const ReportContext& ctx, const std::vector<ItemResult>& items);
+
+/// @brief Writes text to file atomically (temporary file then rename).
+void write_file_atomic(const std::filesystem::path& file, const std::string& text);
+
+}  // namespace beamimpact

@@ -1,0 +1,51 @@
+#pragma once
+/// @file sweep.hpp
+/// @brief `beamimpact sweep`: one scene at several dt (and meshes), each compared with one
+/// reference, with wall time: the table behind "what accuracy costs in time".
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "verification/compare/Comparison.hpp"
+#include "verification/matrix/run_all.hpp"
+
+namespace beamimpact {
+
+/// @brief What to sweep.
+struct SweepOptions {
+  std::filesystem::path scene;
+  std::string method = "paper";
+  std::vector<double> dts;            ///< s (scenes with a numeric dt)
+  std::vector<double> fractions;      ///< of the critical step (scenes with dt = "auto"); instead of dts
+  std::vector<std::string> meshes;    ///< element multipliers (beam methods) or presets; empty = scene's
+  std::string reference = "self";     ///< "self" | a method name | a run directory
+  std::filesystem::path out;
+  int jobs = 1;
+  double timeout = 3600.0;            ///< s per run
+};
+
+/// @brief One point of the sweep.
+struct SweepPoint {
+  RunOutcome outcome;
+  std::optional<Comparison> comparison;  ///< empty when the run failed
+};
+
+/// @brief The whole sweep.
+struct SweepResult {
+  std::string reference_label;        ///< what the errors are measured against
+  std::filesystem::path reference_dir;
+  std::vector<SweepPoint> points;     ///< in the order dts x meshes
+};
+
+/// @brief Runs the sweep (runs in parallel) and compares each point with the reference.
+/// Throws SceneError for bad options and std::runtime_error when the reference run fails.
+SweepResult run_sweep(const SweepOptions& o, const Launcher& launcher);
+
+/// @brief Writes out/sweep.md, sweep.csv and sweep.json; `header` says how it was made.
+void write_sweep(const SweepOptions& o, const SweepResult& r, const std::string& header);
+
+/// @brief The norms tabulated by sweep (and printed by verify for a case).
+const std::vector<std::string>& sweep_norms();
+
+}  // namespace beamimpact

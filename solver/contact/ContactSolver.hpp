@@ -6,6 +6,7 @@
 /// tau = mu R sign(tau_stick) and R re-solved; open when R <= 0. Several contacts are coupled
 /// through H and solved by Gauss-Seidel sweeps (one sweep for a single contact).
 
+#include <algorithm>
 #include <functional>
 #include <vector>
 
@@ -35,6 +36,8 @@ class ContactSolver {
   const std::vector<ContactForce>& solve(const Eigen::VectorXd& Ubar, const Eigen::VectorXd& U);
   /// @brief Adds sum W lambda of the last solve into f (a force vector, N).
   void add_forces(Eigen::VectorXd& f) const;
+  /// @brief Forgets the cached H W columns (the mass changed: a rotating body's M_A(t)).
+  void invalidate() { std::fill(fresh_.begin(), fresh_.end(), 0); }
   /// @brief True when the last solve produced any non-zero force.
   bool any_force() const { return any_; }
   /// @brief dt^2 H W columns of contact c (normal, tangent), valid after solve().

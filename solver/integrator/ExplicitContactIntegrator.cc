@@ -39,6 +39,7 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
       // far below any physical penetration per step.
       solver_(pairs_, frictions(scene), effects.friction, model.size(), 1e-10 * length_scale(scene),
               [this](const Eigen::VectorXd& f, Eigen::VectorXd& out) { apply_H(f, out); }) {
+  if (!model.lumped() && fint_.nonlinear()) cmass_ = std::make_unique<CorotationalMass>(model, fint_);
   const int n = model.size();
   U_prev_ = U_ = U_next_ = Ubar_ = fc_ = work_ = work2_ = du_ = scratch_ = hwork_ = Eigen::VectorXd::Zero(n);
   Vbar_ = V_ = model.initial_velocity();  // no contact force at t = 0: Vbar^0 = V^0
@@ -48,7 +49,7 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
 
 void ExplicitContactIntegrator::subtract_damping_force(const Eigen::VectorXd& v, Eigen::VectorXd& f) {
   // f -= C v with C = a0 M + a1 K, through a scratch vector (no allocation).
-  scratch_.noalias() = model_.M() * v;
+  scratch_.noalias() = mass() * v;
   f -= model_.rayleigh_mass() * scratch_;
   scratch_.noalias() = fint_.linear_stiffness() * v;
   f -= model_.rayleigh_stiffness() * scratch_;
@@ -68,6 +69,11 @@ void ExplicitContactIntegrator::apply_H(const Eigen::VectorXd& f, Eigen::VectorX
 }
 
 void ExplicitContactIntegrator::solve_contacts() {
+  if (cmass_) {  // Eq. 22: the rotating body's consistent mass follows its element frames
+    cmass_->update(U_);
+    minv_.refactor(cmass_->M());
+    solver_.invalidate();
+  }
   // Contact-free prediction of U^{p+1}.
   work2_ = -fint_U_;
   if (damped_) subtract_damping_force(Vbar_, work2_);
@@ -126,7 +132,7 @@ void ExplicitContactIntegrator::advance() {
 
 double ExplicitContactIntegrator::kinetic_energy() const {
   if (model_.lumped()) return 0.5 * V_.dot(model_.lumped_mass().cwiseProduct(V_));
-  return 0.5 * V_.dot(model_.M() * V_);
+  return 0.5 * V_.dot(mass() * V_);
 }
 
 }  // namespace beamimpact

@@ -12,7 +12,10 @@
 
 #include <vector>
 
+#include <memory>
+
 #include "contact/ContactSolver.hpp"
+#include "integrator/CorotationalMass.hpp"
 #include "integrator/InternalForce.hpp"
 #include "model/MassSolver.hpp"
 #include "run/Effects.hpp"
@@ -50,6 +53,12 @@ class ExplicitContactIntegrator {
   /// @brief Kinetic 1/2 V^T M V and strain energy at step p (J).
   double kinetic_energy() const;
   double strain_energy() const { return fint_.strain_energy(U_); }
+  /// @brief Linear momentum of body b along global axis c (0 = x, 1 = y) at step p (N s).
+  double momentum(int b, int c) const {
+    return cmass_ ? cmass_->momentum(b, c, V_) : model_.momentum_covector(b, c).dot(V_);
+  }
+  /// @brief The current mass: the model's, or M_A(t) when a rotating body has consistent mass.
+  const SparseMatrix& mass() const { return cmass_ ? cmass_->M() : model_.M(); }
   /// @brief Cumulative energy removed by contact forces (closures, friction) and damping (J).
   double dissipated() const { return dissipated_; }
   /// @brief The model.
@@ -65,6 +74,7 @@ class ExplicitContactIntegrator {
   bool damped_, friction_;
   MassSolver minv_;
   InternalForce fint_;
+  std::unique_ptr<CorotationalMass> cmass_;  ///< only for consistent mass with rotating bodies
   std::vector<ContactPair> pairs_;
   ContactSolver solver_;
   const std::vector<ContactForce>* forces_ = nullptr;

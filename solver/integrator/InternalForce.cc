@@ -48,6 +48,13 @@ InternalForce::Local InternalForce::local(int e, const Eigen::VectorXd& U,
   return l;
 }
 
+Vec2 InternalForce::chord_direction(int e, const Eigen::VectorXd& U) const {
+  Eigen::Matrix<int, 6, 1> eq;
+  double x[6];
+  const Local l = local(e, U, eq, x);
+  return {l.c, l.s};
+}
+
 void InternalForce::apply(const Eigen::VectorXd& U, Eigen::VectorXd& f) const {
   f.noalias() = (*K_) * U;
   Eigen::Matrix<int, 6, 1> eq;

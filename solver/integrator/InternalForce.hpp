@@ -21,6 +21,10 @@ class InternalForce {
   double strain_energy(const Eigen::VectorXd& U) const;
   /// @brief True when some body is corotational.
   bool nonlinear() const { return !corot_elements_.empty(); }
+  /// @brief Current chord direction (cos, sin) of element e at U (the corotational frame).
+  Vec2 chord_direction(int e, const Eigen::VectorXd& U) const;
+  /// @brief Elements that are corotational.
+  const std::vector<int>& corotational_elements() const { return corot_elements_; }
   /// @brief Stiffness of the linear part (all elements when nothing is corotational).
   const SparseMatrix& linear_stiffness() const { return *K_; }
 

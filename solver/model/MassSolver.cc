@@ -15,6 +15,11 @@ MassSolver::MassSolver(const Model& model) {
   }
 }
 
+void MassSolver::refactor(const SparseMatrix& M) {
+  ldlt_->factorize(M);
+  if (ldlt_->info() != Eigen::Success) throw std::runtime_error("consistent mass matrix became singular");
+}
+
 void MassSolver::apply(const Eigen::VectorXd& in, Eigen::VectorXd& out) const {
   if (ldlt_) out = ldlt_->solve(in);
   else out.noalias() = inv_.cwiseProduct(in);

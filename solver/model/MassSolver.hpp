@@ -16,6 +16,9 @@ class MassSolver {
  public:
   /// @brief Factorises M (consistent) or stores 1/m (lumped). Throws if M is singular.
   explicit MassSolver(const Model& model);
+  /// @brief New values of a consistent M with the same sparsity (a rotating body's M_A(t)):
+  /// numeric refactorisation only, the symbolic analysis is kept.
+  void refactor(const SparseMatrix& M);
   /// @brief out = M^-1 in (out may not alias in for consistent mass).
   void apply(const Eigen::VectorXd& in, Eigen::VectorXd& out) const;
   /// @brief True for the diagonal case (then inverse_diagonal() is M^-1).

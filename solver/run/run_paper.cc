@@ -31,7 +31,7 @@ double choose_dt(const Scene& scene, const CriticalStep& cs, RunResult& r) {
   return dt;
 }
 
-HistoryRow make_row(const ExplicitContactIntegrator& in, const std::array<Eigen::VectorXd, 2>& p) {
+HistoryRow make_row(const ExplicitContactIntegrator& in) {
   const Model& m = in.model();
   HistoryRow row;
   row.t = in.time();
@@ -52,7 +52,8 @@ HistoryRow make_row(const ExplicitContactIntegrator& in, const std::array<Eigen:
   row.kinetic = in.kinetic_energy();
   row.strain = in.strain_energy();
   row.dissipated = in.dissipated();
-  row.momentum = {p[0].dot(in.V()), p[1].dot(in.V())};
+  for (int b = 0; b < m.num_bodies(); ++b)
+    for (int c = 0; c < 2; ++c) row.momentum[c] += in.momentum(b, c);
   return row;
 }
 
@@ -71,10 +72,6 @@ RunResult run_paper(const Scene& scene_in) {
   const SurfaceInterpolation surface = options.reader().choice_or("surface", "linear", {"linear", "hermite"}) == "linear"
                                            ? SurfaceInterpolation::kLinear : SurfaceInterpolation::kHermite;
   options.reader().finish();
-  if (effects.corotational && scene.model.mass == MassKind::kConsistent)
-    throw SceneError(scene.file, "model.mass",
-                     "\"consistent\" with kinematics = \"corotational\" is not supported yet (M_A(t) "
-                     "rebuild); expected \"lumped\" or kinematics = \"linear\"");
 
   const Model model(scene, effects.bending);
   const CriticalStep cs = critical_step(model);
@@ -89,9 +86,6 @@ RunResult run_paper(const Scene& scene_in) {
                                        "merged; an interval runs from its first to its last step with R > 0",
                                        merge_steps, static_cast<double>(merge_steps) * dt);
   std::vector<ContactStats> stats(scene.contacts.size(), ContactStats((static_cast<double>(merge_steps) + 0.5) * dt, rule));
-  std::array<Eigen::VectorXd, 2> p_total = {Eigen::VectorXd::Zero(model.size()), Eigen::VectorXd::Zero(model.size())};
-  for (int b = 0; b < model.num_bodies(); ++b)
-    for (int c = 0; c < 2; ++c) p_total[c] += model.momentum_covector(b, c);
 
   Progress progress("paper", scene.time.end);
   Vec2 p0{};
@@ -102,7 +96,7 @@ RunResult run_paper(const Scene& scene_in) {
       stats[c].add(integ.time(), f.R, f.tau, dt, f.state);
     }
     if (p % scene.time.output_every == 0 || p == N) {
-      HistoryRow row = make_row(integ, p_total);
+      HistoryRow row = make_row(integ);
       const double E = row.kinetic + row.strain;
       if (p == 0) {
         r.energy_initial = E;
@@ -129,8 +123,8 @@ RunResult run_paper(const Scene& scene_in) {
     r.contacts.push_back(s);
   }
   for (int b = 0; b < model.num_bodies(); ++b)
-    r.final_velocity[scene.bodies[b].name] = {model.momentum_covector(b, 0).dot(integ.V()) / model.body_mass(b),
-                                              model.momentum_covector(b, 1).dot(integ.V()) / model.body_mass(b)};
+    r.final_velocity[scene.bodies[b].name] = {integ.momentum(b, 0) / model.body_mass(b),
+                                              integ.momentum(b, 1) / model.body_mass(b)};
   r.extra["critical_step"] = {{"method", "Lanczos on the sparse M^-1 K (M-inner product)"},
                               {"omega_max", cs.omega_max}, {"lanczos_iterations", cs.iterations},
                               {"element_bound_dt", cs.element_bound_dt},

@@ -69,6 +69,8 @@ RunResult run_paper(const Scene& scene_in) {
   MethodOptions options(scene, "paper", &r.assumed);
   const long merge_steps = options.reader().integer_or("merge_steps", 3, "a whole number of steps >= 0");
   if (merge_steps < 0) options.reader().fail("merge_steps", "expected a whole number of steps >= 0");
+  const double merge_gap = options.reader().number_or("merge_gap", 0.0, "a time >= 0 (s); 0 = use merge_steps");
+  if (merge_gap < 0.0) options.reader().fail("merge_gap", "expected a time >= 0 (s)");
   const SurfaceInterpolation surface = options.reader().choice_or("surface", "linear", {"linear", "hermite"}) == "linear"
                                            ? SurfaceInterpolation::kLinear : SurfaceInterpolation::kHermite;
   options.reader().finish();
@@ -82,10 +84,18 @@ RunResult run_paper(const Scene& scene_in) {
   r.steps = N;
 
   ExplicitContactIntegrator integ(model, scene, effects, dt, surface);
-  const std::string rule = fmt::format("contact phases separated by fewer than {} open steps ({:.6g} s) are "
-                                       "merged; an interval runs from its first to its last step with R > 0",
-                                       merge_steps, static_cast<double>(merge_steps) * dt);
-  std::vector<ContactStats> stats(scene.contacts.size(), ContactStats((static_cast<double>(merge_steps) + 0.5) * dt, rule));
+  // Chatter merge: a gap in seconds when given (comparable across dt and methods), else a number
+  // of open steps of this run.
+  const double steps_gap = (static_cast<double>(merge_steps) + 0.5) * dt;
+  const double gap = merge_gap > 0.0 ? merge_gap : steps_gap;
+  const std::string rule =
+      merge_gap > 0.0
+          ? fmt::format("contact phases separated by less than {:.6g} s are merged; an interval runs from its "
+                        "first to its last step with R > 0", merge_gap)
+          : fmt::format("contact phases separated by fewer than {} open steps ({:.6g} s) are merged; an interval "
+                        "runs from its first to its last step with R > 0", merge_steps,
+                        static_cast<double>(merge_steps) * dt);
+  std::vector<ContactStats> stats(scene.contacts.size(), ContactStats(gap, rule));
 
   Progress progress("paper", scene.time.end);
   Vec2 p0{};

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "testing/test_scenes.hpp"
+
 namespace beamimpact {
 namespace {
 
@@ -38,7 +40,7 @@ TEST(RunOutput, ColumnsRepeatPerContactWithSuffixes) {
 }
 
 TEST(RunOutput, WritesBothFiles) {
-  const fs::path d = fs::path(::testing::TempDir()) / "ro_ok";
+  const fs::path d = testing::temp_path("ro_ok");
   fs::remove_all(d);
   write_run(two_contacts(), one_row(1.5), d);
   EXPECT_TRUE(fs::exists(d / "history.csv"));
@@ -51,7 +53,7 @@ TEST(RunOutput, WritesBothFiles) {
 }
 
 TEST(RunOutput, NonFiniteValueWritesNothingComplete) {
-  const fs::path d = fs::path(::testing::TempDir()) / "ro_nan";
+  const fs::path d = testing::temp_path("ro_nan");
   fs::remove_all(d);
   write_run(two_contacts(), one_row(1.0), d);  // an earlier, complete result in the same place
   EXPECT_THROW(write_run(two_contacts(), one_row(std::nan("")), d), std::runtime_error);

@@ -50,7 +50,7 @@ TEST(SceneIo, SetOverridesByPathIndexAndName) {
 
 // Writes `text` to a temporary scene file and returns the SceneError it raises.
 SceneError error_of(const std::string& text, const std::vector<std::string>& sets = {}) {
-  const std::string path = ::testing::TempDir() + "/bad_scene.toml";
+  const std::string path = testing::temp_path("bad_scene.toml").string();
   std::ofstream(path) << text;
   try {
     load_scene(path, sets);

@@ -6,6 +6,9 @@
 #include <filesystem>
 #include <string>
 
+#include <gtest/gtest.h>
+#include <unistd.h>
+
 #include "scene/Scene.hpp"
 
 namespace beamimpact::testing {
@@ -15,6 +18,15 @@ namespace beamimpact::testing {
 inline std::filesystem::path source_dir() {
   if (const char* s = std::getenv("BEAMIMPACT_SOURCE_DIR")) return s;
   return BEAMIMPACT_SOURCE_DIR_DEFAULT;
+}
+
+/// @brief A temporary path private to this test process and test: ctest runs test cases as
+/// parallel processes, so a fixed name in the temp folder would be shared between them.
+inline std::filesystem::path temp_path(const std::string& name) {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::string test = info ? std::string(info->test_suite_name()) + "." + info->name() : "none";
+  return std::filesystem::path(::testing::TempDir()) /
+         ("beamimpact_" + std::to_string(getpid()) + "_" + test + "_" + name);
 }
 
 /// @brief Path of a paper scene, e.g. paper_scene("s1_central").

@@ -32,7 +32,7 @@ Result run(const std::string& args) {
 }
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::path(::testing::TempDir()) / ("cli_" + name);
+  const fs::path d = beamimpact::testing::temp_path("cli_" + name);
   fs::remove_all(d);
   return d;
 }
@@ -42,7 +42,7 @@ std::string bad_scene(const std::string& from, const std::string& to) {
   std::string s(std::istreambuf_iterator<char>(in), {});
   s.replace(s.find(from), from.size(), to);
   static int count = 0;  // one file per case: all cases are built before any runs
-  const std::string path = ::testing::TempDir() + "/cli_bad_" + std::to_string(++count) + ".toml";
+  const std::string path = beamimpact::testing::temp_path("cli_bad_" + std::to_string(++count) + ".toml").string();
   std::ofstream(path) << s;
   return path;
 }

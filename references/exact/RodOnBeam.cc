@@ -10,6 +10,8 @@
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
+
+#include "io/Progress.hpp"
 #include <gsl/gsl_roots.h>
 
 namespace beamimpact::exact {
@@ -194,7 +196,9 @@ void RodOnBeam::run() {
     mem_.add(tt, d.force(tt, yy) + d.delayed(tt));
   };
 
+  Progress progress("exact (" + std::to_string(N) + " modes)", s_.t_end);  // stderr, long runs only
   while (t < s_.t_end - eps) {
+    progress.update(t);
     while (!pending.empty() && *pending.begin() <= t + eps) pending.erase(pending.begin());
     pending.insert(t + T);  // this piece start comes back after one round trip in the rod
     const double nb = std::min(*pending.begin(), s_.t_end);

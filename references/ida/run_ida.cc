@@ -9,6 +9,7 @@
 #include "ida/PenaltyIda.hpp"
 #include "ida/ida_options.hpp"
 #include "io/ContactStats.hpp"
+#include "io/Progress.hpp"
 #include "model/MassSolver.hpp"
 #include "model/Model.hpp"
 #include "model/critical_dt.hpp"
@@ -182,7 +183,9 @@ RunResult run_ida(const Scene& scene) {
   rule << "contact phases (located by IDA root finding) separated by less than " << opt.merge_gap
        << " s are merged";
   for (int i = 0; i < nc; ++i) stats.emplace_back(opt.merge_gap, rule.str());
+  Progress progress("ida", scene.time.end);  // stderr, only on long runs
   auto on_step = [&](double t_prev) {
+    progress.update(ida.t());
     for (int i = 0; i < nc; ++i) {
       const ContactReading r = ida.contact(i);
       stats[i].add(ida.t(), r.R, r.tau, ida.t() - t_prev, state_of(i, r));

@@ -25,28 +25,25 @@ void ContactSolver::refresh_response(int c) {
 
 const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Ubar, const Eigen::VectorXd& U) {
   const int m = static_cast<int>(pairs_.size());
-  std::vector<double>& gbar = gbar_;
-  std::vector<double>& sbar = sbar_;
-  std::vector<char>& active = active_;
   any_ = false;
   for (int c = 0; c < m; ++c) {
     // A sliding (or newly closing) striker is re-located from the predicted configuration; a
     // sticking one stays on the material point it holds.
     if (out_[c].state != ContactState::kStick && pairs_[c].relocate(Ubar)) fresh_[c] = 0;
     const ContactPair& p = pairs_[c];
-    gbar[c] = p.g0() + ContactPair::eval(p.normal_row(), Ubar);
-    sbar[c] = friction_ ? ContactPair::eval(p.tangent_row(), Ubar) - ContactPair::eval(p.tangent_row(), U) : 0.0;
-    out_[c] = ContactForce{0.0, 0.0, gbar[c], sbar[c], ContactState::kOpen};
-    active[c] = gbar[c] < -tol_;
-    if (active[c]) refresh_response(c);
+    gbar_[c] = p.g0() + ContactPair::eval(p.normal_row(), Ubar);
+    sbar_[c] = friction_ ? ContactPair::eval(p.tangent_row(), Ubar) - ContactPair::eval(p.tangent_row(), U) : 0.0;
+    out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};
+    active_[c] = gbar_[c] < -tol_;
+    if (active_[c]) refresh_response(c);
   }
   // Gauss-Seidel over contacts: each local solve sees the others' current forces.
   for (int sweep = 0; sweep < (m > 1 ? 100 : 1); ++sweep) {
     double change = 0.0;
     for (int c = 0; c < m; ++c) {
-      if (!active[c]) continue;
+      if (!active_[c]) continue;
       const ContactPair& p = pairs_[c];
-      double g = gbar[c], s = sbar[c];
+      double g = gbar_[c], s = sbar_[c];
       for (int d = 0; d < m; ++d) {  // effect of the other contacts' forces on this one
         if (d == c || out_[d].state == ContactState::kOpen) continue;
         g += out_[d].R * ContactPair::eval(p.normal_row(), hn_[d]);
@@ -100,7 +97,7 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
   for (int c = 0; c < m; ++c) {
     any_ |= out_[c].state != ContactState::kOpen;
     if (out_[c].state == ContactState::kOpen && m > 1) {
-      double g = gbar[c];
+      double g = gbar_[c];
       for (int d = 0; d < m; ++d)
         if (out_[d].state != ContactState::kOpen) {
           refresh_response(d);

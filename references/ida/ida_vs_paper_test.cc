@@ -15,7 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "ida/run_ida.hpp"
-#include "ida/test_scenes.hpp"
+#include "testing/test_scenes.hpp"
 #include "run/run_paper.hpp"
 
 namespace beamimpact {
@@ -67,14 +67,14 @@ TEST_P(IdaVsPaper, AgreeAndConvergeAsPaperDtFalls) {
   const Case& c = GetParam();
   std::vector<std::string> common = c.extra;
   if (!kFull) common.push_back("time.end=" + std::to_string(c.quick_end));
-  const Scene base = testing::paper_scene(c.scene, common);
+  const Scene base = testing::load_paper_scene(c.scene, common);
   const double f0 = c.auto_dt ? base.time.fraction : *base.time.dt;
   const std::string key = c.auto_dt ? "time.fraction=" : "time.dt=";
 
   // IDA: restitution 0.001 (the plastic closure's limit) and kn = 1e4 EA/le; rtol 1e-8.
   std::vector<std::string> io = common;
   io.insert(io.end(), {"ida.restitution=0.001", "ida.kn_factor=1e4"});
-  const RunResult ida = run_ida(testing::paper_scene(c.scene, io));
+  const RunResult ida = run_ida(testing::load_paper_scene(c.scene, io));
   const ContactSummary& ci = ida.contacts.at(0);
   ASSERT_FALSE(ci.intervals.empty());
   const double period = ci.extra.at("contact_period").get<double>();
@@ -88,7 +88,7 @@ TEST_P(IdaVsPaper, AgreeAndConvergeAsPaperDtFalls) {
     std::vector<std::string> po = common;
     po.push_back(key + std::to_string(f0 / static_cast<double>(every)));
     po.push_back("time.output_every=" + std::to_string(every));
-    const RunResult paper = run_paper(testing::paper_scene(c.scene, po));
+    const RunResult paper = run_paper(testing::load_paper_scene(c.scene, po));
     const ContactSummary& cp = paper.contacts.at(0);
     ASSERT_FALSE(cp.intervals.empty());
     const double dt = paper.dt;

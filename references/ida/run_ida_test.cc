@@ -5,16 +5,16 @@
 
 #include <gtest/gtest.h>
 
-#include "ida/test_scenes.hpp"
+#include "testing/test_scenes.hpp"
 #include "io/run_output.hpp"
 #include "scene/SceneError.hpp"
 
 namespace beamimpact {
 namespace {
 
-using testing::paper_scene;
+using testing::load_paper_scene;
 
-RunResult s1(const std::vector<std::string>& o = {}) { return run_ida(paper_scene("s1_central", o)); }
+RunResult s1(const std::vector<std::string>& o = {}) { return run_ida(load_paper_scene("s1_central", o)); }
 
 // S1 exact (1D waves, references.md 1): contact [0.5, 2.5] s, impulse rho c A v0/2 x 2L/c = 4 N s.
 constexpr double kExactImpulse = 4.0, kExactStart = 0.5, kExactEnd = 2.5;
@@ -113,7 +113,7 @@ TEST(RunIda, KluMatchesDenseOnASlidingFrictionalContact) {
   auto with = [&](const char* ls) {
     auto v = o;
     v.push_back(std::string("ida.linear_solver=\"") + ls + "\"");
-    return run_ida(paper_scene("s4_oblique_45", v));
+    return run_ida(load_paper_scene("s4_oblique_45", v));
   };
   const RunResult d = with("dense"), k = with("klu");
   EXPECT_EQ(k.extra["ida"]["linear_solver"], "klu");
@@ -126,7 +126,7 @@ TEST(RunIda, KluMatchesDenseOnASlidingFrictionalContact) {
 TEST(RunIda, FrictionIsBoundedAndDissipative) {
   // S4 at 60 deg: cot(60) = 0.58 > mu = 0.3, the first contact slips (scenes.md).
   const double mu = 0.3;
-  const RunResult r = run_ida(paper_scene("s4_oblique_60", {"time.end=0.03", "model.kinematics=linear"}));
+  const RunResult r = run_ida(load_paper_scene("s4_oblique_60", {"time.end=0.03", "model.kinematics=linear"}));
   int closed = 0;
   for (const HistoryRow& row : r.history) {
     const ContactSample& c = row.contacts[0];
@@ -150,7 +150,7 @@ TEST(RunIda, FrictionIsBoundedAndDissipative) {
 TEST(RunIda, S4WithoutSlidingBalancesEnergy) {
   // At 90 deg the struck point does not slide: the balance holds to IDA's tolerance
   // (rtol 1e-8 on a contact dissipating ~900 J: 1e-6 E0 = 8.4e-3 J is generous).
-  const RunResult r = run_ida(paper_scene("s4_oblique_90", {"time.end=0.03", "model.kinematics=linear"}));
+  const RunResult r = run_ida(load_paper_scene("s4_oblique_90", {"time.end=0.03", "model.kinematics=linear"}));
   for (const HistoryRow& row : r.history)
     EXPECT_NEAR(row.kinetic + row.strain + row.dissipated, r.energy_initial, 1e-6 * r.energy_initial)
         << row.t;
@@ -161,7 +161,7 @@ TEST(RunIda, FrictionRegularisationConverges) {
   // Tangential impulse of S4 at 60 deg for v_reg = 1e-2, 1e-3, 1e-4 m/s: the differences to
   // v_reg = 1e-5 fall with v_reg (the regularised law tends to Coulomb's).
   auto tau_impulse = [](const char* v) {
-    return run_ida(paper_scene("s4_oblique_60", {"time.end=0.02", "model.kinematics=linear",
+    return run_ida(load_paper_scene("s4_oblique_60", {"time.end=0.02", "model.kinematics=linear",
                                                  std::string("ida.friction_velocity=") + v}))
         .contacts[0].impulse_tangential;
   };
@@ -178,7 +178,7 @@ TEST(RunIda, FrictionRegularisationConverges) {
 
 TEST(RunIda, SummaryCarriesIdaStatisticsAndDefaults) {
   // What `beamimpact run --method ida` writes: IDA counters and every default used.
-  const Scene sc = paper_scene("s1_central", {"time.end=1.0", "ida.rtol=1e-6"});
+  const Scene sc = load_paper_scene("s1_central", {"time.end=1.0", "ida.rtol=1e-6"});
   const nlohmann::json j = summary_json(sc, run_ida(sc));
   EXPECT_EQ(j["method"], "ida");
   for (const char* k : {"steps", "residual_evals", "jacobian_evals", "events", "root_evals"})
@@ -193,7 +193,7 @@ TEST(RunIda, SummaryCarriesIdaStatisticsAndDefaults) {
 TEST(RunIda, BadOptionsAreSceneErrors) {
   auto expect_error = [](const std::string& set, const std::string& key) {
     try {
-      run_ida(paper_scene("s1_central", {set}));
+      run_ida(load_paper_scene("s1_central", {set}));
       ADD_FAILURE() << set << ": no error";
     } catch (const SceneError& e) {
       EXPECT_EQ(e.key(), key) << e.what();

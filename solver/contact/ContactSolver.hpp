@@ -34,14 +34,14 @@ class ContactSolver {
 
   /// @brief Solves for Ubar (predicted U^{p+1}) and U (current U^p). Re-locates sliding points.
   const std::vector<ContactForce>& solve(const Eigen::VectorXd& Ubar, const Eigen::VectorXd& U);
+  /// @brief Forces of the last solve (all open before the first), per contact.
+  const std::vector<ContactForce>& forces() const { return out_; }
   /// @brief Adds sum W lambda of the last solve into f (a force vector, N).
   void add_forces(Eigen::VectorXd& f) const;
   /// @brief Forgets the cached H W columns (the mass changed: a rotating body's M_A(t)).
   void invalidate() { std::fill(fresh_.begin(), fresh_.end(), 0); }
   /// @brief True when the last solve produced any non-zero force.
   bool any_force() const { return any_; }
-  /// @brief dt^2 H W columns of contact c (normal, tangent), valid after solve().
-  const Eigen::VectorXd& response_normal(int c) const { return hn_[c]; }
 
  private:
   void refresh_response(int c);

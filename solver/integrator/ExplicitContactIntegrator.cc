@@ -80,7 +80,7 @@ void ExplicitContactIntegrator::solve_contacts() {
   apply_Minv(work2_, work_);
   Ubar_.noalias() = U_ + dt_ * Vbar_ + (0.5 * dt_ * dt_) * work_;
 
-  forces_ = &solver_.solve(Ubar_, U_);
+  solver_.solve(Ubar_, U_);
   V_ = Vbar_;
   if (solver_.any_force()) {
     fc_.setZero();
@@ -91,7 +91,7 @@ void ExplicitContactIntegrator::solve_contacts() {
     // R (g_{p+1} - g_{p-1})/2 + tau (s_{p+1} - s_{p-1})/2. It is the exact change of the discrete
     // energy 1/2 v_{p+1/2} M v_{p+1/2} + 1/2 u_p K u_{p+1} (linear kinematics).
     for (std::size_t c = 0; c < pairs_.size(); ++c) {
-      const ContactForce& f = (*forces_)[c];
+      const ContactForce& f = solver_.forces()[c];
       if (f.state == ContactState::kOpen) continue;
       const ContactPair& pc = pairs_[c];
       const double g_prev = pc.g0() + ContactPair::eval(pc.normal_row(), U_prev_);

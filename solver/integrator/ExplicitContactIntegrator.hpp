@@ -47,7 +47,7 @@ class ExplicitContactIntegrator {
   /// @brief Half-step velocity Vbar^p (for the discrete energy identity).
   const Eigen::VectorXd& Vbar() const { return Vbar_; }
   /// @brief Forces of the last solve, per contact.
-  const std::vector<ContactForce>& forces() const { return *forces_; }
+  const std::vector<ContactForce>& forces() const { return solver_.forces(); }
   /// @brief Contact geometry, per contact.
   const std::vector<ContactPair>& pairs() const { return pairs_; }
   /// @brief Kinetic 1/2 V^T M V and strain energy at step p (J).
@@ -77,7 +77,6 @@ class ExplicitContactIntegrator {
   std::unique_ptr<CorotationalMass> cmass_;  ///< only for consistent mass with rotating bodies
   std::vector<ContactPair> pairs_;
   ContactSolver solver_;
-  const std::vector<ContactForce>* forces_ = nullptr;
   long p_ = 0;
   Eigen::VectorXd U_prev_, U_, U_next_,  // U^{p-1}, U^p, U^{p+1} (rotated by swaps)
       Vbar_, V_, fint_U_, fint_next_, Ubar_, fc_, work_, work2_,

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "beamimpact/version.hpp"
+#include "io/write_file_atomic.hpp"
 
 namespace beamimpact {
 namespace {
@@ -25,17 +26,6 @@ void append(fmt::memory_buffer& b, double v, const char* name, double t) {
     throw std::runtime_error(fmt::format("non-finite value of '{}' at t = {} s: the run diverged "
                                          "(a dt above the stability limit?)", name, t));
   fmt::format_to(std::back_inserter(b), ",{}", v);
-}
-
-void write_atomically(const std::filesystem::path& p, const std::string& text) {
-  const std::filesystem::path tmp = p.string() + ".partial";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-    out << text;
-    if (!out) throw std::runtime_error("error writing " + tmp.string());
-  }
-  std::filesystem::rename(tmp, p);
 }
 
 void check_finite(double v, const char* what) {
@@ -123,8 +113,8 @@ void write_run(const Scene& scene, const RunResult& r, const std::filesystem::pa
         append(b, v, "energy/momentum column", row.t);
       b.push_back('\n');
     }
-    write_atomically(history, fmt::to_string(b));
-    write_atomically(summary, summary_json(scene, r).dump(2) + "\n");
+    write_file_atomic(history, fmt::to_string(b));
+    write_file_atomic(summary, summary_json(scene, r).dump(2) + "\n");
   } catch (...) {
     std::filesystem::remove(history);
     throw;

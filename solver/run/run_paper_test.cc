@@ -152,10 +152,12 @@ TEST(Friction, LargeMuSticksWithNoRelativeTangentialMotion) {
   const auto& h = r.history;
   for (std::size_t i = 1; i + 1 < h.size(); ++i) {
     const ContactSample &a = h[i - 1].contacts[0], &b = h[i].contacts[0];
-    if (b.state == ContactState::kSlip)
+    if (b.state == ContactState::kSlip) {
       EXPECT_EQ(h[i + 1].contacts[0].state, ContactState::kOpen) << "slip before release only, t=" << h[i].t;
-    if (a.state == ContactState::kStick && b.state != ContactState::kOpen)
+    }
+    if (a.state == ContactState::kStick && b.state != ContactState::kOpen) {
       EXPECT_NEAR(b.ua[0] - b.ub[0], a.ua[0] - a.ub[0], 1e-12) << "t=" << h[i].t;  // ~1e-3 m: roundoff
+    }
   }
 }
 

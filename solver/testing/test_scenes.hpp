@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "scene/Scene.hpp"
+#include "scene/scene_io.hpp"
 
 namespace beamimpact::testing {
 
@@ -32,6 +33,11 @@ inline std::filesystem::path temp_path(const std::string& name) {
 /// @brief Path of a paper scene, e.g. paper_scene("s1_central").
 inline std::string paper_scene(const std::string& name) {
   return (source_dir() / "verification/scenes/paper" / (name + ".toml")).string();
+}
+
+/// @brief A paper scene loaded with --set style overrides (e.g. "time.end=1.5").
+inline Scene load_paper_scene(const std::string& name, const std::vector<std::string>& overrides = {}) {
+  return load_scene(paper_scene(name), overrides);
 }
 
 /// @brief A straight body from (x0, y0) to (x1, y1) with the paper's soft material (E 100, rho 1, A 0.4).

@@ -60,15 +60,6 @@ Totals totals(const std::vector<ItemResult>& items) {
 
 }  // namespace
 
-void write_file_atomic(const std::filesystem::path& file, const std::string& text) {
-  const auto tmp = file.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    if (!out) throw std::runtime_error("cannot write " + tmp);
-  }
-  std::filesystem::rename(tmp, file);
-}
 
 void write_junit(const std::filesystem::path& file, const ReportContext& ctx, const std::vector<ItemResult>& items) {
   const Totals all = totals(items);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "io/write_file_atomic.hpp"
 #include "verification/matrix/evaluate.hpp"
 
 namespace beamimpact {
@@ -33,7 +34,5 @@ void write_json(const std::filesystem::path& file, const ReportContext& ctx, con
 /// value, limit, result, wall time), the observed orders of each ladder, and the definitions.
 void write_markdown(const std::filesystem::path& file, const ReportContext& ctx, const std::vector<ItemResult>& items);
 
-/// @brief Writes text to file atomically (temporary file then rename).
-void write_file_atomic(const std::filesystem::path& file, const std::string& text);
 
 }  // namespace beamimpact

@@ -1,4 +1,4 @@
-# Writes build/generated/beamimpact/version.hpp with the project version and git description,
+# Writes build/include/beamimpact/version.hpp with the project version and git description,
 # so every output can say which code produced it.
 find_package(Git QUIET)
 set(BEAMIMPACT_GIT "unknown")
@@ -11,4 +11,4 @@ if(GIT_FOUND)
   endif()
 endif()
 configure_file(${PROJECT_SOURCE_DIR}/cmake/version.hpp.in
-  ${PROJECT_BINARY_DIR}/generated/beamimpact/version.hpp @ONLY)
+  ${BEAMIMPACT_INCLUDE_DIR}/beamimpact/version.hpp @ONLY)

@@ -1,4 +1,4 @@
-#include "exact/CoaxialRods.hpp"
+#include <beamimpact/exact/CoaxialRods.hpp>
 
 #include <algorithm>
 #include <cmath>

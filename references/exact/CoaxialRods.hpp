@@ -6,7 +6,7 @@
 #include <array>
 #include <vector>
 
-#include "exact/Rod.hpp"
+#include <beamimpact/exact/Rod.hpp>
 
 namespace beamimpact::exact {
 

@@ -1,4 +1,4 @@
-#include "exact/DelayMemory.hpp"
+#include <beamimpact/exact/DelayMemory.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // The reflection memory's interpolation against functions known in closed form.
-#include "exact/DelayMemory.hpp"
+#include <beamimpact/exact/DelayMemory.hpp>
 
 #include <cmath>
 

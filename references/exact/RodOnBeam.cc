@@ -1,4 +1,4 @@
-#include "exact/RodOnBeam.hpp"
+#include <beamimpact/exact/RodOnBeam.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 
-#include "io/Progress.hpp"
+#include <beamimpact/util/Progress.hpp>
 #include <gsl/gsl_roots.h>
 
 namespace beamimpact::exact {

@@ -8,10 +8,10 @@
 #include <array>
 #include <vector>
 
-#include "exact/CoaxialRods.hpp"
-#include "exact/DelayMemory.hpp"
-#include "exact/Rod.hpp"
-#include "exact/SimpleBeam.hpp"
+#include <beamimpact/exact/CoaxialRods.hpp>
+#include <beamimpact/exact/DelayMemory.hpp>
+#include <beamimpact/exact/Rod.hpp>
+#include <beamimpact/exact/SimpleBeam.hpp>
 
 namespace beamimpact::exact {
 

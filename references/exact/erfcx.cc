@@ -1,4 +1,4 @@
-#include "exact/erfcx.hpp"
+#include <beamimpact/exact/erfcx.hpp>
 
 #include <cmath>
 #include <numbers>

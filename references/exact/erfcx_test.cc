@@ -1,5 +1,5 @@
 // erfcx from GSL's hazard function against independent evaluations.
-#include "exact/erfcx.hpp"
+#include <beamimpact/exact/erfcx.hpp>
 
 #include <cmath>
 #include <numbers>

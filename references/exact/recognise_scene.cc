@@ -1,10 +1,10 @@
-#include "exact/recognise_scene.hpp"
+#include <beamimpact/exact/recognise_scene.hpp>
 
 #include <cmath>
 
 #include <fmt/format.h>
 
-#include "scene/SceneError.hpp"
+#include <beamimpact/scene/SceneError.hpp>
 
 namespace beamimpact::exact {
 namespace {
@@ -85,7 +85,7 @@ ExactProblem recognise_scene(const Scene& scene) {
     p.target_speed = dot(B.velocity, p.dir);
     p.v0 = dot(A.velocity, p.dir) - p.target_speed;
     p.target_rod = as_rod(B);
-    p.contact_kind = "end_to_end";
+    p.contact_kind = ContactKind::kEndToEnd;
     return p;
   }
 
@@ -121,7 +121,7 @@ ExactProblem recognise_scene(const Scene& scene) {
   p.beam = SimpleBeam{Lb, B.E, B.rho, B.area, B.inertia};
   p.x_c = x_c;
   const double le = Lb / B.elements, k = x_c / le;
-  p.contact_kind = std::abs(k - std::round(k)) < 1e-9 ? "node_to_node" : "node_to_surface";
+  p.contact_kind = std::abs(k - std::round(k)) < 1e-9 ? ContactKind::kNodeToNode : ContactKind::kNodeToSurface;
   return p;
 }
 

@@ -5,9 +5,10 @@
 
 #include <string>
 
-#include "exact/Rod.hpp"
-#include "exact/SimpleBeam.hpp"
-#include "scene/Scene.hpp"
+#include <beamimpact/exact/Rod.hpp>
+#include <beamimpact/exact/SimpleBeam.hpp>
+#include <beamimpact/scene/Scene.hpp>
+#include <beamimpact/schema/output_schema.hpp>
 
 namespace beamimpact::exact {
 
@@ -29,7 +30,7 @@ struct ExactProblem {
   Rod target_rod;               ///< the target as a rod (kCoaxialRods)
   SimpleBeam beam;              ///< the target as a beam (kRodOnBeam)
   double x_c = 0.0;             ///< m, struck point from the target's start node (kRodOnBeam)
-  std::string contact_kind;     ///< "end_to_end" | "node_to_node" | "node_to_surface"
+  ContactKind contact_kind = ContactKind::kEndToEnd;  ///< string forms in schema/output_schema.hpp
 };
 
 /// @brief Recognises the scene or throws SceneError(scene.file, key, condition that failed).

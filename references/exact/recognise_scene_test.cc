@@ -1,11 +1,11 @@
 // Scene recognition: what the exact method accepts, and the condition named when it refuses.
-#include "exact/recognise_scene.hpp"
+#include <beamimpact/exact/recognise_scene.hpp>
 
 #include <gtest/gtest.h>
 
-#include "scene/SceneError.hpp"
-#include "scene/scene_io.hpp"
-#include "testing/test_scenes.hpp"
+#include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/scene/scene_io.hpp>
+#include <beamimpact/testing/test_scenes.hpp>
 
 namespace beamimpact::exact {
 namespace {
@@ -28,17 +28,17 @@ TEST(RecogniseScene, PaperScenes) {
   EXPECT_EQ(s1.kind, ExactKind::kCoaxialRods);
   EXPECT_DOUBLE_EQ(s1.gap, 0.5);
   EXPECT_DOUBLE_EQ(s1.v0, 1.0);
-  EXPECT_EQ(s1.contact_kind, "end_to_end");
+  EXPECT_EQ(s1.contact_kind, ContactKind::kEndToEnd);
 
   const ExactProblem s2 = recognise_scene(load_scene(paper_scene("s2_transverse")));
   EXPECT_EQ(s2.kind, ExactKind::kRodOnBeam);
   EXPECT_NEAR(s2.gap, 0.1, 1e-15);
   EXPECT_NEAR(s2.x_c, 5.0, 1e-15);
   EXPECT_DOUBLE_EQ(s2.v0, 1.0);
-  EXPECT_EQ(s2.contact_kind, "node_to_node");
+  EXPECT_EQ(s2.contact_kind, ContactKind::kNodeToNode);
 
-  EXPECT_EQ(recognise_scene(load_scene(paper_scene("s3_surface_10"))).contact_kind, "node_to_surface");
-  EXPECT_EQ(recognise_scene(load_scene(paper_scene("s3_surface_20"))).contact_kind, "node_to_node");
+  EXPECT_EQ(recognise_scene(load_scene(paper_scene("s3_surface_10"))).contact_kind, ContactKind::kNodeToSurface);
+  EXPECT_EQ(recognise_scene(load_scene(paper_scene("s3_surface_20"))).contact_kind, ContactKind::kNodeToNode);
   EXPECT_NEAR(recognise_scene(load_scene(paper_scene("s3_surface_10"))).x_c, 4.5, 1e-15);
 
   expect_refused(load_scene(paper_scene("s4_oblique_45")), "contacts[0].friction", "friction is not zero");

@@ -1,11 +1,11 @@
-#include "ida/ContactKinematics.hpp"
+#include <beamimpact/ida/ContactKinematics.hpp>
 
 #include <algorithm>
 #include <cmath>
 
-#include "scene/SceneError.hpp"
+#include <beamimpact/scene/SceneError.hpp>
 
-namespace beamimpact {
+namespace beamimpact::ida {
 namespace {
 
 double dot(const Vec2& a, const Vec2& b) { return a[0] * b[0] + a[1] * b[1]; }
@@ -47,7 +47,7 @@ ModelContact::ModelContact(const Model& model, const Scene& scene, int contact_i
   const double s = dot(d, rel), h = dot(n0, rel);
   const double tol = 1e-9 * L;
   if (std::abs(h) <= tol && (s < -tol || s > L + tol)) {
-    kind_ = "end_to_end";
+    kind_ = ContactKind::kEndToEnd;
     const bool at_start = s < 0.0;
     n_ = at_start ? Vec2{-d[0], -d[1]} : d;
     end_node_ = at_start ? target_first_node_ : target_first_node_ + target.elements;
@@ -68,7 +68,7 @@ ModelContact::ModelContact(const Model& model, const Scene& scene, int contact_i
     g0_ = std::abs(h);
     s_ref_ = std::clamp(s, 0.0, L);
     const double r = s_ref_ / le_;
-    kind_ = std::abs(r - std::round(r)) < 1e-9 ? "node_to_node" : "node_to_surface";
+    kind_ = std::abs(r - std::round(r)) < 1e-9 ? ContactKind::kNodeToNode : ContactKind::kNodeToSurface;
   }
   striker_n_ = model.project(striker_node_, n_);
   striker_t_ = model.project(striker_node_, t_);
@@ -98,7 +98,7 @@ ContactFrame ModelContact::evaluate(const Eigen::VectorXd& U) const {
   f.g0 = g0_;
   f.n_terms = striker_n_;
   f.t_terms = striker_t_;
-  if (kind_ == "end_to_end") {
+  if (kind_ == ContactKind::kEndToEnd) {
     append_scaled(f.n_terms, end_n_, -1.0);
     append_scaled(f.t_terms, end_t_, -1.0);
     f.segment = end_node_ == target_first_node_ ? 0 : target_elements_ - 1;
@@ -119,8 +119,8 @@ ContactFrame ModelContact::evaluate(const Eigen::VectorXd& U) const {
 }
 
 std::array<int, 2> ModelContact::segment_nodes(const ContactFrame& f) const {
-  if (kind_ == "end_to_end") return {end_node_, end_node_};
+  if (kind_ == ContactKind::kEndToEnd) return {end_node_, end_node_};
   return {target_first_node_ + f.segment, target_first_node_ + f.segment + 1};
 }
 
-}  // namespace beamimpact
+}  // namespace beamimpact::ida

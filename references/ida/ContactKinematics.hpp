@@ -11,9 +11,10 @@
 
 #include <Eigen/Dense>
 
-#include "model/Model.hpp"
+#include <beamimpact/model/Model.hpp>
+#include <beamimpact/schema/output_schema.hpp>
 
-namespace beamimpact {
+namespace beamimpact::ida {
 
 /// @brief The contact pair's geometry at one displacement state.
 struct ContactFrame {
@@ -66,8 +67,8 @@ class ModelContact : public ContactKinematics {
   ModelContact(const Model& model, const Scene& scene, int contact_index);
   ContactFrame evaluate(const Eigen::VectorXd& U) const override;
 
-  /// @brief "end_to_end" | "node_to_node" | "node_to_surface".
-  const std::string& kind() const { return kind_; }
+  /// @brief End-to-end, node-to-node or node-to-surface (string forms in schema/output_schema.hpp).
+  ContactKind kind() const { return kind_; }
   /// @brief Global node id of the striker's contact node.
   int striker_node() const { return striker_node_; }
   /// @brief Global node ids of the target element's nodes for a frame (same node twice end-on).
@@ -80,7 +81,7 @@ class ModelContact : public ContactKinematics {
 
  private:
   const Model& model_;
-  std::string kind_;
+  ContactKind kind_ = ContactKind::kEndToEnd;
   int striker_node_ = 0;
   int target_first_node_ = 0, target_elements_ = 0;
   double le_ = 0.0;          ///< m, target element length
@@ -94,4 +95,4 @@ class ModelContact : public ContactKinematics {
   double coordinate(const Eigen::VectorXd& U) const;
 };
 
-}  // namespace beamimpact
+}  // namespace beamimpact::ida

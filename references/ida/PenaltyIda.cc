@@ -1,4 +1,4 @@
-#include "ida/PenaltyIda.hpp"
+#include <beamimpact/ida/PenaltyIda.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +14,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
-namespace beamimpact {
+namespace beamimpact::ida {
 namespace {
 
 using Vec = Eigen::VectorXd;
@@ -468,4 +468,4 @@ double PenaltyIda::dissipated() const {
 const std::vector<ContactEvent>& PenaltyIda::events() const { return impl_->events; }
 IdaCounters PenaltyIda::counters() const { return impl_->counters_now(); }
 
-}  // namespace beamimpact
+}  // namespace beamimpact::ida

@@ -16,11 +16,11 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
-#include "ida/ContactKinematics.hpp"
-#include "ida/penalty_law.hpp"
-#include "model/Model.hpp"
+#include <beamimpact/ida/ContactKinematics.hpp>
+#include <beamimpact/ida/penalty_law.hpp>
+#include <beamimpact/model/Model.hpp>
 
-namespace beamimpact {
+namespace beamimpact::ida {
 
 /// @brief Linear solver of the Newton iteration.
 enum class IdaLinearSolver { kDense, kKlu };
@@ -97,4 +97,4 @@ class PenaltyIda {
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace beamimpact
+}  // namespace beamimpact::ida

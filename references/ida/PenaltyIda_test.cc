@@ -1,10 +1,10 @@
-#include "ida/PenaltyIda.hpp"
+#include <beamimpact/ida/PenaltyIda.hpp>
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-namespace beamimpact {
+namespace beamimpact::ida {
 namespace {
 
 /// Two point masses on a line, m1 at rest position 0 moving at v0 toward m2 at gap g0.
@@ -92,4 +92,4 @@ TEST(PenaltyIda, KluMatchesDense) {
 }
 
 }  // namespace
-}  // namespace beamimpact
+}  // namespace beamimpact::ida

@@ -1,8 +1,8 @@
-#include "ida/ida_options.hpp"
+#include <beamimpact/ida/ida_options.hpp>
 
-#include "scene/TableReader.hpp"
+#include <beamimpact/scene/TableReader.hpp>
 
-namespace beamimpact {
+namespace beamimpact::ida {
 
 IdaOptions read_ida_options(const Scene& scene, double dt, double v_scale,
                             std::map<std::string, std::string>* assumed) {
@@ -57,4 +57,4 @@ IdaOptions read_ida_options(const Scene& scene, double dt, double v_scale,
   return o;
 }
 
-}  // namespace beamimpact
+}  // namespace beamimpact::ida

@@ -7,9 +7,9 @@
 #include <optional>
 #include <string>
 
-#include "scene/Scene.hpp"
+#include <beamimpact/scene/Scene.hpp>
 
-namespace beamimpact {
+namespace beamimpact::ida {
 
 /// @brief Settings read from [ida] (SI units). Unset optionals are derived per contact.
 struct IdaOptions {
@@ -35,4 +35,4 @@ struct IdaOptions {
 IdaOptions read_ida_options(const Scene& scene, double dt, double v_scale,
                             std::map<std::string, std::string>* assumed);
 
-}  // namespace beamimpact
+}  // namespace beamimpact::ida

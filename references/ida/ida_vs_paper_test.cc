@@ -14,11 +14,11 @@
 
 #include <gtest/gtest.h>
 
-#include "ida/run_ida.hpp"
-#include "testing/test_scenes.hpp"
-#include "run/run_paper.hpp"
+#include <beamimpact/ida/solve.hpp>
+#include <beamimpact/testing/test_scenes.hpp>
+#include <beamimpact/paper/solve.hpp>
 
-namespace beamimpact {
+namespace beamimpact::ida {
 namespace {
 
 #ifdef BEAMIMPACT_IDA_FULL
@@ -41,7 +41,7 @@ void PrintTo(const Case& c, std::ostream* os) { *os << c.scene; }
 /// Largest |a - b| over the striker node's displacement (all rows) and the struck point's
 /// displacement (rows where both methods are in contact: when open, the paper re-locates the
 /// struck point on the deformed chord, a definition that differs from IDA's reference normal).
-double displacement_difference(const RunResult& p, const RunResult& i) {
+double displacement_difference(const SimulationResult& p, const SimulationResult& i) {
   const std::size_t n = std::min(p.history.size(), i.history.size());
   double d = 0.0;
   for (std::size_t k = 0; k < n; ++k) {
@@ -74,7 +74,7 @@ TEST_P(IdaVsPaper, AgreeAndConvergeAsPaperDtFalls) {
   // IDA: restitution 0.001 (the plastic closure's limit) and kn = 1e4 EA/le; rtol 1e-8.
   std::vector<std::string> io = common;
   io.insert(io.end(), {"ida.restitution=0.001", "ida.kn_factor=1e4"});
-  const RunResult ida = run_ida(testing::load_paper_scene(c.scene, io));
+  const SimulationResult ida = ida::solve(testing::load_paper_scene(c.scene, io));
   const ContactSummary& ci = ida.contacts.at(0);
   ASSERT_FALSE(ci.intervals.empty());
   const double period = ci.extra.at("contact_period").get<double>();
@@ -88,7 +88,7 @@ TEST_P(IdaVsPaper, AgreeAndConvergeAsPaperDtFalls) {
     std::vector<std::string> po = common;
     po.push_back(key + std::to_string(f0 / static_cast<double>(every)));
     po.push_back("time.output_every=" + std::to_string(every));
-    const RunResult paper = run_paper(testing::load_paper_scene(c.scene, po));
+    const SimulationResult paper = paper::solve(testing::load_paper_scene(c.scene, po));
     const ContactSummary& cp = paper.contacts.at(0);
     ASSERT_FALSE(cp.intervals.empty());
     const double dt = paper.dt;
@@ -138,4 +138,4 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<Case>& i) { return std::string(i.param.scene); });
 
 }  // namespace
-}  // namespace beamimpact
+}  // namespace beamimpact::ida

@@ -1,9 +1,9 @@
-#include "ida/penalty_law.hpp"
+#include <beamimpact/ida/penalty_law.hpp>
 
 #include <cmath>
 #include <stdexcept>
 
-namespace beamimpact {
+namespace beamimpact::ida {
 
 double PenaltyLaw::slip_sign(double vt) const { return vt / std::sqrt(vt * vt + v_reg * v_reg); }
 
@@ -41,4 +41,4 @@ double damping_ratio_for_restitution(double e) {
   return 0.5 * (lo + hi);
 }
 
-}  // namespace beamimpact
+}  // namespace beamimpact::ida

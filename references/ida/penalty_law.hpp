@@ -5,7 +5,7 @@
 /// a regularised Coulomb law in the tangential direction; plus the map between the dashpot's
 /// damping ratio and the restitution of an isolated two-mass impact under that law.
 
-namespace beamimpact {
+namespace beamimpact::ida {
 
 /// @brief Penalty parameters of one contact (SI).
 struct PenaltyLaw {
@@ -33,4 +33,4 @@ double restitution_for_damping_ratio(double zeta);
 /// @brief Inverse of restitution_for_damping_ratio for e in (0, 1] (bisection to 1e-14).
 double damping_ratio_for_restitution(double e);
 
-}  // namespace beamimpact
+}  // namespace beamimpact::ida

@@ -1,10 +1,10 @@
-#include "ida/penalty_law.hpp"
+#include <beamimpact/ida/penalty_law.hpp>
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-namespace beamimpact {
+namespace beamimpact::ida {
 namespace {
 
 /// Independent check: integrate d'' = -(d + 2 zeta d') (unit frequency, force clipped at zero)
@@ -64,4 +64,4 @@ TEST(PenaltyLaw, FrictionBoundedAndDissipative) {
 }
 
 }  // namespace
-}  // namespace beamimpact
+}  // namespace beamimpact::ida

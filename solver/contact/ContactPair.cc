@@ -1,11 +1,11 @@
-#include "contact/ContactPair.hpp"
+#include <beamimpact/contact/ContactPair.hpp>
 
 #include <algorithm>
 #include <cmath>
 
-#include "scene/SceneError.hpp"
+#include <beamimpact/scene/SceneError.hpp>
 
-namespace beamimpact {
+namespace beamimpact::paper {
 namespace {
 
 double dot(const Vec2& a, const Vec2& b) { return a[0] * b[0] + a[1] * b[1]; }
@@ -15,14 +15,6 @@ Vec2 sub(const Vec2& a, const Vec2& b) { return {a[0] - b[0], a[1] - b[1]}; }
 constexpr double kSnap = 1e-9;
 
 }  // namespace
-
-const char* to_string(ContactKind k) {
-  switch (k) {
-    case ContactKind::kEndToEnd: return "end_to_end";
-    case ContactKind::kNodeToNode: return "node_to_node";
-    default: return "node_to_surface";
-  }
-}
 
 ContactPair::ContactPair(const Model& model, const Scene& scene, int index, SurfaceInterpolation surface)
     : model_(model), surface_(surface) {
@@ -156,4 +148,4 @@ Vec2 ContactPair::target_vector(const Eigen::VectorXd& U) const {
   return {un * n_[0] + ut * t_[0], un * n_[1] + ut * t_[1]};
 }
 
-}  // namespace beamimpact
+}  // namespace beamimpact::paper

@@ -8,19 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "model/Model.hpp"
+#include <beamimpact/model/Model.hpp>
+#include <beamimpact/schema/output_schema.hpp>
 
-namespace beamimpact {
-
-/// @brief Kind of contact found at t = 0.
-enum class ContactKind {
-  kEndToEnd,       ///< collinear bodies, the striker node against the target's end node
-  kNodeToNode,     ///< the striker node faces a node of the target's surface
-  kNodeToSurface,  ///< the striker node faces a point inside a target element (weights xi1, xi2)
-};
-
-/// @brief "end_to_end" | "node_to_node" | "node_to_surface".
-const char* to_string(ContactKind k);
+namespace beamimpact::paper {
 
 /// @brief How the target's displacement at the struck point is interpolated.
 enum class SurfaceInterpolation {
@@ -81,4 +72,4 @@ class ContactPair {
   std::vector<DofTerm> gn_, gt_;
 };
 
-}  // namespace beamimpact
+}  // namespace beamimpact::paper

@@ -1,8 +1,8 @@
-#include "contact/ContactSolver.hpp"
+#include <beamimpact/contact/ContactSolver.hpp>
 
 #include <cmath>
 
-namespace beamimpact {
+namespace beamimpact::paper {
 
 ContactSolver::ContactSolver(std::vector<ContactPair>& pairs, std::vector<double> mu, bool friction,
                              int n, double gap_tol, ApplyH apply_H)
@@ -119,4 +119,4 @@ void ContactSolver::add_forces(Eigen::VectorXd& f) const {
   }
 }
 
-}  // namespace beamimpact
+}  // namespace beamimpact::paper

@@ -10,10 +10,10 @@
 #include <functional>
 #include <vector>
 
-#include "contact/ContactPair.hpp"
-#include "io/RunResult.hpp"
+#include <beamimpact/contact/ContactPair.hpp>
+#include <beamimpact/schema/output_schema.hpp>
 
-namespace beamimpact {
+namespace beamimpact::paper {
 
 /// @brief Per-contact result of one step.
 struct ContactForce {
@@ -59,4 +59,4 @@ class ContactSolver {
   bool any_ = false;
 };
 
-}  // namespace beamimpact
+}  // namespace beamimpact::paper

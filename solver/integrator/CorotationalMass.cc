@@ -1,8 +1,8 @@
-#include "integrator/CorotationalMass.hpp"
+#include <beamimpact/integrator/CorotationalMass.hpp>
 
-#include "model/frame_element.hpp"
+#include <beamimpact/model/frame_element.hpp>
 
-namespace beamimpact {
+namespace beamimpact::paper {
 
 CorotationalMass::CorotationalMass(const Model& model, const InternalForce& fint)
     : model_(model), fint_(fint), dir_(fint.corotational_elements().size()),
@@ -63,4 +63,4 @@ double CorotationalMass::momentum(int b, int c, const Eigen::VectorXd& V) const 
   return p;
 }
 
-}  // namespace beamimpact
+}  // namespace beamimpact::paper

@@ -5,9 +5,9 @@
 /// sparsity pattern. Only the corotational elements are recomputed; a lumped mass never needs this
 /// (it is the same in every frame).
 
-#include "integrator/InternalForce.hpp"
+#include <beamimpact/integrator/InternalForce.hpp>
 
-namespace beamimpact {
+namespace beamimpact::paper {
 
 /// @brief M(U) = M of the other elements + sum of the rotating elements' rotated mass.
 class CorotationalMass {
@@ -29,4 +29,4 @@ class CorotationalMass {
   std::vector<char> rotating_body_;
 };
 
-}  // namespace beamimpact
+}  // namespace beamimpact::paper

@@ -1,14 +1,14 @@
 // M_A(t) of a rotating body against an independent construction: the mass of a model whose body
 // is drawn already rotated.
-#include "integrator/CorotationalMass.hpp"
+#include <beamimpact/integrator/CorotationalMass.hpp>
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "testing/test_scenes.hpp"
+#include <beamimpact/testing/test_scenes.hpp>
 
-namespace beamimpact {
+namespace beamimpact::paper {
 namespace {
 
 using testing::soft_body;
@@ -48,4 +48,4 @@ TEST(CorotationalMass, RigidlyRotatedBodyHasTheMassOfTheRotatedModel) {
 }
 
 }  // namespace
-}  // namespace beamimpact
+}  // namespace beamimpact::paper

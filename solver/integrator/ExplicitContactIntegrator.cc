@@ -1,8 +1,8 @@
-#include "integrator/ExplicitContactIntegrator.hpp"
+#include <beamimpact/integrator/ExplicitContactIntegrator.hpp>
 
 #include <algorithm>
 
-namespace beamimpact {
+namespace beamimpact::paper {
 namespace {
 
 std::vector<ContactPair> make_pairs(const Model& model, const Scene& scene, SurfaceInterpolation surface) {
@@ -45,6 +45,7 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
   Vbar_ = V_ = model.initial_velocity();  // no contact force at t = 0: Vbar^0 = V^0
   fint_U_ = fint_next_ = Eigen::VectorXd::Zero(n);
   fint_.apply(U_, fint_U_);
+  solve_contacts();  // step 0 complete
 }
 
 void ExplicitContactIntegrator::subtract_damping_force(const Eigen::VectorXd& v, Eigen::VectorXd& f) {
@@ -135,4 +136,4 @@ double ExplicitContactIntegrator::kinetic_energy() const {
   return 0.5 * V_.dot(mass() * V_);
 }
 
-}  // namespace beamimpact
+}  // namespace beamimpact::paper

@@ -14,34 +14,41 @@
 
 #include <memory>
 
-#include "contact/ContactSolver.hpp"
-#include "integrator/CorotationalMass.hpp"
-#include "integrator/InternalForce.hpp"
-#include "model/MassSolver.hpp"
-#include "run/Effects.hpp"
+#include <beamimpact/contact/ContactSolver.hpp>
+#include <beamimpact/integrator/CorotationalMass.hpp>
+#include <beamimpact/integrator/InternalForce.hpp>
+#include <beamimpact/model/MassSolver.hpp>
+#include <beamimpact/model/Effects.hpp>
 
-namespace beamimpact {
+namespace beamimpact::paper {
 
-/// @brief One run of the paper's integrator on a model. Usage per step p:
-/// solve_contacts() (forces of step p, physical V^p), read the state, then advance().
+/// @brief One run of the paper's integrator on a model. The state of step p is always complete:
+/// U^p, Vbar^p, the contact forces R^p, tau^p that act on U^{p+1}, and the physical V^p. The
+/// constructor leaves step 0 complete; each step() moves to the next complete step.
 class ExplicitContactIntegrator {
  public:
-  /// @brief scene: contacts and friction; effects: which code paths run; dt in s; surface: how
-  /// the struck point of a surface contact is interpolated (the paper's linear weights by default).
+  /// @brief Sets up step 0 (zero displacement, the scene's velocities) and solves its contacts.
+  /// @param model the beam model (M, K, C)
+  /// @param scene contacts and friction coefficients
+  /// @param effects which code paths run (damping, friction, corotational bodies)
+  /// @param dt time step (s)
+  /// @param surface how the struck point of a surface contact is interpolated (the paper's
+  ///        linear weights by default)
   ExplicitContactIntegrator(const Model& model, const Scene& scene, const Effects& effects, double dt,
                             SurfaceInterpolation surface = SurfaceInterpolation::kLinear);
 
-  /// @brief Predicts U^{p+1} without contact, solves the contact forces of step p and the physical
-  /// velocity V^p, and adds this step's contact work to the dissipated energy.
-  void solve_contacts();
-  /// @brief Moves from p to p+1 with the forces of the last solve_contacts().
-  void advance();
+  /// @brief Moves from step p to p+1 with the forces of step p (Eq. 3-5), then solves the
+  /// contact forces of step p+1 and V^{p+1}. dissipated() then includes the contact work of p+1.
+  void step() {
+    advance();
+    solve_contacts();
+  }
 
   /// @brief Current time t_p (s) and step p.
   double time() const { return static_cast<double>(p_) * dt_; }
-  long step() const { return p_; }
+  long step_index() const { return p_; }
   double dt() const { return dt_; }
-  /// @brief U^p and physical V^p (valid after solve_contacts()).
+  /// @brief U^p and physical V^p.
   const Eigen::VectorXd& U() const { return U_; }
   const Eigen::VectorXd& V() const { return V_; }
   /// @brief Half-step velocity Vbar^p (for the discrete energy identity).
@@ -65,6 +72,11 @@ class ExplicitContactIntegrator {
   const Model& model() const { return model_; }
 
  private:
+  /// Predicts U^{p+1} without contact, solves the contact forces of step p and the physical
+  /// velocity V^p, and adds this step's contact work to the dissipated energy.
+  void solve_contacts();
+  /// Moves from p to p+1 with the forces of the last solve_contacts().
+  void advance();
   void apply_Minv(const Eigen::VectorXd& in, Eigen::VectorXd& out) const { minv_.apply(in, out); }
   void apply_H(const Eigen::VectorXd& f, Eigen::VectorXd& out);
   void subtract_damping_force(const Eigen::VectorXd& v, Eigen::VectorXd& f);
@@ -84,4 +96,4 @@ class ExplicitContactIntegrator {
   double dissipated_ = 0.0;
 };
 
-}  // namespace beamimpact
+}  // namespace beamimpact::paper

@@ -1,8 +1,8 @@
-#include "integrator/InternalForce.hpp"
+#include <beamimpact/integrator/InternalForce.hpp>
 
 #include <cmath>
 
-namespace beamimpact {
+namespace beamimpact::paper {
 
 InternalForce::InternalForce(const Model& model, const std::vector<bool>& corotational)
     : model_(model), K_(&model.K()) {
@@ -90,4 +90,4 @@ double InternalForce::strain_energy(const Eigen::VectorXd& U) const {
   return e;
 }
 
-}  // namespace beamimpact
+}  // namespace beamimpact::paper

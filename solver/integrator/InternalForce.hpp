@@ -6,9 +6,9 @@
 
 #include <vector>
 
-#include "model/Model.hpp"
+#include <beamimpact/model/Model.hpp>
 
-namespace beamimpact {
+namespace beamimpact::paper {
 
 /// @brief Internal (elastic) force of the model.
 class InternalForce {
@@ -40,4 +40,4 @@ class InternalForce {
   std::vector<int> corot_elements_;
 };
 
-}  // namespace beamimpact
+}  // namespace beamimpact::paper

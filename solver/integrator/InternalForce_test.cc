@@ -1,13 +1,13 @@
 // The corotational element against the linear one (small motion) and against rigid motion (large).
-#include "integrator/InternalForce.hpp"
+#include <beamimpact/integrator/InternalForce.hpp>
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "testing/test_scenes.hpp"
+#include <beamimpact/testing/test_scenes.hpp>
 
-namespace beamimpact {
+namespace beamimpact::paper {
 namespace {
 
 using testing::soft_body;
@@ -61,4 +61,4 @@ TEST_P(RigidRotation, CorotationalIsForceFree) {
 INSTANTIATE_TEST_SUITE_P(Angles, RigidRotation, ::testing::Values(40.0, 179.0, 181.0, 250.0, -200.0, 725.0));
 
 }  // namespace
-}  // namespace beamimpact
+}  // namespace beamimpact::paper

@@ -1,4 +1,4 @@
-#include "model/MassSolver.hpp"
+#include <beamimpact/model/MassSolver.hpp>
 
 #include <stdexcept>
 

@@ -7,7 +7,7 @@
 
 #include <Eigen/SparseCholesky>
 
-#include "model/Model.hpp"
+#include <beamimpact/model/Model.hpp>
 
 namespace beamimpact {
 

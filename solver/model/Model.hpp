@@ -14,7 +14,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
-#include "scene/Scene.hpp"
+#include <beamimpact/scene/Scene.hpp>
 
 namespace beamimpact {
 
@@ -112,8 +112,5 @@ class Model {
   SparseMatrix K_, M_;
   Eigen::VectorXd m_diag_;
 };
-
-/// @brief True when every body lies on one line with velocities along it (rod layout possible).
-bool scene_is_collinear(const Scene& scene, Vec2* axis = nullptr);
 
 }  // namespace beamimpact

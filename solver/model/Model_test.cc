@@ -1,14 +1,14 @@
 // The assembled model against beam and rod theory: natural frequencies converge to the exact
 // ones at the order the discretisation predicts.
-#include "model/Model.hpp"
+#include <beamimpact/model/Model.hpp>
 
 #include <cmath>
 
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
-#include "scene/SceneError.hpp"
-#include "testing/test_scenes.hpp"
+#include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/testing/test_scenes.hpp>
 
 namespace beamimpact {
 namespace {

@@ -1,4 +1,4 @@
-#include "model/critical_dt.hpp"
+#include <beamimpact/model/critical_dt.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
 
-#include "model/MassSolver.hpp"
+#include <beamimpact/model/MassSolver.hpp>
 
 namespace beamimpact {
 namespace {

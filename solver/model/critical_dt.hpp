@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "model/Model.hpp"
+#include <beamimpact/model/Model.hpp>
 
 namespace beamimpact {
 

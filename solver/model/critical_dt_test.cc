@@ -1,13 +1,13 @@
 // The critical step from Lanczos on the sparse operator, against closed forms and a dense solve.
-#include "model/critical_dt.hpp"
+#include <beamimpact/model/critical_dt.hpp>
 
 #include <cmath>
 
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
-#include "scene/scene_io.hpp"
-#include "testing/test_scenes.hpp"
+#include <beamimpact/scene/scene_io.hpp>
+#include <beamimpact/testing/test_scenes.hpp>
 
 namespace beamimpact {
 namespace {

@@ -1,4 +1,4 @@
-#include "model/frame_element.hpp"
+#include <beamimpact/model/frame_element.hpp>
 
 namespace beamimpact {
 

@@ -6,7 +6,7 @@
 
 #include <Eigen/Dense>
 
-#include "scene/Scene.hpp"
+#include <beamimpact/scene/Scene.hpp>
 
 namespace beamimpact {
 

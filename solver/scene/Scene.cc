@@ -1,4 +1,4 @@
-#include "scene/Scene.hpp"
+#include <beamimpact/scene/Scene.hpp>
 
 #include <cmath>
 
@@ -10,6 +10,10 @@ Vec2 Body::node_position(int i) const {
   const double s = static_cast<double>(i) / elements;
   return {start[0] + s * (end[0] - start[0]), start[1] + s * (end[1] - start[1])};
 }
+
+const char* to_string(MassKind m) { return m == MassKind::kLumped ? "lumped" : "consistent"; }
+const char* to_string(RotaryInertia r) { return r == RotaryInertia::kHrz ? "hrz" : "section"; }
+const char* to_string(Kinematics k) { return k == Kinematics::kLinear ? "linear" : "corotational"; }
 
 int Scene::body_index(const std::string& n) const {
   for (std::size_t i = 0; i < bodies.size(); ++i)

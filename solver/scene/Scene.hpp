@@ -29,6 +29,12 @@ enum class RotaryInertia { kHrz, kSection };
 /// @brief Linear (fixed global matrices) or corotational (element frames rebuilt every step).
 enum class Kinematics { kLinear, kCorotational };
 
+/// @brief The string form of a model choice, as written in scene files and summary.json
+/// ("lumped", "consistent", "hrz", "section", "linear", "corotational").
+const char* to_string(MassKind m);
+const char* to_string(RotaryInertia r);
+const char* to_string(Kinematics k);
+
 /// @brief Model choices: [model] table.
 struct ModelSettings {
   MassKind mass = MassKind::kLumped;

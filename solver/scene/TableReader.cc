@@ -1,4 +1,4 @@
-#include "scene/TableReader.hpp"
+#include <beamimpact/scene/TableReader.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -12,8 +12,8 @@
 
 #include <toml++/toml.h>
 
-#include "scene/Scene.hpp"
-#include "scene/SceneError.hpp"
+#include <beamimpact/scene/Scene.hpp>
+#include <beamimpact/scene/SceneError.hpp>
 
 namespace beamimpact {
 

@@ -1,13 +1,13 @@
-#include "scene/scene_io.hpp"
+#include <beamimpact/scene/scene_io.hpp>
 
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
-#include "io/sha256.hpp"
-#include "model/Model.hpp"
-#include "scene/SceneError.hpp"
-#include "scene/TableReader.hpp"
+#include <beamimpact/util/sha256.hpp>
+#include <beamimpact/scene/collinear.hpp>
+#include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/scene/TableReader.hpp>
 
 namespace beamimpact {
 namespace {
@@ -159,13 +159,23 @@ void read_time(TableReader& r, TimeSettings& t) {
   if (t.dt && *t.dt > t.end) r.fail("dt", "expected a step no longer than time.end");
 }
 
+/// Reads a choice whose string forms are the enum's to_string() (the one owner of them).
+template <typename Enum>
+Enum read_choice(TableReader& r, const std::string& key, Enum fallback, std::initializer_list<Enum> all) {
+  std::vector<std::string> names;
+  for (Enum e : all) names.emplace_back(to_string(e));
+  const std::string got = r.choice_or(key, to_string(fallback), names);
+  for (Enum e : all)
+    if (got == to_string(e)) return e;
+  return fallback;
+}
+
 void read_model(TableReader& r, ModelSettings& m) {
-  m.mass = r.choice_or("mass", "lumped", {"lumped", "consistent"}) == "lumped" ? MassKind::kLumped
-                                                                                : MassKind::kConsistent;
-  m.rotary_inertia = r.choice_or("rotary_inertia", "hrz", {"hrz", "section"}) == "hrz"
-                         ? RotaryInertia::kHrz : RotaryInertia::kSection;
-  m.kinematics = r.choice_or("kinematics", "linear", {"linear", "corotational"}) == "linear"
-                     ? Kinematics::kLinear : Kinematics::kCorotational;
+  m.mass = read_choice(r, "mass", MassKind::kLumped, {MassKind::kLumped, MassKind::kConsistent});
+  m.rotary_inertia =
+      read_choice(r, "rotary_inertia", RotaryInertia::kHrz, {RotaryInertia::kHrz, RotaryInertia::kSection});
+  m.kinematics =
+      read_choice(r, "kinematics", Kinematics::kLinear, {Kinematics::kLinear, Kinematics::kCorotational});
   m.rayleigh_mass = r.number_or("rayleigh_mass", 0.0, "a number >= 0 (1/s)");
   m.rayleigh_stiffness = r.number_or("rayleigh_stiffness", 0.0, "a number >= 0 (s)");
   if (m.rayleigh_mass < 0) r.fail("rayleigh_mass", "expected a number >= 0 (1/s)");

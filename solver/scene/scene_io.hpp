@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/Scene.hpp"
+#include <beamimpact/scene/Scene.hpp>
 
 namespace beamimpact {
 

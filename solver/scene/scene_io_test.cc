@@ -1,13 +1,13 @@
 // Scene files: the shipped scenes load, --set overrides work, and every kind of bad input gives
 // a SceneError naming the file, the key and what was expected.
-#include "scene/scene_io.hpp"
+#include <beamimpact/scene/scene_io.hpp>
 
 #include <fstream>
 
 #include <gtest/gtest.h>
 
-#include "scene/SceneError.hpp"
-#include "testing/test_scenes.hpp"
+#include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/testing/test_scenes.hpp>
 
 namespace beamimpact {
 namespace {

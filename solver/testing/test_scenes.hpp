@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "scene/Scene.hpp"
-#include "scene/scene_io.hpp"
+#include <beamimpact/scene/Scene.hpp>
+#include <beamimpact/scene/scene_io.hpp>
 
 namespace beamimpact::testing {
 

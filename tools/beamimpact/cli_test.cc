@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
 
-#include "testing/test_scenes.hpp"
+#include <beamimpact/testing/test_scenes.hpp>
 
 namespace {
 

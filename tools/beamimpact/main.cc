@@ -6,23 +6,21 @@
 
 #include <CLI/CLI.hpp>
 
-#include "beamimpact/run_command.hpp"
-#include "beamimpact/version.hpp"
-#include "io/CommandExit.hpp"
-#include "scene/SceneError.hpp"
-#ifdef BEAMIMPACT_HAVE_verification
-#include "verification/commands.hpp"
-#endif
+#include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/version.hpp>
+
+#include "CommandExit.hpp"
+#include "command_run.hpp"
+#include "command_verification.hpp"
 
 int main(int argc, char** argv) {
   using namespace beamimpact;
   CLI::App app{"beamimpact: dynamic beam-to-beam collision (Pu & Chi 2011) with independent references"};
   app.set_version_flag("--version", kVersion);
   app.require_subcommand(1);
-  add_run_command(app);
-#ifdef BEAMIMPACT_HAVE_verification
+  add_command_run(app);
+  add_command_methods(app);        // methods, schema
   add_verification_commands(app);  // compare, verify, sweep
-#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

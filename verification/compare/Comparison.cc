@@ -1,8 +1,8 @@
-#include "verification/compare/Comparison.hpp"
+#include <beamimpact/verification/compare/Comparison.hpp>
 
 #include <fmt/format.h>
 
-namespace beamimpact {
+namespace beamimpact::verification {
 
 const Norm* Comparison::find(const std::string& name) const {
   for (const auto& n : norms)
@@ -53,4 +53,4 @@ std::string Comparison::to_text() const {
   return s;
 }
 
-}  // namespace beamimpact
+}  // namespace beamimpact::verification

@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace beamimpact {
+namespace beamimpact::verification {
 
 /// @brief One error measure between a run (a) and its reference (b).
 struct Norm {
@@ -40,4 +40,4 @@ struct Comparison {
   std::string to_text() const;
 };
 
-}  // namespace beamimpact
+}  // namespace beamimpact::verification

@@ -1,14 +1,14 @@
-#include "verification/compare/compare_runs.hpp"
+#include <beamimpact/verification/compare/compare_runs.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
 
-#include "scene/SceneError.hpp"
-#include "verification/compare/series.hpp"
+#include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/verification/compare/series.hpp>
 
-namespace beamimpact {
+namespace beamimpact::verification {
 namespace {
 
 /// Everything both histories are resampled onto.
@@ -22,13 +22,13 @@ Norm unavailable(std::string name, std::string unit, std::string definition, std
 }
 
 /// Columns of one quantity (e.g. {"ua_x", "ua_y"}) of contact k; empty optional when absent.
-std::optional<std::string> missing_column(const RunHistory& h, const std::vector<std::string>& cols) {
+std::optional<std::string> missing_column(const StoredRun& h, const std::vector<std::string>& cols) {
   for (const auto& c : cols)
     if (!h.has(c)) return c;
   return std::nullopt;
 }
 
-Series resample(const RunHistory& h, const std::vector<std::string>& cols, const Grid& g) {
+Series resample(const StoredRun& h, const std::vector<std::string>& cols, const Grid& g) {
   Series s;
   for (const auto& c : cols) s.push_back(interpolate(h.t(), h.column(c), g.t));
   return s;
@@ -52,12 +52,12 @@ void add_series_norms(Comparison& cmp, const std::string& name, const Series& a,
                                        fmt::format("reference is identically zero (absolute max = {:.3e})", ndi)));
 }
 
-void add_vector_norms(Comparison& cmp, const RunHistory& a, const RunHistory& b, const Grid& g,
+void add_vector_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, const Grid& g,
                       const std::string& base, int k, const std::string& what) {
-  const std::vector<std::string> cols = {RunHistory::contact_column(base + "_x", k),
-                                         RunHistory::contact_column(base + "_y", k)};
-  const std::string name = RunHistory::contact_column(base, k);
-  for (const RunHistory* h : {&a, &b}) {
+  const std::vector<std::string> cols = {StoredRun::contact_column(base + "_x", k),
+                                         StoredRun::contact_column(base + "_y", k)};
+  const std::string name = StoredRun::contact_column(base, k);
+  for (const StoredRun* h : {&a, &b}) {
     if (auto m = missing_column(*h, cols)) {
       const std::string why = h->label() + "/history.csv has no column '" + *m + "'";
       cmp.norms.push_back(unavailable(name + ".rel_l2", "1", "relative L2 error of " + what, why));
@@ -70,7 +70,7 @@ void add_vector_norms(Comparison& cmp, const RunHistory& a, const RunHistory& b,
 }
 
 /// The summary.json entry of contact k (1-based), or nullptr.
-const nlohmann::json* summary_contact(const RunHistory& h, int k) {
+const nlohmann::json* summary_contact(const StoredRun& h, int k) {
   const auto& s = h.summary();
   if (!s.contains("contacts") || !s.at("contacts").is_array() || s.at("contacts").size() < static_cast<std::size_t>(k))
     return nullptr;
@@ -78,7 +78,7 @@ const nlohmann::json* summary_contact(const RunHistory& h, int k) {
 }
 
 /// Contact intervals from summary.json (the method's own, event-accurate) or else from the rows.
-std::vector<Interval> intervals_of(const RunHistory& h, const nlohmann::json* sc, const std::vector<double>& R,
+std::vector<Interval> intervals_of(const StoredRun& h, const nlohmann::json* sc, const std::vector<double>& R,
                                    double threshold, double merge_gap) {
   if (sc && sc->contains("intervals")) {
     std::vector<Interval> out;
@@ -104,9 +104,9 @@ Norm relative_scalar(std::string name, double a, double b, std::string definitio
   return n;
 }
 
-void add_contact_norms(Comparison& cmp, const RunHistory& a, const RunHistory& b, const Grid& g, int k,
+void add_contact_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, const Grid& g, int k,
                        double threshold_rel) {
-  const std::string R = RunHistory::contact_column("R", k);
+  const std::string R = StoredRun::contact_column("R", k);
   const std::string sfx = k <= 1 ? "" : "_" + std::to_string(k);
   const auto& Ra = a.column(R);
   const auto& Rb = b.column(R);
@@ -117,7 +117,7 @@ void add_contact_norms(Comparison& cmp, const RunHistory& a, const RunHistory& b
                    "the contact force " + R + "(t)");
   // An optional cumulative column `impulse` (N s) is the method's own running impulse: adaptive
   // methods integrate between the rows what the rows cannot show (closure spikes).
-  const std::string J = RunHistory::contact_column("impulse", k);
+  const std::string J = StoredRun::contact_column("impulse", k);
   const auto Ia = a.has(J) ? a.column(J) : running_integral(a.t(), Ra);
   const auto Ib = b.has(J) ? b.column(J) : running_integral(b.t(), Rb);
   add_series_norms(cmp, "I" + sfx, {interpolate(a.t(), Ia, g.t)}, {interpolate(b.t(), Ib, g.t)}, g,
@@ -171,7 +171,7 @@ void add_contact_norms(Comparison& cmp, const RunHistory& a, const RunHistory& b
   add_vector_norms(cmp, a, b, g, "vb", k, "the struck point velocity vb (m/s)");
 }
 
-void add_final_velocity(Comparison& cmp, const RunHistory& a, const RunHistory& b) {
+void add_final_velocity(Comparison& cmp, const StoredRun& a, const StoredRun& b) {
   const std::string def =
       "max over bodies |v_a - v_b| / max over bodies |v_b|, v = centre-of-mass velocity at the end "
       "(summary.json bodies.*.final_velocity, m/s)";
@@ -204,15 +204,15 @@ void add_final_velocity(Comparison& cmp, const RunHistory& a, const RunHistory& 
   cmp.norms.push_back(n);
 }
 
-void add_energy(Comparison& cmp, const RunHistory& a, const RunHistory& b) {
+void add_energy(Comparison& cmp, const StoredRun& a, const StoredRun& b) {
   const std::string def = "|E_a(t1) - E_b(t1)| / E_b(first row), E = kinetic + strain (J), t1 = end of the overlap";
-  for (const RunHistory* h : {&a, &b}) {
+  for (const StoredRun* h : {&a, &b}) {
     if (auto m = missing_column(*h, {"kinetic", "strain"})) {
       cmp.norms.push_back(unavailable("energy_final", "1", def, h->label() + "/history.csv has no column '" + *m + "'"));
       return;
     }
   }
-  auto energy_at = [](const RunHistory& h, double t) {
+  auto energy_at = [](const StoredRun& h, double t) {
     const auto k = interpolate(h.t(), h.column("kinetic"), {t});
     const auto s = interpolate(h.t(), h.column("strain"), {t});
     return k[0] + s[0];
@@ -247,7 +247,7 @@ bool known_norm(const std::string& name) {
   return series && (kind == "rel_l2" || kind == "rel_linf");
 }
 
-Comparison compare_runs(const RunHistory& a, const RunHistory& b, const CompareOptions& options) {
+Comparison compare_runs(const StoredRun& a, const StoredRun& b, const CompareOptions& options) {
   Comparison cmp;
   cmp.run = a.label();
   cmp.reference = b.label();
@@ -259,7 +259,7 @@ Comparison compare_runs(const RunHistory& a, const RunHistory& b, const CompareO
                                                  a.t().front(), a.t().back()));
   }
   const double ha = a.output_step(), hb = b.output_step();
-  for (const RunHistory* h : {&a, &b})
+  for (const StoredRun* h : {&a, &b})
     if (!(h->output_step() > 0.0)) throw SceneError(h->label(), "t", "expected at least two rows in history.csv");
   const double fine = std::min(ha, hb), coarse = std::max(ha, hb);
   cmp.grid_step = options.grid_step > 0.0 ? options.grid_step : fine;
@@ -281,4 +281,4 @@ Comparison compare_runs(const RunHistory& a, const RunHistory& b, const CompareO
   return cmp;
 }
 
-}  // namespace beamimpact
+}  // namespace beamimpact::verification

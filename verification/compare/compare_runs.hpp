@@ -2,10 +2,10 @@
 /// @file compare_runs.hpp
 /// @brief Error norms between a run and a reference run (`beamimpact compare`).
 
-#include "verification/compare/Comparison.hpp"
-#include "verification/compare/RunHistory.hpp"
+#include <beamimpact/verification/compare/Comparison.hpp>
+#include <beamimpact/verification/compare/StoredRun.hpp>
 
-namespace beamimpact {
+namespace beamimpact::verification {
 
 /// @brief Settings of a comparison; zero means "derive from the histories" (written in the output).
 struct CompareOptions {
@@ -21,10 +21,10 @@ struct CompareOptions {
 /// number of impacts, peak force excluding closure samples, final velocities, final energy).
 /// Both histories are resampled onto one uniform grid over their common time span.
 /// Throws SceneError when the histories do not overlap in time.
-Comparison compare_runs(const RunHistory& a, const RunHistory& b, const CompareOptions& options = {});
+Comparison compare_runs(const StoredRun& a, const StoredRun& b, const CompareOptions& options = {});
 
 /// @brief True when compare_runs produces a norm of this name for some number of contacts
 /// ("R.rel_l2", "impulse_2", "final_velocity", ...): lets a matrix reject a misspelt metric.
 bool known_norm(const std::string& name);
 
-}  // namespace beamimpact
+}  // namespace beamimpact::verification

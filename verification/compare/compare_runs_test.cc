@@ -1,11 +1,11 @@
 // Norms of compare_runs on synthetic histories whose errors are known in closed form.
-#include "verification/compare/compare_runs.hpp"
+#include <beamimpact/verification/compare/compare_runs.hpp>
 
 #include <gtest/gtest.h>
 
-#include "verification/compare/test_histories.hpp"
+#include <beamimpact/verification/compare/test_histories.hpp>
 
-namespace beamimpact {
+namespace beamimpact::verification {
 namespace {
 
 using testing::synthetic;
@@ -135,9 +135,9 @@ TEST(CompareRuns, NoOverlapIsAnError) {
 }
 
 }  // namespace
-}  // namespace beamimpact
+}  // namespace beamimpact::verification
 
-namespace beamimpact {
+namespace beamimpact::verification {
 namespace {
 
 // known_norm accepts exactly the names compare_runs produces (checked on a two-contact history).
@@ -153,9 +153,9 @@ TEST(CompareRuns, KnownNormMatchesProducedNames) {
 }
 
 }  // namespace
-}  // namespace beamimpact
+}  // namespace beamimpact::verification
 
-namespace beamimpact {
+namespace beamimpact::verification {
 namespace {
 
 // The method's own scalars in summary.json take precedence over the rows for impulse and
@@ -166,7 +166,7 @@ TEST(CompareRuns, SummaryScalarsTakePrecedence) {
   auto b = testing::synthetic(0.01, 2.0, f);
   const nlohmann::json sb = {{"contacts", {{{"impulse_normal", 1.0}, {"intervals", {{0.5, 1.0}, {1.2, 1.5}}}}}}};
   const nlohmann::json sa = {{"contacts", {{{"impulse_normal", 1.1}, {"intervals", {{0.503, 1.5}}}}}}};
-  const Comparison c = compare_runs(RunHistory::from_columns(a.columns(), sa), RunHistory::from_columns(b.columns(), sb));
+  const Comparison c = compare_runs(StoredRun::from_columns(a.columns(), sa), StoredRun::from_columns(b.columns(), sb));
   EXPECT_NEAR(*c.find("impulse")->value, 0.1, 1e-12);
   EXPECT_NEAR(*c.find("contact_start")->value, 0.003, 1e-12);
   EXPECT_NEAR(*c.find("contact_end")->value, 0.5, 1e-12);
@@ -175,4 +175,4 @@ TEST(CompareRuns, SummaryScalarsTakePrecedence) {
 }
 
 }  // namespace
-}  // namespace beamimpact
+}  // namespace beamimpact::verification

@@ -1,10 +1,10 @@
-#include "verification/compare/series.hpp"
+#include <beamimpact/verification/compare/series.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-namespace beamimpact {
+namespace beamimpact::verification {
 
 std::vector<double> uniform_grid(double t0, double t1, double h) {
   if (!(h > 0.0) || !(t1 >= t0)) throw std::invalid_argument("uniform_grid: need h > 0 and t1 >= t0");
@@ -95,4 +95,4 @@ std::vector<Interval> contact_intervals(const std::vector<double>& t, const std:
   return out;
 }
 
-}  // namespace beamimpact
+}  // namespace beamimpact::verification

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-namespace beamimpact {
+namespace beamimpact::verification {
 
 /// @brief Components of one (possibly vector-valued) quantity at common times.
 using Series = std::vector<std::vector<double>>;
@@ -50,4 +50,4 @@ struct Interval {
 std::vector<Interval> contact_intervals(const std::vector<double>& t, const std::vector<double>& R,
                                         double threshold, double merge_gap);
 
-}  // namespace beamimpact
+}  // namespace beamimpact::verification

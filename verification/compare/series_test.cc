@@ -1,11 +1,11 @@
 // Building blocks of the norms, against closed forms.
-#include "verification/compare/series.hpp"
+#include <beamimpact/verification/compare/series.hpp>
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-namespace beamimpact {
+namespace beamimpact::verification {
 namespace {
 
 TEST(Series, UniformGridNeverExceedsStep) {
@@ -46,4 +46,4 @@ TEST(Series, WindowAverageOfConstantIsConstantInside) {
 }
 
 }  // namespace
-}  // namespace beamimpact
+}  // namespace beamimpact::verification

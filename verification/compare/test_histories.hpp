@@ -6,13 +6,14 @@
 #include <functional>
 #include <numbers>
 
-#include "verification/compare/RunHistory.hpp"
+#include <beamimpact/verification/compare/StoredRun.hpp>
 
 namespace beamimpact::testing {
+using verification::StoredRun;
 
 /// @brief A one-contact history on t = 0, h, ..., T: R(t) from `force`, ua_x from `ua`, every
 /// other column of interface.md zero except the energies (kinetic = 1 J constant).
-inline RunHistory synthetic(double h, double T, const std::function<double(double)>& force,
+inline StoredRun synthetic(double h, double T, const std::function<double(double)>& force,
                             const std::function<double(double)>& ua = [](double) { return 0.0; }) {
   std::map<std::string, std::vector<double>> c;
   const auto n = static_cast<std::size_t>(std::llround(T / h));
@@ -26,7 +27,7 @@ inline RunHistory synthetic(double h, double T, const std::function<double(doubl
       c[z].push_back(0.0);
     c["kinetic"].push_back(1.0);
   }
-  return RunHistory::from_columns(std::move(c));
+  return StoredRun::from_columns(std::move(c));
 }
 
 }  // namespace beamimpact::testing

@@ -1,12 +1,12 @@
-#include "verification/matrix/evaluate.hpp"
+#include <beamimpact/verification/matrix/evaluate.hpp>
 
 #include <cmath>
 
 #include <fmt/format.h>
 
-#include "verification/compare/compare_runs.hpp"
+#include <beamimpact/verification/compare/compare_runs.hpp>
 
-namespace beamimpact {
+namespace beamimpact::verification {
 namespace {
 
 /// Gates of an item that could not be evaluated: skipped (not required) or failed.
@@ -19,16 +19,16 @@ void not_evaluated(ItemResult& r, const std::vector<Gate>& gates, const std::str
 }
 
 /// The runs needed, in order; returns false (and fills the gates) when one is not ok.
-bool runs_ok(ItemResult& r, const std::vector<const RunSpec*>& specs, const std::vector<Gate>& gates,
-             const std::map<std::string, RunOutcome>& runs) {
-  for (const RunSpec* s : specs) {
+bool runs_ok(ItemResult& r, const std::vector<const JobSpec*>& specs, const std::vector<Gate>& gates,
+             const std::map<std::string, JobOutcome>& runs) {
+  for (const JobSpec* s : specs) {
     const auto it = runs.find(s->key());
     if (it == runs.end()) {
       not_evaluated(r, gates, "run " + s->label() + " was not run", false);
       return false;
     }
-    if (it->second.status != RunOutcome::Status::kOk) {
-      const bool skipped = it->second.status == RunOutcome::Status::kSkipped;
+    if (it->second.status != JobOutcome::Status::kOk) {
+      const bool skipped = it->second.status == JobOutcome::Status::kSkipped;
       not_evaluated(r, gates, s->label() + (skipped ? ": " : " failed: ") + it->second.message, skipped);
       return false;
     }
@@ -76,7 +76,7 @@ std::optional<double> observed_order(std::optional<double> e_coarse, std::option
   return std::log(*e_coarse / *e_fine) / std::log(r);
 }
 
-ItemResult evaluate_case(const Case& c, const std::map<std::string, RunOutcome>& runs) {
+ItemResult evaluate_case(const Case& c, const std::map<std::string, JobOutcome>& runs) {
   ItemResult r;
   r.kind = "case";
   r.scene = c.run.scene_name();
@@ -97,8 +97,8 @@ ItemResult evaluate_case(const Case& c, const std::map<std::string, RunOutcome>&
   }
   if (!runs_ok(r, {&c.run, &c.reference}, c.gates, runs)) return r;
   try {
-    const Comparison cmp = compare_runs(RunHistory::read(runs.at(c.run.key()).dir),
-                                        RunHistory::read(runs.at(c.reference.key()).dir));
+    const Comparison cmp = compare_runs(StoredRun::read(runs.at(c.run.key()).dir),
+                                        StoredRun::read(runs.at(c.reference.key()).dir));
     for (const auto& g : c.gates) r.gates.push_back(check_gate(g, cmp));
     r.comparisons.push_back(cmp);
   } catch (const std::exception& e) {
@@ -107,7 +107,7 @@ ItemResult evaluate_case(const Case& c, const std::map<std::string, RunOutcome>&
   return r;
 }
 
-ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, RunOutcome>& runs) {
+ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, JobOutcome>& runs) {
   ItemResult r;
   r.kind = "convergence";
   r.scene = v.runs.front().scene_name();
@@ -116,7 +116,7 @@ ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, Run
   r.tier = v.tier;
   r.required = v.required;
   r.note = v.note;
-  std::vector<const RunSpec*> specs;
+  std::vector<const JobSpec*> specs;
   for (const auto& s : v.runs) {
     specs.push_back(&s);
     if (auto it = runs.find(s.key()); it != runs.end()) {
@@ -127,8 +127,8 @@ ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, Run
   if (!runs_ok(r, specs, v.gates, runs)) return r;
   try {
     for (std::size_t i = 0; i + 1 < v.runs.size(); ++i)
-      r.comparisons.push_back(compare_runs(RunHistory::read(runs.at(v.runs[i].key()).dir),
-                                           RunHistory::read(runs.at(v.runs[i + 1].key()).dir)));
+      r.comparisons.push_back(compare_runs(StoredRun::read(runs.at(v.runs[i].key()).dir),
+                                           StoredRun::read(runs.at(v.runs[i + 1].key()).dir)));
   } catch (const std::exception& e) {
     not_evaluated(r, v.gates, std::string("comparison failed: ") + e.what(), false);
     return r;
@@ -208,4 +208,4 @@ nlohmann::json to_json(const ItemResult& r) {
   return j;
 }
 
-}  // namespace beamimpact
+}  // namespace beamimpact::verification

@@ -10,11 +10,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "verification/compare/Comparison.hpp"
-#include "verification/matrix/Matrix.hpp"
-#include "verification/matrix/run_all.hpp"
+#include <beamimpact/verification/compare/Comparison.hpp>
+#include <beamimpact/verification/matrix/VerificationMatrix.hpp>
+#include <beamimpact/verification/matrix/execute_jobs.hpp>
 
-namespace beamimpact {
+namespace beamimpact::verification {
 
 /// @brief Outcome of one gate.
 struct GateResult {
@@ -49,11 +49,11 @@ struct ItemResult {
 /// @brief Decides one gate on a comparison (error <= tol). A missing or unavailable norm fails.
 GateResult check_gate(const Gate& gate, const Comparison& cmp);
 
-/// @brief Evaluates a case from the finished runs (keyed by RunSpec::key()).
-ItemResult evaluate_case(const Case& c, const std::map<std::string, RunOutcome>& runs);
+/// @brief Evaluates a case from the finished runs (keyed by JobSpec::key()).
+ItemResult evaluate_case(const Case& c, const std::map<std::string, JobOutcome>& runs);
 
 /// @brief Evaluates a convergence ladder from the finished runs.
-ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, RunOutcome>& runs);
+ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, JobOutcome>& runs);
 
 /// @brief Observed order p = log(e_coarse / e_fine) / log(r); empty when an error is zero or missing.
 std::optional<double> observed_order(std::optional<double> e_coarse, std::optional<double> e_fine, double r);
@@ -61,4 +61,4 @@ std::optional<double> observed_order(std::optional<double> e_coarse, std::option
 /// @brief JSON of an item: its gates and every norm of every comparison.
 nlohmann::json to_json(const ItemResult& r);
 
-}  // namespace beamimpact
+}  // namespace beamimpact::verification

@@ -1,11 +1,11 @@
 // Gate decisions and observed orders on hand-made comparisons.
-#include "verification/matrix/evaluate.hpp"
+#include <beamimpact/verification/matrix/evaluate.hpp>
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-namespace beamimpact {
+namespace beamimpact::verification {
 namespace {
 
 Comparison with_impulse(std::optional<double> v) {
@@ -41,4 +41,4 @@ TEST(Evaluate, ObservedOrder) {
 }
 
 }  // namespace
-}  // namespace beamimpact
+}  // namespace beamimpact::verification

@@ -8,19 +8,19 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "beamimpact/methods.hpp"
-#include "verification/compare/RunHistory.hpp"
-#include "verification/matrix/Matrix.hpp"
-#include "verification/matrix/evaluate.hpp"
-#include "verification/matrix/run_all.hpp"
+#include <beamimpact/api/registry.hpp>
+#include <beamimpact/verification/compare/StoredRun.hpp>
+#include <beamimpact/verification/matrix/VerificationMatrix.hpp>
+#include <beamimpact/verification/matrix/evaluate.hpp>
+#include <beamimpact/verification/matrix/execute_jobs.hpp>
 
-namespace beamimpact {
+namespace beamimpact::verification {
 namespace {
 
 namespace fs = std::filesystem;
 
 /// Writes a (perturbed) history and summary as a run directory.
-void write_run_dir(const RunHistory& h, const nlohmann::json& summary, const fs::path& dir) {
+void write_run_dir(const StoredRun& h, const nlohmann::json& summary, const fs::path& dir) {
   fs::create_directories(dir);
   std::ofstream csv(dir / "history.csv");
   std::vector<const std::vector<double>*> cols;
@@ -41,10 +41,9 @@ void write_run_dir(const RunHistory& h, const nlohmann::json& summary, const fs:
 class GatesBite : public ::testing::Test {
  protected:
   void SetUp() override {
-    matrix_ = Matrix::load(fs::path(BEAMIMPACT_SOURCE) / "verification" / "matrix.toml");
+    matrix_ = VerificationMatrix::load(fs::path(BEAMIMPACT_SOURCE) / "verification" / "matrix.toml");
     launcher_.exe = BEAMIMPACT_EXE;
-    launcher_.fenicsx = matrix_.fenicsx;
-    for (const auto& [name, fn] : methods()) launcher_.builtin_methods.push_back(name);
+    launcher_.root = matrix_.root;
     tmp_ = fs::temp_directory_path() / fmt::format("beamimpact_gates_bite_{}", ::getpid());
     fs::remove_all(tmp_);
   }
@@ -61,14 +60,14 @@ class GatesBite : public ::testing::Test {
   }
 
   /// Runs the case's run and reference for real.
-  std::map<std::string, RunOutcome> run(const Case& c) {
-    auto out = run_all({c.run, c.reference}, tmp_ / "runs", launcher_, 2, 600.0);
-    for (const auto& [k, o] : out) EXPECT_EQ(o.status, RunOutcome::Status::kOk) << k << ": " << o.message;
+  std::map<std::string, JobOutcome> run(const Case& c) {
+    auto out = execute_jobs({c.run, c.reference}, tmp_ / "runs", launcher_, 2, 600.0);
+    for (const auto& [k, o] : out) EXPECT_EQ(o.status, JobOutcome::Status::kOk) << k << ": " << o.message;
     return out;
   }
 
   /// Evaluates the case with the run replaced by a perturbed copy; returns the gate's status.
-  std::string gate_status(const Case& c, std::map<std::string, RunOutcome> runs, const fs::path& dir,
+  std::string gate_status(const Case& c, std::map<std::string, JobOutcome> runs, const fs::path& dir,
                           const std::string& metric, std::string* message = nullptr) {
     runs.at(c.run.key()).dir = dir;
     const ItemResult r = evaluate_case(c, runs);
@@ -80,7 +79,7 @@ class GatesBite : public ::testing::Test {
     return "missing";
   }
 
-  Matrix matrix_;
+  VerificationMatrix matrix_;
   Launcher launcher_;
   fs::path tmp_;
 };
@@ -97,7 +96,7 @@ TEST_F(GatesBite, UnperturbedRowsPass) {
 TEST_F(GatesBite, ForceScaledByTwoPercentFails) {
   const Case& c = row("s1_central", "paper", "impulse");
   const auto runs = run(c);
-  RunHistory h = RunHistory::read(runs.at(c.run.key()).dir);
+  StoredRun h = StoredRun::read(runs.at(c.run.key()).dir);
   nlohmann::json s = h.summary();
   for (auto& v : h.columns()["R"]) v *= 1.02;
   for (const char* k : {"impulse_normal", "peak_R", "peak_R_excluding_closure", "first_step_R"})
@@ -112,7 +111,7 @@ TEST_F(GatesBite, ForceScaledByTwoPercentFails) {
 TEST_F(GatesBite, OneStepDelayOfContactFails) {
   const Case& c = row("s1_offset_gap", "paper", "contact_start");  // event inside a step
   const auto runs = run(c);
-  RunHistory h = RunHistory::read(runs.at(c.run.key()).dir);
+  StoredRun h = StoredRun::read(runs.at(c.run.key()).dir);
   nlohmann::json s = h.summary();
   const double dt = h.output_step();
   for (const char* k : {"R", "tau"}) {
@@ -131,7 +130,7 @@ TEST_F(GatesBite, OneStepDelayOfContactFails) {
 TEST_F(GatesBite, LostImpactFails) {
   const Case& c = row("s2_transverse", "paper", "impacts");
   const auto runs = run(c);
-  RunHistory h = RunHistory::read(runs.at(c.run.key()).dir);
+  StoredRun h = StoredRun::read(runs.at(c.run.key()).dir);
   nlohmann::json s = h.summary();
   auto& ivs = s["contacts"][0]["intervals"];
   ASSERT_GE(ivs.size(), 2u) << "the row's run must have at least two impacts to lose one";
@@ -151,4 +150,4 @@ TEST_F(GatesBite, LostImpactFails) {
 }
 
 }  // namespace
-}  // namespace beamimpact
+}  // namespace beamimpact::verification

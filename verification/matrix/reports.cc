@@ -1,4 +1,4 @@
-#include "verification/matrix/reports.hpp"
+#include <beamimpact/verification/matrix/reports.hpp>
 
 #include <fstream>
 #include <map>
@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-namespace beamimpact {
+namespace beamimpact::verification {
 namespace {
 
 std::string xml_escape(const std::string& s) {
@@ -179,4 +179,4 @@ void write_markdown(const std::filesystem::path& file, const ReportContext& ctx,
   write_file_atomic(file, m);
 }
 
-}  // namespace beamimpact
+}  // namespace beamimpact::verification

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "io/write_file_atomic.hpp"
-#include "verification/matrix/evaluate.hpp"
+#include <beamimpact/util/write_file_atomic.hpp>
+#include <beamimpact/verification/matrix/evaluate.hpp>
 
-namespace beamimpact {
+namespace beamimpact::verification {
 
 /// @brief How the report was made (written at the top of every output).
 struct ReportContext {
@@ -35,4 +35,4 @@ void write_json(const std::filesystem::path& file, const ReportContext& ctx, con
 void write_markdown(const std::filesystem::path& file, const ReportContext& ctx, const std::vector<ItemResult>& items);
 
 
-}  // namespace beamimpact
+}  // namespace beamimpact::verification

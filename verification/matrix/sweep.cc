@@ -1,15 +1,16 @@
-#include "verification/matrix/sweep.hpp"
+#include <beamimpact/verification/matrix/sweep.hpp>
 
 #include <algorithm>
 
 #include <fmt/format.h>
 
-#include "scene/SceneError.hpp"
-#include "verification/compare/compare_runs.hpp"
-#include "verification/matrix/evaluate.hpp"
-#include "verification/matrix/reports.hpp"
+#include <beamimpact/api/registry.hpp>
+#include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/verification/compare/compare_runs.hpp>
+#include <beamimpact/verification/matrix/evaluate.hpp>
+#include <beamimpact/verification/matrix/reports.hpp>
 
-namespace beamimpact {
+namespace beamimpact::verification {
 namespace {
 
 namespace fs = std::filesystem;
@@ -29,7 +30,7 @@ const std::vector<std::string>& sweep_norms() {
   return n;
 }
 
-SweepResult run_sweep(const SweepOptions& o, const Launcher& launcher) {
+SweepResult execute_sweep(const SweepOptions& o, const Launcher& launcher) {
   const bool by_fraction = !o.fractions.empty();
   const std::string key = by_fraction ? "--fraction" : "--dt";
   const auto& steps = by_fraction ? o.fractions : o.dts;
@@ -38,47 +39,49 @@ SweepResult run_sweep(const SweepOptions& o, const Launcher& launcher) {
   for (double v : steps)
     if (!(v > 0.0)) throw SceneError(o.scene.string(), key, "expected positive values");
   if (!fs::exists(o.scene)) throw SceneError(o.scene.string(), "", "scene file not found");
+  const Method& method = beamimpact::method(o.method, o.scene.string(), "--method");
   const std::vector<std::string> meshes = o.meshes.empty() ? std::vector<std::string>{""} : o.meshes;
 
-  std::vector<RunSpec> specs;
+  std::vector<JobSpec> specs;
   for (double v : steps)
     for (const auto& m : meshes) {
-      RunSpec s{o.scene, o.method, std::nullopt, m, {}, {}};
+      JobSpec s{o.scene, o.method, std::nullopt, m, {}, {}};
       if (by_fraction) s.set.push_back(fmt::format("time.fraction={:g}", v));
-      else if (o.method == "fenicsx") s.args = {"--output-interval", fmt::format("{:g}", v)};  // it picks its own step
+      else if (!method.accepts.dt) s.args = {method.output_step_option, fmt::format("{:g}", v)};  // it picks its own step
       else s.dt = v;
       specs.push_back(s);
     }
 
   SweepResult r;
-  std::optional<RunSpec> ref;
+  std::optional<JobSpec> ref;
   if (o.reference == "self") {
     const double finest = *std::min_element(steps.begin(), steps.end()) / 4;
-    ref = RunSpec{o.scene, o.method, std::nullopt, meshes.back(), {}, {}};
+    ref = JobSpec{o.scene, o.method, std::nullopt, meshes.back(), {}, {}};
     if (by_fraction) ref->set.push_back(fmt::format("time.fraction={:g}", finest));
     else ref->dt = finest;
-    if (o.method == "fenicsx") throw SceneError(o.scene.string(), "--reference", "give a reference method or directory for fenicsx");
+    if (!method.accepts.dt)
+      throw SceneError(o.scene.string(), "--reference", "give a reference method or directory for " + o.method);
     r.reference_label = ref->settings_label() + " (the finest step / 4 on the finest mesh)";
   } else if (fs::exists(fs::path(o.reference) / "summary.json")) {
     r.reference_dir = o.reference;
     r.reference_label = "run directory " + o.reference;
   } else {
-    ref = RunSpec{o.scene, o.reference, std::nullopt, "", {}, {}};
+    ref = JobSpec{o.scene, o.reference, std::nullopt, "", {}, {}};
     r.reference_label = o.reference + " (scene defaults)";
   }
-  std::vector<RunSpec> all = specs;
+  std::vector<JobSpec> all = specs;
   if (ref) all.push_back(*ref);
-  const auto outcomes = run_all(all, o.out / "runs", launcher, o.jobs, o.timeout);
+  const auto outcomes = execute_jobs(all, o.out / "runs", launcher, o.jobs, o.timeout);
   if (ref) {
-    const RunOutcome& ro = outcomes.at(ref->key());
-    if (ro.status != RunOutcome::Status::kOk)
+    const JobOutcome& ro = outcomes.at(ref->key());
+    if (ro.status != JobOutcome::Status::kOk)
       throw std::runtime_error("reference run " + ref->label() + " " + status_name(ro.status) + ": " + ro.message);
     r.reference_dir = ro.dir;
   }
-  const RunHistory reference = RunHistory::read(r.reference_dir);
+  const StoredRun reference = StoredRun::read(r.reference_dir);
   for (const auto& s : specs) {
     SweepPoint p{outcomes.at(s.key()), std::nullopt};
-    if (p.outcome.status == RunOutcome::Status::kOk) p.comparison = compare_runs(RunHistory::read(p.outcome.dir), reference);
+    if (p.outcome.status == JobOutcome::Status::kOk) p.comparison = compare_runs(StoredRun::read(p.outcome.dir), reference);
     r.points.push_back(std::move(p));
   }
   return r;
@@ -158,4 +161,4 @@ void write_sweep(const SweepOptions& o, const SweepResult& r, const std::string&
   write_file_atomic(o.out / "sweep.md", md);
 }
 
-}  // namespace beamimpact
+}  // namespace beamimpact::verification

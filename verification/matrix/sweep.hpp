@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "verification/compare/Comparison.hpp"
-#include "verification/matrix/run_all.hpp"
+#include <beamimpact/verification/compare/Comparison.hpp>
+#include <beamimpact/verification/matrix/execute_jobs.hpp>
 
-namespace beamimpact {
+namespace beamimpact::verification {
 
 /// @brief What to sweep.
 struct SweepOptions {
@@ -27,7 +27,7 @@ struct SweepOptions {
 
 /// @brief One point of the sweep.
 struct SweepPoint {
-  RunOutcome outcome;
+  JobOutcome outcome;
   std::optional<Comparison> comparison;  ///< empty when the run failed
 };
 
@@ -40,7 +40,7 @@ struct SweepResult {
 
 /// @brief Runs the sweep (runs in parallel) and compares each point with the reference.
 /// Throws SceneError for bad options and std::runtime_error when the reference run fails.
-SweepResult run_sweep(const SweepOptions& o, const Launcher& launcher);
+SweepResult execute_sweep(const SweepOptions& o, const Launcher& launcher);
 
 /// @brief Writes out/sweep.md, sweep.csv and sweep.json; `header` says how it was made.
 void write_sweep(const SweepOptions& o, const SweepResult& r, const std::string& header);
@@ -48,4 +48,4 @@ void write_sweep(const SweepOptions& o, const SweepResult& r, const std::string&
 /// @brief The norms tabulated by sweep (and printed by verify for a case).
 const std::vector<std::string>& sweep_norms();
 
-}  // namespace beamimpact
+}  // namespace beamimpact::verification

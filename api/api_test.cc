@@ -1,0 +1,56 @@
+#include <beamimpact/api/registry.hpp>
+#include <beamimpact/api/run.hpp>
+
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/testing/test_scenes.hpp>
+
+namespace beamimpact {
+namespace {
+
+TEST(Registry, HasEveryMethodOnceWithWhatItAccepts) {
+  for (const char* name : {"paper", "exact", "ida", "fenicsx"}) ASSERT_NE(find_method(name), nullptr) << name;
+  EXPECT_EQ(methods().size(), 4u);
+  EXPECT_TRUE(find_method("paper")->in_process());
+  EXPECT_FALSE(find_method("fenicsx")->in_process());
+  EXPECT_FALSE(find_method("fenicsx")->accepts.dt);  // it picks its own stable step
+  EXPECT_FALSE(find_method("ida")->accepts.rotation);
+  EXPECT_EQ(find_method("bogus"), nullptr);
+  try {
+    method("bogus", "matrix.toml", "method");
+    FAIL() << "no error for an unknown method";
+  } catch (const SceneError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("matrix.toml"), std::string::npos) << m;
+    EXPECT_NE(m.find("paper, exact, ida, fenicsx"), std::string::npos) << m;
+  }
+}
+
+// S1 (two equal free rods, references.md 1): the exact impulse is m v0 / 2 = 4 N s. The
+// one-call API must give it through the registry, and the paper's 10-element run is within its
+// documented mesh error (-3.6 %, 5 % bound).
+TEST(Api, RunsASceneFileByMethodName) {
+  const auto scene = testing::paper_scene("s1_central");
+  EXPECT_NEAR(run(scene, "exact").contacts.at(0).impulse_normal, 4.0, 1e-9);
+  const SimulationResult p = run(scene, "paper");
+  EXPECT_EQ(p.method, "paper");
+  EXPECT_NEAR(p.contacts.at(0).impulse_normal, 4.0, 0.2);
+  EXPECT_FALSE(p.contact_sampling.empty());
+}
+
+TEST(Api, WritesTheRunDirectoryAndRefusesExternalMethods) {
+  const auto dir = std::filesystem::temp_directory_path() / ("beamimpact_api_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  run(testing::paper_scene("s1_central"), "paper", RunOptions{{"time.end=1.0"}, dir});
+  EXPECT_TRUE(std::filesystem::exists(dir / "summary.json"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "history.csv"));
+  std::filesystem::remove_all(dir);
+  EXPECT_THROW(run(testing::paper_scene("s1_central"), "fenicsx"), SceneError);
+  EXPECT_THROW(run(testing::paper_scene("s1_central"), "no_such_method"), SceneError);
+}
+
+}  // namespace
+}  // namespace beamimpact

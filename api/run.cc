@@ -1,0 +1,30 @@
+#include <beamimpact/api/run.hpp>
+
+#include <beamimpact/api/registry.hpp>
+#include <beamimpact/record/output_files.hpp>
+#include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/scene/scene_io.hpp>
+
+namespace beamimpact {
+
+SimulationResult run(const Scene& scene, std::string_view method_name, const RunOptions& options) {
+  if (!options.set.empty())
+    throw SceneError(scene.file, "set", "expected no overrides for a loaded scene; pass them to load_scene()");
+  const Method& m = method(method_name, scene.file, "--method");
+  if (!m.in_process())
+    throw SceneError(scene.file, "--method",
+                     "'" + m.name + "' is an external program, not callable in-process; it runs as: " +
+                         m.command.front() + " " + m.command.back() + " SCENE --out DIR");
+  if (options.out) std::filesystem::remove(*options.out / "summary.json");
+  SimulationResult r = m.solve(scene);
+  if (options.out) write_outputs(scene, r, *options.out);
+  return r;
+}
+
+SimulationResult run(const std::filesystem::path& scene_file, std::string_view method_name,
+                     const RunOptions& options) {
+  const Scene scene = load_scene(scene_file, options.set);
+  return run(scene, method_name, RunOptions{{}, options.out});
+}
+
+}  // namespace beamimpact

@@ -1,0 +1,229 @@
+#include <beamimpact/exact/solve.hpp>
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include <beamimpact/exact/CoaxialRods.hpp>
+#include <beamimpact/exact/RodOnBeam.hpp>
+#include <beamimpact/exact/recognise_scene.hpp>
+#include <beamimpact/record/ResultRecorder.hpp>
+#include <beamimpact/scene/TableReader.hpp>
+
+namespace beamimpact::exact {
+namespace {
+
+const char* kMergeRule =
+    "exact event times: an interval runs from the first to the last instant of positive force; "
+    "a zero-force phase with the gap still closed is not a separation (no merging of real gaps)";
+
+Vec2 along(Vec2 d, double s) { return {d[0] * s, d[1] * s}; }
+
+// Output times k dt_out, k = 0, 1, ... up to time.end.
+std::vector<double> output_times(double dt_out, double end) {
+  std::vector<double> t;
+  for (long k = 0;; ++k) {
+    const double tk = static_cast<double>(k) * dt_out;
+    if (tk > end * (1.0 + 1e-12)) break;
+    t.push_back(std::min(tk, end));
+  }
+  return t;
+}
+
+// Records the rows (energies, momentum drift, output-grid contact statistics) and then reports
+// what the exact solution knows exactly: its event times, impulse and peak force. The
+// output-grid values are kept too (comparable with a stepping method's sampling).
+SimulationResult finish_summary(ResultRecorder& rec, std::vector<HistoryRow> rows,
+                                const std::vector<std::array<double, 2>>& intervals, double impulse, double peak,
+                                double first, ContactKind kind, nlohmann::json contact_extra) {
+  rec.set_merge_rule(0.0, kMergeRule);
+  const double dt = rec.result().dt;
+  for (HistoryRow& row : rows) {
+    rec.sample(0, row.t, row.contacts[0].R, 0.0, dt, row.contacts[0].state);
+    rec.track_momentum(row.momentum);
+    rec.add_row(std::move(row));
+  }
+  SimulationResult r = rec.finish({kind});
+  ContactSummary& s = r.contacts[0];
+  contact_extra["intervals_on_output_grid"] = s.intervals;
+  contact_extra["impulse_on_output_grid"] = s.impulse_normal;
+  s.intervals = intervals;
+  s.impulse_normal = impulse;
+  s.peak_R = peak;
+  s.first_step_R = first;
+  s.extra = std::move(contact_extra);
+  return r;
+}
+
+SimulationResult solve_rods(const Scene& scene, const ExactProblem& p, ResultRecorder& rec) {
+  SimulationResult& r = rec.result();
+  std::vector<HistoryRow> rows;
+  const Rod& A = p.striker_rod;
+  const Rod& B = p.target_rod;
+  const CoaxialRods sol(A, B, p.v0, p.gap, scene.time.end);
+  const double vt = p.target_speed;  // the solution lives in the target's initial rest frame
+  const Vec2 d = p.dir;
+  for (double t : output_times(r.dt, scene.time.end)) {
+    const RodsEndState e = sol.state(t);
+    const RodField fa = sol.striker_field(t), fb = sol.target_field(t);
+    HistoryRow row;
+    row.t = t;
+    ContactSample c;
+    c.R = e.P;
+    c.gap = e.gap;
+    c.ua = along(d, e.ua + vt * t);
+    c.va = along(d, e.va + vt);
+    c.ub = along(d, e.ub + vt * t);
+    c.vb = along(d, e.vb + vt);
+    c.state = e.P > 0.0 ? ContactState::kClosed : ContactState::kOpen;
+    row.contacts.push_back(c);
+    // Back to the ground frame: KE = KE' + vt p' + m vt^2 / 2 for each rod.
+    row.kinetic = fa.kinetic + fb.kinetic + vt * (fa.momentum + fb.momentum) +
+                  0.5 * (A.mass() + B.mass()) * vt * vt;
+    row.strain = fa.strain + fb.strain;
+    row.momentum = along(d, fa.momentum + fb.momentum + (A.mass() + B.mass()) * vt);
+    rows.push_back(row);
+  }
+  const double te = scene.time.end;
+  r.effects = {"axial"};
+  r.steps = static_cast<long>(sol.segments().size());
+  const double first = sol.first_touch() < te ? sol.state(sol.first_touch()).P : 0.0;
+  nlohmann::json extra = {{"first_touch", sol.first_touch() < te ? sol.first_touch() : -1.0},
+                          {"pieces", sol.segments().size()}};
+  rec.set_final_velocity(scene.bodies[p.striker].name, along(d, sol.striker_field(te).momentum / A.mass() + vt));
+  rec.set_final_velocity(scene.bodies[p.target].name, along(d, sol.target_field(te).momentum / B.mass() + vt));
+  r.extra["exact"] = {
+      {"solution", "coaxial free rods, d'Alembert with reflection memory (references.md 1)"},
+      {"pieces", sol.segments().size()},
+      {"note", "P is piecewise constant between breakpoints (contact start, re-contacts and their "
+               "shifts by multiples of T_A, T_B); every output is exact to roundoff; energies are "
+               "integrated exactly over the piecewise-constant wave fields"},
+      {"round_trip_striker", A.round_trip()},
+      {"round_trip_target", B.round_trip()},
+      {"impedance_striker", A.impedance()},
+      {"impedance_target", B.impedance()}};
+  return finish_summary(rec, std::move(rows), sol.force_intervals(), sol.impulse(te), sol.peak_force(), first,
+                        p.contact_kind, extra);
+}
+
+struct BeamOptions {
+  long modes = 0;  // 0: convergence study
+  long modes_min = 16, modes_max = 512;
+  double tol = 1e-3, rtol = 1e-10;
+};
+
+SimulationResult solve_beam(const Scene& scene, const ExactProblem& p, const BeamOptions& o, ResultRecorder& rec) {
+  SimulationResult& r = rec.result();
+  std::vector<HistoryRow> rows;
+  RodOnBeamSetup s;
+  s.rod = p.striker_rod;
+  s.beam = p.beam;
+  s.x_c = p.x_c;
+  s.v0 = p.v0;
+  s.gap = p.gap;
+  s.t_end = scene.time.end;
+  s.dt_out = r.dt;
+  s.rtol = o.rtol;
+  ModeStudy study;
+  if (o.modes > 0) {
+    s.modes = static_cast<int>(o.modes);
+    study.solution = RodOnBeam(s).solution();
+    study.table.push_back({s.modes, study.solution.impulse, study.solution.intervals, study.solution.w_max});
+  } else {
+    study = converge_modes(s, static_cast<int>(o.modes_min), static_cast<int>(o.modes_max), o.tol);
+  }
+  const RodOnBeamSolution& sol = study.solution;
+  const Vec2 d = p.dir;
+  const double mA = p.striker_rod.mass();
+  for (const RodOnBeamRow& q : sol.rows) {
+    HistoryRow row;
+    row.t = q.t;
+    ContactSample c;
+    c.R = q.P;
+    c.gap = q.gap;
+    c.ua = along(d, q.u);
+    c.va = along(d, q.du);
+    c.ub = along(d, q.w);
+    c.vb = along(d, q.dw);
+    c.state = q.P > 0.0 ? ContactState::kClosed : ContactState::kOpen;
+    row.contacts.push_back(c);
+    row.kinetic = q.beam_kinetic + q.rod.kinetic;
+    row.strain = q.beam_strain + q.rod.strain;
+    row.momentum = along(d, mA * p.v0 - q.impulse + q.beam_momentum);
+    rows.push_back(row);
+  }
+  const RodOnBeamRow& last = sol.rows.back();
+  rec.set_final_velocity(scene.bodies[p.striker].name, along(d, p.v0 - last.impulse / mA));
+  rec.set_final_velocity(scene.bodies[p.target].name,
+                         along(d, last.beam_momentum / (p.beam.rho * p.beam.area * p.beam.length)));
+  r.effects = {"axial", "bending"};
+  r.steps = sol.steps;
+  nlohmann::json table = nlohmann::json::array();
+  for (const auto& e : study.table)
+    table.push_back({{"modes", e.modes}, {"impulse", e.impulse}, {"intervals", e.intervals},
+                     {"w_max", e.w_max}});
+  nlohmann::json extra = {
+      {"modes", sol.modes},
+      {"modes_converged", o.modes > 0 ? nlohmann::json("fixed by exact.modes") : nlohmann::json(study.converged)},
+      {"mode_study", table},
+      {"impulse_change_last_doubling", study.impulse_change},
+      {"time_change_last_doubling", study.time_change},
+      {"struck_point_x", p.x_c},
+      {"deflection_max", sol.w_max},
+      {"deflection_max_time", sol.t_w_max},
+      {"deflection_min", sol.w_min},
+      {"events", sol.events},
+      {"pieces", sol.pieces}};
+  r.extra["exact"] = {
+      {"solution", "rod end-on onto a simply supported Euler-Bernoulli beam: exact rod waves with "
+                   "reflection memory + modal sum, GSL rk8pd, Brent-located events (references.md 2)"},
+      {"rk8pd_steps", sol.steps},
+      {"rtol", o.rtol},
+      {"memory_sample_dt", sol.sample_dt},
+      {"energy_balance_error", sol.energy_error},
+      {"energy_columns", "beam: modal sums; rod: kinetic and strain integrated over its wave field "
+                         "(from the stored reflection memory); the beam's axial motion is not excited"},
+      {"theory", "linear, small deformation; the [model] mass/rotary_inertia/kinematics choices "
+                 "do not apply to the continuum"}};
+  return finish_summary(rec, std::move(rows), sol.intervals, sol.impulse, sol.peak_P, sol.first_P, p.contact_kind,
+                        extra);
+}
+
+}  // namespace
+
+SimulationResult solve(const Scene& scene) {
+  ResultRecorder rec(scene, "exact", ContactSampling::kExactEvents);
+  SimulationResult& r = rec.result();
+  const ExactProblem p = recognise_scene(scene);
+  MethodOptions opts(scene, "exact", &r.assumed);
+  TableReader& in = opts.reader();
+  if (in.has("dt_out")) {
+    r.dt = in.number("dt_out", "a positive output interval (s)");
+    if (!(r.dt > 0.0)) in.fail("dt_out", "expected a positive output interval (s)");
+  } else if (scene.time.dt) {
+    r.dt = *scene.time.dt * scene.time.output_every;
+  } else {
+    r.dt = scene.time.end / 2000.0;
+    r.assumed["exact.dt_out"] = fmt::format("{} s (time.end / 2000, as time.dt is auto)", r.dt);
+  }
+  BeamOptions o;
+  if (p.kind == ExactKind::kRodOnBeam) {
+    if (in.has("modes")) {
+      o.modes = in.integer("modes", "a positive number of beam modes");
+      if (o.modes < 1) in.fail("modes", "expected a positive number of beam modes");
+    } else {
+      o.modes_min = in.integer_or("modes_min", o.modes_min, "the first mode count of the convergence study");
+      o.modes_max = in.integer_or("modes_max", o.modes_max, "the largest mode count of the convergence study");
+      o.tol = in.number_or("mode_tolerance", o.tol, "relative change of impulse and contact times per doubling");
+      if (o.modes_min < 1 || o.modes_max < o.modes_min)
+        in.fail("modes_max", "expected 1 <= modes_min <= modes_max");
+      if (!(o.tol > 0.0)) in.fail("mode_tolerance", "expected a positive tolerance");
+    }
+    o.rtol = in.number_or("rtol", o.rtol, "rk8pd relative tolerance");
+    if (!(o.rtol > 0.0 && o.rtol < 1e-2)) in.fail("rtol", "expected a tolerance in (0, 0.01)");
+  }
+  in.finish();
+  return p.kind == ExactKind::kCoaxialRods ? solve_rods(scene, p, rec) : solve_beam(scene, p, o, rec);
+}
+
+}  // namespace beamimpact::exact

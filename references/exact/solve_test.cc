@@ -1,0 +1,101 @@
+// exact::solve end to end on the paper's scenes: S1 against the closed form, S2 against the
+// balances and contact invariants, and the [exact] table's checks.
+#include <beamimpact/exact/solve.hpp>
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/scene/scene_io.hpp>
+#include <beamimpact/testing/test_scenes.hpp>
+
+namespace beamimpact {
+namespace {
+
+using beamimpact::testing::paper_scene;
+
+TEST(RunExact, S1CentralIsTheClosedForm) {
+  // Equal rods: contact 0.5 s .. 2.5 s, force Z v0 / 2 = 2 N, impulse 4 N s, then A at rest
+  // and B at 1 m/s; everything exact to roundoff (1e-12).
+  const SimulationResult r = exact::solve(load_scene(paper_scene("s1_central")));
+  EXPECT_EQ(r.method, "exact");
+  EXPECT_DOUBLE_EQ(r.dt, 0.01);
+  ASSERT_EQ(r.history.size(), 401u);
+  ASSERT_EQ(r.contacts.size(), 1u);
+  const ContactSummary& c = r.contacts[0];
+  ASSERT_EQ(c.intervals.size(), 1u);
+  EXPECT_NEAR(c.intervals[0][0], 0.5, 1e-12);
+  EXPECT_NEAR(c.intervals[0][1], 2.5, 1e-12);
+  EXPECT_NEAR(c.impulse_normal, 4.0, 1e-12);
+  EXPECT_NEAR(c.peak_R, 2.0, 1e-12);
+  EXPECT_EQ(c.kind, ContactKind::kEndToEnd);
+  EXPECT_NEAR(r.final_velocity.at("A")[0], 0.0, 1e-12);
+  EXPECT_NEAR(r.final_velocity.at("B")[0], 1.0, 1e-12);
+  EXPECT_NEAR(r.energy_initial, 2.0, 1e-12);
+  EXPECT_NEAR(r.energy_final, 2.0, 1e-12);
+  EXPECT_LT(r.momentum_drift_max, 1e-12);
+  for (const HistoryRow& row : r.history) {
+    EXPECT_NEAR(row.kinetic + row.strain, 2.0, 1e-12) << row.t;
+    EXPECT_NEAR(row.contacts[0].R, (row.t >= 0.5 && row.t < 2.5) ? 2.0 : 0.0, 1e-12) << row.t;
+  }
+  // Mid-contact (t = 1.5 s): the pulses fill both rods, A's end moves at v0/2.
+  EXPECT_NEAR(r.history[150].contacts[0].va[0], 0.5, 1e-12);
+  EXPECT_NEAR(r.history[150].strain, 2.0 * 2.0 * 2.0 / (2.0 * 100.0 * 0.4) * 10.0, 1e-12);
+}
+
+TEST(RunExact, MovingTargetIsSolvedInItsRestFrame) {
+  // S1 with B coming head-on at -1 m/s: relative speed 2 m/s, first touch at 0.5 / 2 s, force
+  // Z v_rel / 2 = 4 N for 2 L / c = 2 s, impulse 8 N s; equal rods swap velocities (A -1, B +1);
+  // the ground-frame energy 2 x 2 J and zero total momentum are kept exactly.
+  const SimulationResult r = exact::solve(load_scene(paper_scene("s1_central"), {"bodies[1].velocity=[-1.0, 0.0]"}));
+  const ContactSummary& c = r.contacts[0];
+  ASSERT_EQ(c.intervals.size(), 1u);
+  EXPECT_NEAR(c.intervals[0][0], 0.25, 1e-12);
+  EXPECT_NEAR(c.intervals[0][1], 2.25, 1e-12);
+  EXPECT_NEAR(c.impulse_normal, 8.0, 1e-12);
+  EXPECT_NEAR(r.final_velocity.at("A")[0], -1.0, 1e-12);
+  EXPECT_NEAR(r.final_velocity.at("B")[0], 1.0, 1e-12);
+  for (const HistoryRow& row : r.history) {
+    EXPECT_NEAR(row.kinetic + row.strain, 4.0, 1e-12) << row.t;
+    EXPECT_NEAR(row.momentum[0], 0.0, 1e-12) << row.t;
+  }
+  // Before touch B's struck end moves at -1 m/s and the gap closes at the relative speed.
+  EXPECT_NEAR(r.history[10].contacts[0].ub[0], -0.1, 1e-12);
+  EXPECT_NEAR(r.history[10].contacts[0].gap, 0.5 - 0.2, 1e-12);
+}
+
+TEST(RunExact, S2TransverseHonoursContactInvariants) {
+  // A fixed 32 modes keeps the test quick; the balances hold at any mode count.
+  const SimulationResult r = exact::solve(load_scene(paper_scene("s2_transverse"), {"exact.modes=32"}));
+  ASSERT_EQ(r.contacts.size(), 1u);
+  const ContactSummary& c = r.contacts[0];
+  EXPECT_EQ(c.kind, ContactKind::kNodeToNode);
+  ASSERT_GE(c.intervals.size(), 1u);
+  EXPECT_NEAR(c.intervals[0][0], 0.1, 1e-12);
+  EXPECT_NEAR(c.first_step_R, 4.0, 1e-12);  // Z_A v0
+  EXPECT_EQ(r.effects, (std::vector<std::string>{"axial", "bending"}));
+  for (const HistoryRow& row : r.history) {
+    const ContactSample& s = row.contacts[0];
+    EXPECT_GE(s.R, 0.0);
+    EXPECT_GE(s.gap, -1e-9);
+    EXPECT_EQ(s.R * s.gap, 0.0);
+    EXPECT_NEAR(row.kinetic + row.strain, 1.0, 1e-7) << row.t;  // m_A v0^2 / 2 = 1 J
+    EXPECT_EQ(s.ub[0], 0.0);  // the beam moves only transversely
+  }
+  // Rod momentum m_A v0 - impulse: its final velocity is 1 - J / 2 (downwards is -y).
+  EXPECT_NEAR(r.final_velocity.at("A")[1], -(1.0 - c.impulse_normal / 2.0), 1e-12);
+}
+
+TEST(RunExact, ExactTableIsChecked) {
+  EXPECT_THROW(exact::solve(load_scene(paper_scene("s2_transverse"), {"exact.mode=32"})), SceneError);
+  EXPECT_THROW(exact::solve(load_scene(paper_scene("s2_transverse"), {"exact.modes=0"})), SceneError);
+  EXPECT_THROW(exact::solve(load_scene(paper_scene("s1_central"), {"exact.dt_out=-1"})), SceneError);
+  // Keys of the beam solution mean nothing for rods: unknown there.
+  EXPECT_THROW(exact::solve(load_scene(paper_scene("s1_central"), {"exact.modes=8"})), SceneError);
+  const SimulationResult r = exact::solve(load_scene(paper_scene("s1_central"), {"exact.dt_out=0.5"}));
+  EXPECT_EQ(r.history.size(), 9u);
+}
+
+}  // namespace
+}  // namespace beamimpact

@@ -1,0 +1,149 @@
+#include <beamimpact/paper/solve.hpp>
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include <beamimpact/integrator/ExplicitContactIntegrator.hpp>
+#include <beamimpact/model/critical_dt.hpp>
+#include <beamimpact/record/ResultRecorder.hpp>
+#include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/scene/TableReader.hpp>
+#include <beamimpact/util/Progress.hpp>
+
+namespace beamimpact::paper {
+namespace {
+
+/// The step: given, or "auto" = fraction x critical; refused above critical unless allowed.
+double choose_dt(const Scene& scene, const CriticalStep& cs, SimulationResult& r) {
+  if (!scene.time.dt) {
+    r.assumed["time.dt"] = fmt::format("auto: {} x critical step {:.6g} s", scene.time.fraction, cs.dt);
+    return scene.time.fraction * cs.dt;
+  }
+  const double dt = *scene.time.dt;
+  if (dt > cs.dt * (1.0 + 1e-12) && !scene.time.allow_above_critical)
+    throw SceneError(scene.file, "time.dt",
+                     fmt::format("expected at most the critical step {:.6g} s (2/omega_max of the full "
+                                 "M^-1 K, omega_max = {:.6g} rad/s), got {:.6g} s; use dt = \"auto\", a "
+                                 "smaller dt, or set time.allow_above_critical = true to run anyway",
+                                 cs.dt, cs.omega_max, dt));
+  return dt;
+}
+
+/// The chatter merge rule: a gap in seconds when given (comparable across dt and methods), else
+/// a number of open steps of this run.
+void set_merge_rule(const Options& o, double dt, ResultRecorder& rec) {
+  if (o.merge_gap > 0.0) {
+    rec.set_merge_rule(o.merge_gap, fmt::format("contact phases separated by less than {:.6g} s are merged; an "
+                                                "interval runs from its first to its last step with R > 0",
+                                                o.merge_gap));
+    return;
+  }
+  rec.set_merge_rule((static_cast<double>(o.merge_steps) + 0.5) * dt,
+                     fmt::format("contact phases separated by fewer than {} open steps ({:.6g} s) are merged; "
+                                 "an interval runs from its first to its last step with R > 0",
+                                 o.merge_steps, static_cast<double>(o.merge_steps) * dt));
+}
+
+HistoryRow make_row(const ExplicitContactIntegrator& in) {
+  const Model& m = in.model();
+  HistoryRow row;
+  row.t = in.time();
+  for (std::size_t c = 0; c < in.pairs().size(); ++c) {
+    const ContactPair& pair = in.pairs()[c];
+    const ContactForce& f = in.forces()[c];
+    ContactSample s;
+    s.R = f.R;
+    s.tau = f.tau;
+    s.gap = f.gap_next;
+    s.state = f.state;
+    s.ua = m.node_vector(in.U(), pair.striker_node());
+    s.va = m.node_vector(in.V(), pair.striker_node());
+    s.ub = pair.target_vector(in.U());
+    s.vb = pair.target_vector(in.V());
+    row.contacts.push_back(s);
+  }
+  row.kinetic = in.kinetic_energy();
+  row.strain = in.strain_energy();
+  row.dissipated = in.dissipated();
+  for (int b = 0; b < m.num_bodies(); ++b)
+    for (int c = 0; c < 2; ++c) row.momentum[c] += in.momentum(b, c);
+  return row;
+}
+
+/// Records the complete step p: contact samples every step, a row every output_every-th step
+/// and at the last one. Throws when the energy is no longer finite or has grown 1e6-fold.
+void record_step(const ExplicitContactIntegrator& integ, long p, long N, const Scene& scene, double critical_dt,
+                 ResultRecorder& rec) {
+  for (std::size_t c = 0; c < integ.forces().size(); ++c) {
+    const ContactForce& f = integ.forces()[c];
+    rec.sample(c, integ.time(), f.R, f.tau, integ.dt(), f.state);
+  }
+  if (p % scene.time.output_every != 0 && p != N) return;
+  HistoryRow row = make_row(integ);
+  const double E = row.kinetic + row.strain;
+  const double E0 = p == 0 ? E : rec.result().energy_initial;
+  if (!std::isfinite(E) || E > 1e6 * E0 + 1e-300)
+    throw std::runtime_error(fmt::format(
+        "the run diverged at t = {:.6g} s (energy {:.3g} J from {:.3g} J) with dt = {:.6g} s, critical "
+        "step {:.6g} s", row.t, E, E0, integ.dt(), critical_dt));
+  rec.track_momentum(row.momentum);
+  rec.add_row(std::move(row));
+}
+
+}  // namespace
+
+Options Options::read(const Scene& scene, std::map<std::string, std::string>* assumed) {
+  MethodOptions table(scene, "paper", assumed);
+  TableReader& in = table.reader();
+  Options o;
+  o.merge_steps = in.integer_or("merge_steps", o.merge_steps, "a whole number of steps >= 0");
+  if (o.merge_steps < 0) in.fail("merge_steps", "expected a whole number of steps >= 0");
+  o.merge_gap = in.number_or("merge_gap", o.merge_gap, "a time >= 0 (s); 0 = use merge_steps");
+  if (o.merge_gap < 0.0) in.fail("merge_gap", "expected a time >= 0 (s)");
+  o.surface = in.choice_or("surface", "linear", {"linear", "hermite"}) == "linear" ? SurfaceInterpolation::kLinear
+                                                                                  : SurfaceInterpolation::kHermite;
+  in.finish();
+  return o;
+}
+
+SimulationResult solve(const Scene& scene_in) {
+  ResultRecorder rec(scene_in, "paper", ContactSampling::kFixedSteps);
+  SimulationResult& r = rec.result();
+  const Effects effects = derive_effects(scene_in);
+  const Scene scene = effective_scene(scene_in, effects);
+  r.effects = effects.names();
+  const Options options = Options::read(scene, &r.assumed);
+
+  const Model model(scene, effects.bending);
+  const CriticalStep cs = critical_step(model);
+  r.critical_dt = cs.dt;
+  r.dt = choose_dt(scene, cs, r);
+  const long N = static_cast<long>(std::ceil(scene.time.end / r.dt - 1e-9));
+  r.steps = N;
+  set_merge_rule(options, r.dt, rec);
+
+  ExplicitContactIntegrator integ(model, scene, effects, r.dt, options.surface);
+  Progress progress("paper", scene.time.end);
+  for (long p = 0;; ++p) {
+    record_step(integ, p, N, scene, cs.dt, rec);
+    if (p == N) break;
+    integ.step();
+    progress.update(integ.time());
+  }
+
+  for (int b = 0; b < model.num_bodies(); ++b)
+    rec.set_final_velocity(scene.bodies[b].name, {integ.momentum(b, 0) / model.body_mass(b),
+                                                  integ.momentum(b, 1) / model.body_mass(b)});
+  r.extra["critical_step"] = {{"method", "Lanczos on the sparse M^-1 K (M-inner product)"},
+                              {"omega_max", cs.omega_max}, {"lanczos_iterations", cs.iterations},
+                              {"element_bound_dt", cs.element_bound_dt},
+                              {"dt_over_critical", r.dt / cs.dt}};
+  r.extra["dofs"] = model.size();
+  r.extra["dofs_per_node"] = model.dofs_per_node();
+  std::vector<ContactKind> kinds;
+  for (const ContactPair& pair : integ.pairs()) kinds.push_back(pair.kind());
+  return rec.finish(kinds);
+}
+
+}  // namespace beamimpact::paper

@@ -1,0 +1,28 @@
+#pragma once
+/// @file solve.hpp
+/// @brief The method "paper": the Pu & Chi (2011) explicit dynamic-contact integrator run on a
+/// scene, start to end.
+
+#include <string>
+
+#include <beamimpact/contact/ContactPair.hpp>
+#include <beamimpact/record/SimulationResult.hpp>
+
+namespace beamimpact::paper {
+
+/// @brief The scene's [paper] table, read and validated in one place.
+struct Options {
+  long merge_steps = 3;   ///< contact phases separated by fewer open steps than this are one interval
+  double merge_gap = 0.0; ///< s; when > 0, phases closer than this are merged instead (dt-independent)
+  SurfaceInterpolation surface = SurfaceInterpolation::kLinear;  ///< "linear" (paper) or "hermite"
+
+  /// @brief Reads [paper] of `scene`; defaults not given are recorded in `assumed`. Throws
+  /// SceneError naming the file and key for a bad value or an unknown key.
+  static Options read(const Scene& scene, std::map<std::string, std::string>* assumed);
+};
+
+/// @brief Runs the scene with the paper's integrator. Throws SceneError for bad settings
+/// (dt above the critical step) and std::runtime_error if the run diverges.
+SimulationResult solve(const Scene& scene);
+
+}  // namespace beamimpact::paper

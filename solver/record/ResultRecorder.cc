@@ -1,0 +1,63 @@
+#include <beamimpact/record/ResultRecorder.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace beamimpact {
+
+ResultRecorder::ResultRecorder(const Scene& scene, std::string method, ContactSampling sampling)
+    : scene_(scene), wall0_(std::chrono::steady_clock::now()) {
+  r_.method = std::move(method);
+  r_.contact_sampling = describe(sampling);
+}
+
+const char* ResultRecorder::describe(ContactSampling s) {
+  switch (s) {
+    case ContactSampling::kFixedSteps:
+      return "fixed steps: contact statistics from every time step; energies and momentum at the output rows";
+    case ContactSampling::kAdaptiveSteps:
+      return "adaptive steps: contact statistics and momentum from every accepted step; contact "
+             "intervals and impulses from the located switching events";
+    default:
+      return "exact events: intervals, impulse and peak force from the exact solution's event times; "
+             "the *_on_output_grid keys give the same quantities sampled on the output rows";
+  }
+}
+
+void ResultRecorder::set_merge_rule(double merge_gap, const std::string& rule) {
+  stats_.assign(scene_.contacts.size(), ContactStats(merge_gap, rule));
+}
+
+void ResultRecorder::track_momentum(const Vec2& p) {
+  if (!momentum_started_) {
+    p0_ = p;
+    momentum_started_ = true;
+  }
+  r_.momentum_drift_max = std::max(r_.momentum_drift_max, std::hypot(p[0] - p0_[0], p[1] - p0_[1]));
+}
+
+void ResultRecorder::add_row(HistoryRow row) {
+  const double E = row.kinetic + row.strain;
+  if (r_.history.empty()) r_.energy_initial = E;
+  r_.energy_final = E;
+  r_.history.push_back(std::move(row));
+}
+
+SimulationResult ResultRecorder::finish(const std::vector<ContactKind>& kinds) {
+  if (kinds.size() != scene_.contacts.size() || stats_.size() != scene_.contacts.size())
+    throw std::logic_error("ResultRecorder::finish: one kind and one merge rule per scene contact");
+  r_.contacts.clear();
+  for (std::size_t c = 0; c < scene_.contacts.size(); ++c) {
+    ContactSummary s;
+    s.striker = scene_.bodies[scene_.contacts[c].striker].name;
+    s.target = scene_.bodies[scene_.contacts[c].target].name;
+    s.kind = kinds[c];
+    stats_[c].fill(s);
+    r_.contacts.push_back(std::move(s));
+  }
+  r_.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count();
+  return std::move(r_);
+}
+
+}  // namespace beamimpact

@@ -1,0 +1,78 @@
+#pragma once
+/// @file ResultRecorder.hpp
+/// @brief The one run recorder of every in-process method (paper, ida, exact): contact
+/// statistics and intervals, energies, momentum drift, final velocities, effects and wall time.
+/// Every key of summary.json that these quantities feed comes from here and from
+/// write_outputs(); a method adds only what is its own (settings, solver counters, events).
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include <beamimpact/record/ContactStats.hpp>
+#include <beamimpact/record/SimulationResult.hpp>
+
+namespace beamimpact {
+
+/// @brief How a method samples its contacts, which the summary states (`contact_sampling`):
+/// methods that step, step adaptively or know their events exactly are compared on that basis.
+enum class ContactSampling {
+  kFixedSteps,     ///< every time step of a fixed-step scheme (paper)
+  kAdaptiveSteps,  ///< every accepted step of an adaptive integrator; switches located as events (ida)
+  kExactEvents,    ///< output rows only; intervals, impulse and peaks from exact event times (exact)
+};
+
+/// @brief Accumulates one run into a SimulationResult.
+///
+/// Usage: construct at the start of the run (the wall clock starts), set_merge_rule(), then for
+/// each step sample() every contact, track_momentum() where the method defines its drift, and
+/// add_row() for every output row; finally finish() with each contact's kind, then overwrite
+/// what the method knows better (exact event times) in the returned result.
+class ResultRecorder {
+ public:
+  /// @param scene the scene run (contact names, number of contacts)
+  /// @param method the registry name written into the summary ("paper", "ida", "exact")
+  /// @param sampling how contacts are sampled (written into the summary)
+  ResultRecorder(const Scene& scene, std::string method, ContactSampling sampling);
+
+  /// @brief The result being filled: methods set dt, critical_dt, steps, assumed, extra here.
+  SimulationResult& result() { return r_; }
+
+  /// @brief Contact phases separated by less than merge_gap (s) are one interval; `rule` is the
+  /// sentence written into the summary. Must be called before the first sample().
+  void set_merge_rule(double merge_gap, const std::string& rule);
+
+  /// @brief One contact sample at time t (s): forces R, tau (N) acting over a step dt (s).
+  void sample(std::size_t contact, double t, double R, double tau, double dt, ContactState state) {
+    stats_[contact].add(t, R, tau, dt, state);
+  }
+
+  /// @brief Total linear momentum (N s); the drift is measured from the first value given.
+  void track_momentum(const Vec2& p);
+
+  /// @brief One output row: the first row's kinetic + strain energy is E0, the last one's is the
+  /// final energy.
+  void add_row(HistoryRow row);
+
+  /// @brief Centre-of-mass velocity (m/s) of a body at the end of the run.
+  void set_final_velocity(const std::string& body, const Vec2& v) { r_.final_velocity[body] = v; }
+
+  /// @brief Fills each contact's summary (names from the scene, kind as given, intervals,
+  /// impulses, peaks, stick/slip counts) and the wall time, and hands the result over (the
+  /// recorder is spent afterwards).
+  /// @param kinds the kind of each scene contact, in scene order
+  SimulationResult finish(const std::vector<ContactKind>& kinds);
+
+  /// @brief The summary's description of a sampling kind.
+  static const char* describe(ContactSampling s);
+
+ private:
+  const Scene& scene_;
+  SimulationResult r_;
+  std::vector<ContactStats> stats_;
+  bool momentum_started_ = false;
+  Vec2 p0_{};
+  std::chrono::steady_clock::time_point wall0_;
+};
+
+}  // namespace beamimpact

@@ -1,0 +1,21 @@
+#pragma once
+/// @file output_files.hpp
+/// @brief Writes one run's history.csv and summary.json (columns and keys of interface.md).
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include <beamimpact/record/SimulationResult.hpp>
+
+namespace beamimpact {
+
+/// @brief The summary.json document of a run (scene identity, settings, defaults, results).
+nlohmann::json summary_json(const Scene& scene, const SimulationResult& result);
+
+/// @brief Writes dir/history.csv then dir/summary.json. summary.json is written last and
+/// atomically: its presence marks a complete run. A stale summary.json in dir is removed first.
+/// Throws std::runtime_error if the result holds a non-finite number (nothing complete is left).
+void write_outputs(const Scene& scene, const SimulationResult& result, const std::filesystem::path& dir);
+
+}  // namespace beamimpact

@@ -1,0 +1,65 @@
+// The writer: interface.md columns, and a non-finite value leaves nothing that looks complete.
+#include <beamimpact/record/output_files.hpp>
+
+#include <cmath>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include <beamimpact/testing/test_scenes.hpp>
+
+namespace beamimpact {
+namespace {
+
+namespace fs = std::filesystem;
+
+SimulationResult one_row(double R) {
+  SimulationResult r;
+  r.method = "test";
+  HistoryRow row;
+  row.contacts.resize(2);
+  row.contacts[0].R = R;
+  r.history.push_back(row);
+  return r;
+}
+
+Scene two_contacts() {
+  Scene s;
+  s.name = "t";
+  s.contacts.resize(2);
+  return s;
+}
+
+TEST(RunOutput, ColumnsRepeatPerContactWithSuffixes) {
+  const auto c = history_columns(2);
+  EXPECT_EQ(c.front(), "t");
+  EXPECT_EQ(c[1], "R");
+  EXPECT_NE(std::find(c.begin(), c.end(), "R_2"), c.end());
+  EXPECT_NE(std::find(c.begin(), c.end(), "vb_y_2"), c.end());
+  EXPECT_EQ(c.back(), "py");
+}
+
+TEST(RunOutput, WritesBothFiles) {
+  const fs::path d = testing::temp_path("ro_ok");
+  fs::remove_all(d);
+  write_outputs(two_contacts(), one_row(1.5), d);
+  EXPECT_TRUE(fs::exists(d / "history.csv"));
+  EXPECT_TRUE(fs::exists(d / "summary.json"));
+  std::ifstream h(d / "history.csv");
+  std::string header, line;
+  std::getline(h, header);
+  std::getline(h, line);
+  EXPECT_EQ(line.substr(0, 6), "0,1.5,");
+}
+
+TEST(RunOutput, NonFiniteValueWritesNothingComplete) {
+  const fs::path d = testing::temp_path("ro_nan");
+  fs::remove_all(d);
+  write_outputs(two_contacts(), one_row(1.0), d);  // an earlier, complete result in the same place
+  EXPECT_THROW(write_outputs(two_contacts(), one_row(std::nan("")), d), std::runtime_error);
+  EXPECT_FALSE(fs::exists(d / "summary.json"));
+  EXPECT_FALSE(fs::exists(d / "history.csv"));
+}
+
+}  // namespace
+}  // namespace beamimpact

@@ -1,0 +1,29 @@
+#include <beamimpact/util/Progress.hpp>
+
+#include <cstdio>
+#include <unistd.h>
+
+namespace beamimpact {
+
+Progress::Progress(std::string label, double total)
+    : label_(std::move(label)), total_(total), start_(std::chrono::steady_clock::now()), last_(start_) {}
+
+void Progress::report(double value) {
+  using namespace std::chrono;
+  const auto now = steady_clock::now();
+  if (now - start_ < seconds(1) || now - last_ < milliseconds(500)) return;
+  last_ = now;
+  const double pct = total_ > 0 ? 100.0 * value / total_ : 0.0;
+  // On a terminal, one line rewritten in place; in a log, one line per update.
+  const bool tty = isatty(fileno(stderr));
+  std::fprintf(stderr, "%s%s: %3.0f%% (%.4g of %.4g)%s", tty ? "\r" : "", label_.c_str(), pct,
+               value, total_, tty ? "" : "\n");
+  std::fflush(stderr);
+  printed_ = tty;
+}
+
+Progress::~Progress() {
+  if (printed_) std::fprintf(stderr, "\n");
+}
+
+}  // namespace beamimpact

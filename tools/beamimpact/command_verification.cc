@@ -1,0 +1,197 @@
+#include "command_verification.hpp"
+
+#include <chrono>
+#include <ctime>
+#include <filesystem>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include <beamimpact/api/registry.hpp>
+#include <beamimpact/version.hpp>
+#include "CommandExit.hpp"
+#include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/verification/compare/compare_runs.hpp>
+#include <beamimpact/verification/matrix/VerificationMatrix.hpp>
+#include <beamimpact/verification/matrix/evaluate.hpp>
+#include <beamimpact/verification/matrix/reports.hpp>
+#include <beamimpact/verification/matrix/execute_jobs.hpp>
+#include <beamimpact/verification/matrix/sweep.hpp>
+
+namespace beamimpact {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace verification;
+
+struct CompareArgs {
+  std::string a, b, json;
+  CompareOptions options;
+};
+
+struct VerifyArgs {
+  std::string matrix = "verification/matrix.toml", out, tier = "quick", only;
+  int jobs = 1;
+};
+
+struct SweepArgs {
+  SweepOptions o;
+  std::string out;
+  std::string scene;
+};
+
+std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
+  return buf;
+}
+
+/// Starts runs with this very program; external methods' scripts resolve against `root`.
+Launcher launcher(const fs::path& root) {
+  Launcher l;
+  l.exe = fs::read_symlink("/proc/self/exe");
+  l.root = root;
+  return l;
+}
+
+void compare(const CompareArgs& a) {
+  const Comparison c = compare_runs(StoredRun::read(a.a), StoredRun::read(a.b), a.options);
+  fmt::print("{}", c.to_text());
+  const fs::path json = a.json.empty() ? fs::path(a.a) / "compare.json" : fs::path(a.json);
+  write_file_atomic(json, c.to_json().dump(1) + "\n");
+  fmt::print("wrote {}\n", json.string());
+}
+
+void verify(const VerifyArgs& a) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string started = utc_now();
+  if (a.jobs < 1) throw SceneError(a.matrix, "--jobs", "expected a positive number of parallel runs");
+  const VerificationMatrix m = VerificationMatrix::load(a.matrix);
+  std::vector<JobSpec> specs = m.runs(a.tier);
+  std::vector<const Case*> cases;
+  std::vector<const Convergence*> ladders;
+  auto selected = [&](const std::string& name) { return a.only.empty() || name.find(a.only) != std::string::npos; };
+  for (const auto& c : m.cases)
+    if (VerificationMatrix::in_tier(c.tier, a.tier) && selected(c.name())) cases.push_back(&c);
+  for (const auto& v : m.convergence)
+    if (VerificationMatrix::in_tier(v.tier, a.tier) && selected(v.name())) ladders.push_back(&v);
+  if (!a.only.empty()) {  // only the runs the selected items need
+    specs.clear();
+    std::set<std::string> seen;
+    auto add = [&](const JobSpec& s) { if (seen.insert(s.key()).second) specs.push_back(s); };
+    for (const auto* c : cases) { add(c->run); add(c->reference); }
+    for (const auto* v : ladders) for (const auto& s : v->runs) add(s);
+  }
+  const fs::path out = a.out;
+  fs::create_directories(out);
+  fmt::print(stderr, "verify: {} case(s), {} convergence ladder(s), {} run(s), tier {}, {} job(s)\n", cases.size(),
+             ladders.size(), specs.size(), a.tier, a.jobs);
+  const auto runs = execute_jobs(specs, out / "runs", launcher(m.root), a.jobs, m.timeout);
+
+  std::vector<ItemResult> items;
+  for (const auto* c : cases) items.push_back(evaluate_case(*c, runs));
+  for (const auto* v : ladders) items.push_back(evaluate_ladder(*v, runs));
+
+  ReportContext ctx;
+  ctx.command = fmt::format("beamimpact verify {} --tier {} --out {} --jobs {}{}", a.matrix, a.tier, a.out, a.jobs,
+                            a.only.empty() ? "" : " --only '" + a.only + "'");
+  ctx.matrix = a.matrix;
+  ctx.tier = a.tier;
+  ctx.version = kVersion;
+  ctx.started = started;
+  ctx.jobs = a.jobs;
+  ctx.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  write_junit(out / "junit.xml", ctx, items);
+  write_json(out / "norms.json", ctx, items);
+  write_markdown(out / "report.md", ctx, items);
+
+  int gates = 0, failed = 0, skipped = 0;
+  for (const auto& i : items)
+    for (const auto& g : i.gates) {
+      ++gates;
+      if (g.status == "fail") {
+        ++failed;
+        fmt::print("FAIL {}: {} ({})\n", i.name, g.gate.metric, g.message);
+      }
+      skipped += g.status == "skipped";
+    }
+  fmt::print("verify {}: {} gates, {} passed, {} failed, {} skipped, {:.1f} s\nreport: {}\n",
+             failed ? "FAILED" : "passed", gates, gates - failed - skipped, failed, skipped, ctx.wall_seconds,
+             (out / "report.md").string());
+  fmt::print("junit: {}\nnorms: {}\n", (out / "junit.xml").string(), (out / "norms.json").string());
+  if (failed) throw CommandExit{1};
+}
+
+void sweep(SweepArgs& a) {
+  const auto start = std::chrono::steady_clock::now();
+  a.o.scene = a.scene;
+  a.o.out = a.out;
+  const SweepResult r = execute_sweep(a.o, launcher(find_source_root(a.scene)));
+  std::string dts, meshes;
+  for (double d : a.o.fractions.empty() ? a.o.dts : a.o.fractions) dts += fmt::format("{}{:g}", dts.empty() ? "" : ",", d);
+  for (const auto& m : a.o.meshes) meshes += (meshes.empty() ? "" : ",") + m;
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::string header = fmt::format(
+      "- command: `beamimpact sweep {} --method {} {} {}{} --reference {} --out {} --jobs {}`\n- version: `{}`\n"
+      "- made {} (UTC), wall time {:.1f} s\n",
+      a.scene, a.o.method, a.o.fractions.empty() ? "--dt" : "--fraction", dts, meshes.empty() ? "" : " --mesh " + meshes, a.o.reference, a.out, a.o.jobs, kVersion,
+      utc_now(), wall);
+  write_sweep(a.o, r, header);
+  for (const auto& p : r.points) {
+    const auto& s = p.outcome.spec;
+    fmt::print("{:<28} {:>8} steps {:>9.4f} s", s.settings_label(), p.outcome.steps, p.outcome.solver_seconds);
+    if (p.comparison) {
+      for (const char* n : {"impulse", "I.rel_linf", "ua.rel_l2"}) {
+        const Norm* x = p.comparison->find(n);
+        fmt::print("  {} {}", n, x && x->value ? fmt::format("{:.3e}", *x->value) : "n/a");
+      }
+    } else {
+      fmt::print("  {}: {}", status_name(p.outcome.status), p.outcome.message);
+    }
+    fmt::print("\n");
+  }
+  fmt::print("errors against {}\nreport: {}\n", r.reference_label, (fs::path(a.out) / "sweep.md").string());
+}
+
+}  // namespace
+
+void add_verification_commands(CLI::App& app) {
+  auto ca = std::make_shared<CompareArgs>();
+  CLI::App* c = app.add_subcommand("compare", "Error norms of run DIR_1 against reference run DIR_2 (each norm's definition is printed)");
+  c->add_option("DIR_1", ca->a, "Run directory (history.csv, summary.json)")->required();
+  c->add_option("DIR_2", ca->b, "Reference run directory")->required();
+  c->add_option("--json", ca->json, "Write the norms as JSON here (default DIR_1/compare.json)");
+  c->add_option("--window", ca->options.window, "s, force averaging window (default 10 coarser output steps)");
+  c->add_option("--grid", ca->options.grid_step, "s, common grid step (default the finer output step)");
+  c->add_option("--merge", ca->options.merge_gap, "s, contact samples closer than this are one impact (default 3.5 coarser output steps)");
+  c->callback([ca] { compare(*ca); });
+
+  auto va = std::make_shared<VerifyArgs>();
+  CLI::App* v = app.add_subcommand("verify", "Run the verification matrix; exit 1 if any gate fails");
+  v->add_option("MATRIX", va->matrix, "Matrix file")->capture_default_str();
+  v->add_option("--out", va->out, "Output directory (runs/, junit.xml, norms.json, report.md)")->required();
+  v->add_option("--tier", va->tier, "quick (CI) or full (adds fine meshes and small dt)")
+      ->check(CLI::IsMember({"quick", "full"}))->capture_default_str();
+  v->add_option("--jobs", va->jobs, "Runs in parallel")->capture_default_str();
+  v->add_option("--only", va->only, "Only cases whose name contains this text (e.g. s1_central)");
+  v->callback([va] { verify(*va); });
+
+  auto sa = std::make_shared<SweepArgs>();
+  CLI::App* s = app.add_subcommand("sweep", "Error norms and wall time of one scene at several dt (and meshes)");
+  s->add_option("SCENE", sa->scene, "Scene file")->required();
+  auto* dt = s->add_option("--dt", sa->o.dts, "s, time steps, e.g. 0.01,0.005,0.0025")->delimiter(',');
+  auto* fr = s->add_option("--fraction", sa->o.fractions,
+                           "fractions of the critical step, for scenes with dt = \"auto\" (e.g. 0.5,0.25)")->delimiter(',');
+  dt->excludes(fr);
+  s->add_option("--mesh", sa->o.meshes, "Element multipliers (beam methods), e.g. 1,2,4")->delimiter(',');
+  s->add_option("--method", sa->o.method, "Method under test")->capture_default_str();
+  s->add_option("--reference", sa->o.reference,
+                "self (the method at the finest dt/4 on the finest mesh), a method name (" + method_names() + "), or a run directory")
+      ->capture_default_str();
+  s->add_option("--out", sa->out, "Output directory (runs/, sweep.md, sweep.csv, sweep.json)")->required();
+  s->add_option("--jobs", sa->o.jobs, "Runs in parallel")->capture_default_str();
+  s->callback([sa] { sweep(*sa); });
+}
+
+}  // namespace beamimpact

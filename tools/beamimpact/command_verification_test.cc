@@ -1,0 +1,165 @@
+// The compare / verify commands end to end: exit codes, skip handling, JUnit naming.
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+namespace beamimpact {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int code;
+  std::string out;
+};
+
+class Commands : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    src_ = BEAMIMPACT_SOURCE;
+    exe_ = BEAMIMPACT_EXE;
+    tmp_ = fs::temp_directory_path() / fmt::format("beamimpact_commands_{}", ::getpid());
+    fs::remove_all(tmp_);
+    fs::create_directories(tmp_);
+  }
+  void TearDown() override { fs::remove_all(tmp_); }
+
+  Result run(const std::string& args) {
+    const fs::path log = tmp_ / "out.txt";
+    const int rc = std::system(fmt::format("cd '{}' && '{}' {} > '{}' 2>&1", src_.string(), exe_.string(), args,
+                                           log.string()).c_str());
+    std::ifstream in(log);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return {WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, ss.str()};
+  }
+
+  std::string read(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  }
+
+  fs::path matrix(const std::string& body) {
+    const fs::path p = tmp_ / "m.toml";
+    std::ofstream(p) << fmt::format("[settings]\nroot = \"{}\"\n[scenes]\ns1 = \"verification/scenes/paper/s1_central.toml\"\n",
+                                    src_.string())
+                     << body;
+    return p;
+  }
+
+  fs::path src_, exe_, tmp_;
+};
+
+// The S1 paper rows of the real matrix pass, and the JUnit file names scene, method and dt.
+TEST_F(Commands, VerifyNamesCasesBySceneMethodAndDt) {
+  const Result r = run(fmt::format("verify verification/matrix.toml --only 's1_central paper dt=0.01 vs' --out '{}' --jobs 2",
+                                   (tmp_ / "v").string()));
+  EXPECT_EQ(r.code, 0) << r.out;
+  const std::string junit = read(tmp_ / "v" / "junit.xml");
+  EXPECT_NE(junit.find("<testsuite name=\"s1_central\""), std::string::npos) << junit;
+  EXPECT_NE(junit.find("classname=\"s1_central.paper.dt=0.01\""), std::string::npos) << junit;
+  EXPECT_NE(junit.find("name=\"s1_central paper dt=0.01 vs "), std::string::npos) << junit;
+  EXPECT_EQ(junit.find("<failure"), std::string::npos) << junit;
+  EXPECT_NE(read(tmp_ / "v" / "report.md").find("version: `"), std::string::npos);
+  EXPECT_NE(read(tmp_ / "v" / "norms.json").find("\"definition\""), std::string::npos);
+}
+
+// A method of the registry that cannot run here is "skipped: <why>": it fails the gate when
+// required, not otherwise. Here FEniCSx's script is missing under the matrix's root.
+TEST_F(Commands, SkippedRunFailsOnlyWhenRequired) {
+  const fs::path root = tmp_ / "root";
+  fs::create_directories(root / "verification/scenes/paper");
+  fs::copy_file(src_ / "verification/scenes/paper/s1_central.toml", root / "verification/scenes/paper/s1_central.toml");
+  const std::string body = R"(
+[[case]]
+scene = "s1"
+method = "fenicsx"
+required = %s
+reference = { method = "paper" }
+gates = [{ metric = "impulse", tol = 0.01, why = "a method whose program is missing" }]
+)";
+  for (const bool required : {false, true}) {
+    std::string b = body;
+    b.replace(b.find("%s"), 2, required ? "true" : "false");
+    const fs::path m = tmp_ / "m_root.toml";
+    std::ofstream(m) << fmt::format("[settings]\nroot = \"{}\"\n[scenes]\ns1 = \"verification/scenes/paper/s1_central.toml\"\n",
+                                    root.string())
+                     << b;
+    const Result r = run(fmt::format("verify '{}' --out '{}'", m.string(), (tmp_ / "v").string()));
+    EXPECT_EQ(r.code, required ? 1 : 0) << r.out;
+    const std::string junit = read(tmp_ / "v" / "junit.xml");
+    EXPECT_NE(junit.find("references/fenicsx/run.py not found"), std::string::npos) << junit;
+    EXPECT_NE(junit.find(required ? "<failure" : "<skipped"), std::string::npos) << junit;
+  }
+}
+
+// A method that is not in the registry is bad input: exit 2, naming the file, key and the names.
+TEST_F(Commands, UnknownMethodIsBadInput) {
+  const fs::path m = matrix(R"(
+[[case]]
+scene = "s1"
+method = "nosuch"
+reference = { method = "paper" }
+gates = [{ metric = "impulse", tol = 0.01, why = "a method that does not exist" }]
+)");
+  const Result r = run(fmt::format("verify '{}' --out '{}'", m.string(), (tmp_ / "v").string()));
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("case[0].method"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("paper, exact, ida, fenicsx"), std::string::npos) << r.out;
+}
+
+// Bad matrix: one message naming the file and the key, exit code 2, no report presented.
+TEST_F(Commands, BadMatrixExitsTwo) {
+  const fs::path m = matrix(R"(
+[[case]]
+scene = "s1"
+method = "paper"
+reference = { method = "ida" }
+gates = [{ metric = "impluse", tol = 0.01, why = "misspelt metric name" }]
+)");
+  const Result r = run(fmt::format("verify '{}' --out '{}'", m.string(), (tmp_ / "v").string()));
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find(m.string()), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("case[0].gates[0].metric"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(tmp_ / "v" / "report.md"));
+}
+
+// compare: prints every norm with its definition; a directory that is not a run exits 2.
+TEST_F(Commands, CompareRunsAndRejectsNonRuns) {
+  const std::string s1 = "verification/scenes/paper/s1_central.toml";
+  ASSERT_EQ(run(fmt::format("run {} --out '{}' --quiet", s1, (tmp_ / "a").string())).code, 0);
+  ASSERT_EQ(run(fmt::format("run {} --out '{}' --quiet --set time.dt=0.005", s1, (tmp_ / "b").string())).code, 0);
+  const Result r = run(fmt::format("compare '{}' '{}' --json '{}'", (tmp_ / "a").string(), (tmp_ / "b").string(),
+                                   (tmp_ / "c.json").string()));
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("I.rel_linf: max_t |a-b| / max_t |b|"), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::exists(tmp_ / "c.json"));
+  const Result bad = run(fmt::format("compare '{}' '{}'", tmp_.string(), (tmp_ / "b").string()));
+  EXPECT_EQ(bad.code, 2) << bad.out;
+  EXPECT_NE(bad.out.find("summary.json"), std::string::npos) << bad.out;
+}
+
+// sweep: one row per dt with wall time and the norms against the reference; bad dt exits 2.
+TEST_F(Commands, SweepTabulatesEachStep) {
+  const std::string s1 = "verification/scenes/paper/s1_central.toml";
+  const Result r = run(fmt::format("sweep {} --dt 0.01,0.005 --reference exact --out '{}' --jobs 2", s1,
+                                   (tmp_ / "sw").string()));
+  ASSERT_EQ(r.code, 0) << r.out;
+  const std::string md = read(tmp_ / "sw" / "sweep.md");
+  EXPECT_NE(md.find("| 0.01 | scene | 400 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 0.005 | scene | 800 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("Errors against: exact"), std::string::npos) << md;
+  const std::string csv = read(tmp_ / "sw" / "sweep.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3) << csv;  // header + 2 steps
+  EXPECT_EQ(run(fmt::format("sweep {} --dt -0.01 --out '{}'", s1, (tmp_ / "sw2").string())).code, 2);
+}
+
+}  // namespace
+}  // namespace beamimpact

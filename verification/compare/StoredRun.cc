@@ -1,0 +1,138 @@
+#include <beamimpact/verification/compare/StoredRun.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include <beamimpact/scene/SceneError.hpp>
+
+namespace beamimpact::verification {
+namespace {
+
+std::vector<std::string> split_csv(const std::string& line) {
+  std::vector<std::string> out;
+  std::string cell;
+  std::istringstream in(line);
+  while (std::getline(in, cell, ',')) {
+    // Tolerate spaces and a trailing '\r' (files edited on other systems).
+    const auto b = cell.find_first_not_of(" \t\r");
+    const auto e = cell.find_last_not_of(" \t\r");
+    out.push_back(b == std::string::npos ? std::string() : cell.substr(b, e - b + 1));
+  }
+  if (!line.empty() && line.back() == ',') out.emplace_back();
+  return out;
+}
+
+void check_times(const std::vector<double>& t, const std::string& file) {
+  if (t.empty()) throw SceneError(file, "", "expected at least one data row after the header");
+  for (std::size_t i = 1; i < t.size(); ++i) {
+    if (!(t[i] > t[i - 1])) {
+      throw SceneError(file, "t", "expected strictly increasing times, row " + std::to_string(i + 2) +
+                                      " has t = " + std::to_string(t[i]) + " after " +
+                                      std::to_string(t[i - 1]));
+    }
+  }
+}
+
+}  // namespace
+
+StoredRun StoredRun::read(const std::filesystem::path& dir) {
+  const std::string csv = (dir / "history.csv").string();
+  const std::string sum = (dir / "summary.json").string();
+  StoredRun h;
+  h.label_ = dir.string();
+
+  // summary.json is written last by every method: without it the run is not complete.
+  std::ifstream sin(sum);
+  if (!sin) throw SceneError(sum, "", "expected summary.json of a complete run (not found or unreadable)");
+  try {
+    h.summary_ = nlohmann::json::parse(sin);
+  } catch (const nlohmann::json::exception& e) {
+    throw SceneError(sum, "", std::string("expected valid JSON: ") + e.what());
+  }
+
+  std::ifstream in(csv);
+  if (!in) throw SceneError(csv, "", "expected history.csv (not found or unreadable)");
+  std::string line;
+  if (!std::getline(in, line)) throw SceneError(csv, "", "expected a header line, the file is empty");
+  const std::vector<std::string> names = split_csv(line);
+  std::vector<std::vector<double>*> cols;
+  for (const auto& n : names) {
+    if (n.empty()) throw SceneError(csv, "", "expected a column name in every header cell");
+    if (h.columns_.count(n)) throw SceneError(csv, n, "column appears twice in the header");
+    cols.push_back(&h.columns_[n]);
+  }
+  for (const char* required : {"t", "R"}) {
+    if (!h.columns_.count(required)) {
+      throw SceneError(csv, required, "expected this column in the header (interface.md), found: " + line);
+    }
+  }
+  long row = 1;
+  while (std::getline(in, line)) {
+    ++row;
+    if (line.empty() || line == "\r") continue;
+    const auto cells = split_csv(line);
+    if (cells.size() != names.size()) {
+      throw SceneError(csv, "", "row " + std::to_string(row) + " has " + std::to_string(cells.size()) +
+                                    " cells, expected " + std::to_string(names.size()));
+    }
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      char* end = nullptr;
+      const double v = std::strtod(cells[c].c_str(), &end);
+      if (cells[c].empty() || end != cells[c].c_str() + cells[c].size() || !std::isfinite(v)) {
+        throw SceneError(csv, names[c], "row " + std::to_string(row) + ": expected a finite number, found '" +
+                                            cells[c] + "'");
+      }
+      cols[c]->push_back(v);
+    }
+  }
+  check_times(h.columns_.at("t"), csv);
+  return h;
+}
+
+StoredRun StoredRun::from_columns(std::map<std::string, std::vector<double>> columns,
+                                    nlohmann::json summary, std::string label) {
+  StoredRun h;
+  h.label_ = std::move(label);
+  if (!columns.count("t")) throw SceneError(h.label_, "t", "expected a time column");
+  for (const auto& [name, v] : columns) {
+    if (v.size() != columns.at("t").size()) {
+      throw SceneError(h.label_, name, "expected as many values as times");
+    }
+  }
+  h.columns_ = std::move(columns);
+  h.summary_ = std::move(summary);
+  check_times(h.columns_.at("t"), h.label_);
+  return h;
+}
+
+const std::vector<double>& StoredRun::column(const std::string& name) const {
+  const auto it = columns_.find(name);
+  if (it == columns_.end()) {
+    throw SceneError(label_ + "/history.csv", name, "expected this column (interface.md), it is absent");
+  }
+  return it->second;
+}
+
+int StoredRun::contacts() const {
+  int n = has("R") ? 1 : 0;
+  while (has(contact_column("R", n + 1))) ++n;
+  return n;
+}
+
+double StoredRun::output_step() const {
+  const auto& tt = t();
+  if (tt.size() < 2) return 0.0;
+  std::vector<double> d(tt.size() - 1);
+  for (std::size_t i = 1; i < tt.size(); ++i) d[i - 1] = tt[i] - tt[i - 1];
+  std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
+  return d[d.size() / 2];
+}
+
+std::string StoredRun::contact_column(const std::string& base, int k) {
+  return k <= 1 ? base : base + "_" + std::to_string(k);
+}
+
+}  // namespace beamimpact::verification

@@ -1,0 +1,65 @@
+// Reading a run directory: good files parse, bad ones give one message naming file and column.
+#include <beamimpact/verification/compare/StoredRun.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include <beamimpact/scene/SceneError.hpp>
+
+namespace beamimpact::verification {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path make_run(const std::string& name, const std::string& csv, bool summary = true) {
+  const fs::path dir = fs::temp_directory_path() / ("beamimpact_rh_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "history.csv") << csv;
+  if (summary) std::ofstream(dir / "summary.json") << R"({"method": "paper", "bodies": {}})";
+  return dir;
+}
+
+std::string error_of(const fs::path& dir) {
+  try {
+    StoredRun::read(dir);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(StoredRun, ReadsColumnsAndContacts) {
+  const auto dir = make_run("ok", "t,R,gap,R_2\n0,0,1,0\n0.01,2.5,0,1\n0.02,0,0.1,0\n");
+  const auto h = StoredRun::read(dir);
+  EXPECT_EQ(h.contacts(), 2);
+  EXPECT_DOUBLE_EQ(h.column("R")[1], 2.5);
+  EXPECT_DOUBLE_EQ(h.output_step(), 0.01);
+  EXPECT_EQ(h.summary().at("method"), "paper");
+  EXPECT_THROW(h.column("kinetic"), SceneError);
+  fs::remove_all(dir);
+}
+
+TEST(StoredRun, BadInputNamesFileAndColumn) {
+  struct Case { std::string name, csv; bool summary; std::string expect; };
+  const std::vector<Case> cases = {
+      {"noR", "t,gap\n0,1\n", true, "key 'R'"},
+      {"nan", "t,R\n0,0\n0.01,nan\n", true, "row 3"},
+      {"word", "t,R\n0,abc\n", true, "'abc'"},
+      {"short", "t,R\n0,0\n0.01\n", true, "has 1 cells, expected 2"},
+      {"time", "t,R\n0,0\n0,1\n", true, "strictly increasing"},
+      {"nosummary", "t,R\n0,0\n", false, "summary.json"},
+  };
+  for (const auto& c : cases) {
+    const auto dir = make_run(c.name, c.csv, c.summary);
+    const std::string msg = error_of(dir);
+    EXPECT_NE(msg.find(c.expect), std::string::npos) << c.name << ": " << msg;
+    EXPECT_NE(msg.find(dir.string()), std::string::npos) << c.name << ": " << msg;
+    fs::remove_all(dir);
+  }
+}
+
+}  // namespace
+}  // namespace beamimpact::verification

@@ -1,0 +1,242 @@
+#include <beamimpact/verification/matrix/VerificationMatrix.hpp>
+
+#include <cmath>
+#include <map>
+#include <set>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include <beamimpact/api/registry.hpp>
+#include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/scene/TableReader.hpp>
+#include <beamimpact/verification/compare/compare_runs.hpp>
+
+namespace beamimpact::verification {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> strings(TableReader& r, const std::string& key) {
+  std::vector<std::string> out;
+  const toml::node* n = r.raw(key);
+  if (!n) return out;
+  const toml::array* a = n->as_array();
+  if (!a) r.fail(key, "expected an array of strings");
+  for (const auto& e : *a) {
+    const auto s = e.value<std::string>();
+    if (!s) r.fail(key, "expected an array of strings");
+    out.push_back(*s);
+  }
+  return out;
+}
+
+std::vector<double> numbers(TableReader& r, const std::string& key) {
+  std::vector<double> out;
+  const toml::node* n = r.raw(key);
+  const toml::array* a = n ? n->as_array() : nullptr;
+  if (!a || a->size() < 2) r.fail(key, "expected an array of at least two positive numbers (coarse to fine)");
+  for (const auto& e : *a) {
+    const auto v = e.value<double>();
+    if (!v || !(*v > 0.0)) r.fail(key, "expected an array of positive numbers");
+    out.push_back(*v);
+  }
+  return out;
+}
+
+const toml::table& sub_table(TableReader& r, const std::string& key) {
+  const toml::node* n = r.raw(key);
+  if (!n || !n->as_table()) r.fail(key, "expected a table such as { method = \"exact\" }");
+  return *n->as_table();
+}
+
+class Loader {
+ public:
+  explicit Loader(const fs::path& file) : file_(file.string()) {}
+
+  VerificationMatrix load() {
+    toml::table doc;
+    try {
+      doc = toml::parse_file(file_);
+    } catch (const toml::parse_error& e) {
+      throw SceneError(file_, "", std::string("expected valid TOML: ") + std::string(e.description()));
+    }
+    VerificationMatrix m;
+    m.file = fs::absolute(file_);
+    TableReader top(doc, file_, "", nullptr);
+    m.root = m.file.parent_path();
+    if (const toml::node* s = top.raw("settings")) {
+      if (!s->as_table()) top.fail("settings", "expected a table");
+      TableReader st(*s->as_table(), file_, "settings", nullptr);
+      if (st.has("root")) m.root = m.file.parent_path() / st.string("root", "a directory relative to the matrix file");
+      m.timeout = st.number_or("timeout", m.timeout, "a positive number of seconds per run");
+      st.finish();
+    }
+    m.root = m.root.lexically_normal();
+    root_ = m.root;
+    if (const toml::node* s = top.raw("scenes")) {
+      if (!s->as_table()) top.fail("scenes", "expected a table of name = \"path\"");
+      TableReader sc(*s->as_table(), file_, "scenes", nullptr);
+      for (const auto& [k, v] : *s->as_table()) {
+        const std::string name(k.str());
+        scenes_[name] = sc.string(name, "a scene path relative to the root");
+      }
+    }
+    each(top, "case", [&](TableReader& r, const std::string& p) { m.cases.push_back(read_case(r, p)); });
+    each(top, "convergence", [&](TableReader& r, const std::string& p) { m.convergence.push_back(read_ladder(r, p)); });
+    top.finish();
+    if (m.cases.empty() && m.convergence.empty()) throw SceneError(file_, "case", "expected at least one [[case]]");
+    return m;
+  }
+
+ private:
+  template <class F>
+  void each(TableReader& top, const std::string& key, F f) {
+    const toml::node* n = top.raw(key);
+    if (!n) return;
+    const toml::array* a = n->as_array();
+    if (!a) top.fail(key, "expected an array of tables ([[" + key + "]])");
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const toml::table* t = (*a)[i].as_table();
+      const std::string p = fmt::format("{}[{}]", key, i);
+      if (!t) throw SceneError(file_, p, "expected a table");
+      TableReader r(*t, file_, p, nullptr);
+      f(r, p);
+      r.finish();
+    }
+  }
+
+  fs::path scene_path(TableReader& r) {
+    std::string s = r.string("scene", "a scene name from [scenes] or a path relative to the root");
+    if (scenes_.count(s)) s = scenes_.at(s);
+    const fs::path p = (root_ / s).lexically_normal();
+    if (!fs::exists(p)) r.fail("scene", "expected an existing scene file, " + p.string() + " does not exist");
+    return p;
+  }
+
+  /// Fields shared by runs and references; `dt` is read by the caller (a number or a list).
+  JobSpec read_spec(TableReader& r, const fs::path& scene, bool with_dt) {
+    JobSpec s;
+    s.scene = scene;
+    s.method = r.string("method", "a method name: " + method_names());
+    const Method* m = find_method(s.method);
+    if (!m) r.fail("method", "expected a method name (" + method_names() + "), got '" + s.method + "'");
+    if (with_dt && r.has("dt")) {
+      s.dt = r.number("dt", "a positive time step (s)");
+      if (!(*s.dt > 0.0)) r.fail("dt", "expected a positive time step (s)");
+    }
+    if (const toml::node* n = r.raw("mesh")) {
+      if (auto i = n->value<long>()) s.mesh = std::to_string(*i);
+      else if (auto str = n->value<std::string>()) s.mesh = *str;
+      else r.fail("mesh", "expected an element multiplier or a method's mesh preset name");
+    }
+    s.set = strings(r, "set");
+    s.args = strings(r, "args");
+    if ((s.dt && !m->accepts.dt) || (!s.set.empty() && !m->accepts.overrides))
+      r.fail(s.dt ? "dt" : "set", "the method '" + s.method + "' takes no " + (s.dt ? "dt" : "set") +
+                                      "; use its own options in args = [...]");
+    return s;
+  }
+
+  std::vector<Gate> read_gates(TableReader& r, const std::string& prefix, bool ladder) {
+    std::vector<Gate> gates;
+    const toml::node* n = r.raw("gates");
+    const toml::array* a = n ? n->as_array() : nullptr;
+    if (!a || a->empty()) r.fail("gates", "expected a non-empty array of { metric, tol, why }");
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const std::string p = fmt::format("{}.gates[{}]", prefix, i);
+      const toml::table* t = (*a)[i].as_table();
+      if (!t) throw SceneError(file_, p, "expected { metric = ..., tol = ..., why = ... }");
+      TableReader g(*t, file_, p, nullptr);
+      Gate gate;
+      gate.metric = g.string("metric", "a norm name of `beamimpact compare` (e.g. \"impulse\", \"R.rel_l2\")");
+      if (!known_norm(gate.metric)) g.fail("metric", "unknown norm '" + gate.metric + "' (see `beamimpact compare` output)");
+      if (g.has("tol")) gate.tol = g.number("tol", "a non-negative tolerance in the norm's unit");
+      if (ladder && g.has("min_order")) gate.min_order = g.number("min_order", "the least acceptable observed order");
+      if (!gate.tol && !gate.min_order) g.fail("tol", ladder ? "expected tol and/or min_order" : "expected a tolerance");
+      if (gate.tol && !(*gate.tol >= 0.0)) g.fail("tol", "expected a non-negative tolerance");
+      gate.why = g.string("why", "the justification of the tolerance (theory, mesh error, measured spread)");
+      if (gate.why.size() < 10) g.fail("why", "expected a real justification");
+      g.finish();
+      gates.push_back(gate);
+    }
+    return gates;
+  }
+
+  void common(TableReader& r, std::string& tier, bool& required, std::string& note) {
+    tier = r.choice_or("tier", "quick", {"quick", "full"});
+    required = r.boolean_or("required", true);
+    if (r.has("note")) note = r.string("note", "text");
+  }
+
+  Case read_case(TableReader& r, const std::string& prefix) {
+    Case c;
+    const fs::path scene = scene_path(r);
+    c.run = read_spec(r, scene, true);
+    const toml::table& ref = sub_table(r, "reference");
+    TableReader rr(ref, file_, prefix + ".reference", nullptr);
+    const fs::path ref_scene = rr.has("scene") ? scene_path(rr) : scene;
+    c.reference = read_spec(rr, ref_scene, true);
+    rr.finish();
+    common(r, c.tier, c.required, c.note);
+    c.gates = read_gates(r, prefix, false);
+    if (c.run.key() == c.reference.key()) r.fail("reference", "expected a run different from the case's own run");
+    return c;
+  }
+
+  Convergence read_ladder(TableReader& r, const std::string& prefix) {
+    Convergence v;
+    const fs::path scene = scene_path(r);
+    const JobSpec base = read_spec(r, scene, false);
+    const bool by_dt = r.has("dt");
+    if (by_dt == r.has("fraction")) r.fail("dt", "expected exactly one of dt = [...] or fraction = [...]");
+    v.steps = numbers(r, by_dt ? "dt" : "fraction");
+    for (std::size_t i = 0; i + 1 < v.steps.size(); ++i)
+      if (!(v.steps[i + 1] < v.steps[i])) r.fail(by_dt ? "dt" : "fraction", "expected decreasing values (coarse to fine)");
+    for (double s : v.steps) {
+      JobSpec spec = base;
+      if (by_dt) spec.dt = s;
+      else spec.set.push_back(fmt::format("time.fraction={:g}", s));
+      v.runs.push_back(spec);
+    }
+    common(r, v.tier, v.required, v.note);
+    v.gates = read_gates(r, prefix, true);
+    return v;
+  }
+
+  std::string file_;
+  fs::path root_;
+  std::map<std::string, std::string> scenes_;
+};
+
+}  // namespace
+
+std::string Case::name() const {
+  return run.label() + " vs " + (reference.scene == run.scene ? reference.settings_label() : reference.label());
+}
+
+std::string Convergence::name() const {
+  std::string s = runs.front().scene_name() + " " + runs.front().method + " " +
+                  (runs.front().dt ? "dt=" : "fraction=");
+  for (std::size_t i = 0; i < steps.size(); ++i) s += fmt::format("{}{:g}", i ? "/" : "", steps[i]);
+  if (!runs.front().mesh.empty()) s += " mesh=" + runs.front().mesh;
+  return s;
+}
+
+VerificationMatrix VerificationMatrix::load(const std::filesystem::path& file) { return Loader(file).load(); }
+
+std::vector<JobSpec> VerificationMatrix::runs(const std::string& tier) const {
+  std::vector<JobSpec> out;
+  std::set<std::string> seen;
+  auto add = [&](const JobSpec& s) {
+    if (seen.insert(s.key()).second) out.push_back(s);
+  };
+  for (const auto& c : cases)
+    if (in_tier(c.tier, tier)) { add(c.run); add(c.reference); }
+  for (const auto& v : convergence)
+    if (in_tier(v.tier, tier))
+      for (const auto& s : v.runs) add(s);
+  return out;
+}
+
+}  // namespace beamimpact::verification

@@ -1,0 +1,64 @@
+#pragma once
+/// @file VerificationMatrix.hpp
+/// @brief The verification matrix (verification/matrix.toml): cases of scene x method x dt/mesh
+/// compared with a reference run under gated norms, and self-convergence ladders.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <beamimpact/verification/matrix/JobSpec.hpp>
+
+namespace beamimpact::verification {
+
+/// @brief One gate: a norm with its limit and the reason for that limit.
+struct Gate {
+  std::string metric;               ///< a compare_runs norm name ("impulse", "R.rel_l2", ...)
+  std::optional<double> tol;        ///< passes when the error <= tol
+  std::optional<double> min_order;  ///< convergence only: passes when the observed order >= this
+  std::string why;                  ///< justification (theory, mesh error, measured spread)
+};
+
+/// @brief A run compared with a reference run.
+struct Case {
+  JobSpec run, reference;
+  std::string tier = "quick";       ///< "quick" (CI) or "full"
+  bool required = true;             ///< a skipped run fails the gate when required
+  std::vector<Gate> gates;
+  std::string note;                 ///< free text shown in the report
+  /// @brief "s1_central paper dt=0.01 vs exact".
+  std::string name() const;
+};
+
+/// @brief Self-convergence: the same method at successively refined steps; consecutive pairs
+/// are compared and the observed order of each norm is p = log(e_i / e_{i+1}) / log(r).
+struct Convergence {
+  std::vector<JobSpec> runs;        ///< coarse to fine
+  std::vector<double> steps;        ///< the refined quantity (dt or fraction) of each run
+  std::string tier = "quick";
+  bool required = true;
+  std::vector<Gate> gates;          ///< min_order (and optionally tol on the finest pair)
+  std::string note;
+  /// @brief "s1_central paper dt=0.01/0.005/0.0025".
+  std::string name() const;
+};
+
+/// @brief The whole matrix file.
+struct VerificationMatrix {
+  std::filesystem::path file;
+  std::filesystem::path root;       ///< repository root: scene paths and the FEniCSx script are relative to it
+  double timeout = 900.0;           ///< s, per run
+  std::vector<Case> cases;
+  std::vector<Convergence> convergence;
+
+  /// @brief Reads and checks a matrix file. Throws SceneError (file, key, what was expected) for
+  /// unknown keys, unknown metrics, gates without a tolerance or reason, and missing scenes.
+  static VerificationMatrix load(const std::filesystem::path& file);
+  /// @brief Every distinct run needed by the cases and ladders of a tier ("quick" or "full").
+  std::vector<JobSpec> runs(const std::string& tier) const;
+  /// @brief True when an item of tier `item` belongs to a run of tier `tier`.
+  static bool in_tier(const std::string& item, const std::string& tier) { return tier == "full" || item == tier; }
+};
+
+}  // namespace beamimpact::verification

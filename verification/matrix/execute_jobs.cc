@@ -1,0 +1,115 @@
+#include <beamimpact/verification/matrix/execute_jobs.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <fstream>
+#include <mutex>
+#include <thread>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <beamimpact/api/registry.hpp>
+#include <beamimpact/verification/matrix/child_process.hpp>
+
+namespace beamimpact::verification {
+namespace {
+
+JobOutcome run_one(const JobSpec& spec, const std::filesystem::path& dir, const Launcher& launcher,
+                   const std::string& why, double timeout) {
+  JobOutcome o{spec, dir, JobOutcome::Status::kFailed, {}, 0.0, 0.0, 0, 0.0};
+  if (!why.empty()) {
+    o.status = JobOutcome::Status::kSkipped;
+    o.message = why;
+    return o;
+  }
+  std::error_code ec;
+  std::filesystem::remove_all(dir, ec);  // never mistake an old result for this run's
+  std::filesystem::create_directories(dir);
+  std::vector<std::string> argv;
+  try {
+    argv = launcher.argv(spec, dir);
+  } catch (const std::exception& e) {
+    o.message = e.what();
+    return o;
+  }
+  {
+    std::ofstream log(dir / "run.log");
+    for (const auto& a : argv) log << a << ' ';
+    log << '\n';
+  }
+  const ProcessResult p = spawn_and_wait(argv, dir / "run.log", timeout);
+  o.process_seconds = p.wall_seconds;
+  if (!p.error.empty() || p.exit_code != 0) {
+    o.message = !p.error.empty() ? p.error : fmt::format("exit code {} (see {})", p.exit_code, (dir / "run.log").string());
+    return o;
+  }
+  std::ifstream in(dir / "summary.json");
+  if (!in) {
+    o.message = "exit code 0 but no summary.json (see " + (dir / "run.log").string() + ")";
+    return o;
+  }
+  try {
+    const auto j = nlohmann::json::parse(in);
+    o.solver_seconds = j.value("wall_seconds", 0.0);
+    o.steps = j.value("steps", 0L);
+    o.dt = j.value("dt", 0.0);
+  } catch (const std::exception& e) {
+    o.message = std::string("unreadable summary.json: ") + e.what();
+    return o;
+  }
+  o.status = JobOutcome::Status::kOk;
+  return o;
+}
+
+}  // namespace
+
+const char* status_name(JobOutcome::Status s) {
+  switch (s) {
+    case JobOutcome::Status::kOk: return "ok";
+    case JobOutcome::Status::kFailed: return "failed";
+    case JobOutcome::Status::kSkipped: return "skipped";
+  }
+  return "?";
+}
+
+std::map<std::string, JobOutcome> execute_jobs(const std::vector<JobSpec>& specs, const std::filesystem::path& out_dir,
+                                          const Launcher& launcher, int jobs, double timeout_seconds) {
+  // Likely-slow runs first (methods the registry marks slow, then small steps) so that the tail
+  // of the queue is short.
+  std::vector<JobSpec> order = specs;
+  auto slow = [](const JobSpec& s) {
+    const Method* m = find_method(s.method);
+    return m && m->slow;
+  };
+  std::stable_sort(order.begin(), order.end(), [&](const JobSpec& a, const JobSpec& b) {
+    const bool fa = slow(a), fb = slow(b);
+    if (fa != fb) return fa;
+    return a.dt.value_or(1e300) < b.dt.value_or(1e300);
+  });
+  // Availability is checked up front, in this thread (the FEniCSx check starts Python once).
+  std::vector<std::string> why;
+  for (const auto& s : order) why.push_back(launcher.unavailable(s));
+  std::map<std::string, JobOutcome> out;
+  std::mutex mu;
+  std::atomic<std::size_t> next{0};
+  std::size_t done = 0;
+  auto worker = [&] {
+    for (std::size_t i = next++; i < order.size(); i = next++) {
+      JobOutcome o = run_one(order[i], out_dir / order[i].key(), launcher, why[i], timeout_seconds);
+      std::lock_guard lock(mu);
+      ++done;
+      fmt::print(stderr, "[{}/{}] {}: {}{} ({:.2f} s)\n", done, order.size(), o.spec.label(), status_name(o.status),
+                 o.message.empty() ? "" : ": " + o.message, o.process_seconds);
+      std::fflush(stderr);
+      out.emplace(o.spec.key(), std::move(o));
+    }
+  };
+  std::vector<std::thread> pool;
+  const int n = std::max(1, std::min<int>(jobs, static_cast<int>(order.size())));
+  for (int i = 0; i < n; ++i) pool.emplace_back(worker);
+  for (auto& t : pool) t.join();
+  return out;
+}
+
+}  // namespace beamimpact::verification

@@ -110,11 +110,11 @@ void verify(const VerifyArgs& a) {
   for (const auto& i : items)
     for (const auto& g : i.gates) {
       ++gates;
-      if (g.status == "fail") {
+      if (g.status == GateStatus::kFail) {
         ++failed;
         fmt::print("FAIL {}: {} ({})\n", i.name, g.gate.metric, g.message);
       }
-      skipped += g.status == "skipped";
+      skipped += g.status == GateStatus::kSkipped;
     }
   fmt::print("verify {}: {} gates, {} passed, {} failed, {} skipped, {:.1f} s\nreport: {}\n",
              failed ? "FAILED" : "passed", gates, gates - failed - skipped, failed, skipped, ctx.wall_seconds,
@@ -169,7 +169,7 @@ void add_verification_commands(CLI::App& app) {
 
   auto va = std::make_shared<VerifyArgs>();
   CLI::App* v = app.add_subcommand("verify", "Run the verification matrix; exit 1 if any gate fails");
-  v->add_option("MATRIX", va->matrix, "Matrix file")->capture_default_str();
+  v->add_option("MATRIX", va->matrix, "VerificationMatrix file")->capture_default_str();
   v->add_option("--out", va->out, "Output directory (runs/, junit.xml, norms.json, report.md)")->required();
   v->add_option("--tier", va->tier, "quick (CI) or full (adds fine meshes and small dt)")
       ->check(CLI::IsMember({"quick", "full"}))->capture_default_str();

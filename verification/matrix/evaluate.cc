@@ -7,13 +7,21 @@
 #include <beamimpact/verification/compare/compare_runs.hpp>
 
 namespace beamimpact::verification {
+
+const char* to_string(GateStatus s) {
+  switch (s) {
+    case GateStatus::kPass: return "pass";
+    case GateStatus::kFail: return "fail";
+    default: return "skipped";
+  }
+}
 namespace {
 
 /// Gates of an item that could not be evaluated: skipped (not required) or failed.
 void not_evaluated(ItemResult& r, const std::vector<Gate>& gates, const std::string& why, bool skipped) {
   const bool fail = !skipped || r.required;
   for (const auto& g : gates) {
-    r.gates.push_back({g, std::nullopt, fail ? "fail" : "skipped",
+    r.gates.push_back({g, std::nullopt, fail ? GateStatus::kFail : GateStatus::kSkipped,
                        skipped ? (r.required ? "skipped, and the case is required: " + why : "skipped: " + why) : why});
   }
 }
@@ -47,12 +55,12 @@ std::string GateResult::limit() const {
 
 bool ItemResult::passed() const {
   for (const auto& g : gates)
-    if (g.status == "fail") return false;
+    if (g.status == GateStatus::kFail) return false;
   return true;
 }
 
 GateResult check_gate(const Gate& gate, const Comparison& cmp) {
-  GateResult r{gate, std::nullopt, "fail", {}};
+  GateResult r{gate, std::nullopt, GateStatus::kFail, {}};
   const Norm* n = cmp.find(gate.metric);
   if (!n) {
     r.message = "norm '" + gate.metric + "' not produced (contact missing in one of the runs?)";
@@ -64,7 +72,7 @@ GateResult check_gate(const Gate& gate, const Comparison& cmp) {
   }
   r.value = n->value;
   if (*n->value <= *gate.tol) {
-    r.status = "pass";
+    r.status = GateStatus::kPass;
   } else {
     r.message = fmt::format("{} = {:.4g} exceeds {:g}", gate.metric, *n->value, *gate.tol);
   }
@@ -144,10 +152,10 @@ ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, Job
       orders.push_back(observed_order(errors[i], errors[i + 1], v.steps[i] / v.steps[i + 1]));
   }
   for (const auto& g : v.gates) {
-    GateResult gr{g, std::nullopt, "pass", {}};
+    GateResult gr{g, std::nullopt, GateStatus::kPass, {}};
     const auto it = r.orders.find(g.metric);
     if (it == r.orders.end()) {
-      gr.status = "fail";
+      gr.status = GateStatus::kFail;
       gr.message = "norm '" + g.metric + "' not produced";
     } else {
       const auto& [errors, orders] = it->second;
@@ -156,17 +164,17 @@ ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, Job
         gr.value = orders.empty() ? std::nullopt : orders.back();
         if (!gr.value) {
           const bool zero = finest && *finest == 0.0;
-          gr.status = zero ? "pass" : "fail";
+          gr.status = zero ? GateStatus::kPass : GateStatus::kFail;
           gr.message = zero ? "errors are zero (converged to round-off): no order to observe"
                             : "order not observable (an error is zero or unavailable)";
         } else if (*gr.value < *g.min_order) {
-          gr.status = "fail";
+          gr.status = GateStatus::kFail;
           gr.message = fmt::format("observed order {:.3g} below {:g}", *gr.value, *g.min_order);
         }
       }
-      if (g.tol && gr.status == "pass") {
+      if (g.tol && gr.status == GateStatus::kPass) {
         if (!finest || *finest > *g.tol) {
-          gr.status = "fail";
+          gr.status = GateStatus::kFail;
           gr.message = finest ? fmt::format("finest-pair error {:.4g} exceeds {:g}", *finest, *g.tol)
                               : "finest-pair error unavailable";
         }
@@ -186,7 +194,7 @@ nlohmann::json to_json(const ItemResult& r) {
   auto& gates = j["gates"] = nlohmann::json::array();
   for (const auto& g : r.gates) {
     nlohmann::json e{{"metric", g.gate.metric}, {"limit", g.limit()}, {"why", g.gate.why},
-                     {"status", g.status}, {"message", g.message}};
+                     {"status", to_string(g.status)}, {"message", g.message}};
     e["value"] = g.value ? nlohmann::json(*g.value) : nlohmann::json(nullptr);
     if (g.gate.tol) e["tol"] = *g.gate.tol;
     if (g.gate.min_order) e["min_order"] = *g.gate.min_order;

@@ -16,11 +16,17 @@
 
 namespace beamimpact::verification {
 
+/// @brief Verdict of one gate. A skipped gate of a required item counts as a failure.
+enum class GateStatus { kPass, kFail, kSkipped };
+
+/// @brief "pass" | "fail" | "skipped" (norms.json, junit.xml, report.md).
+const char* to_string(GateStatus s);
+
 /// @brief Outcome of one gate.
 struct GateResult {
   Gate gate;
   std::optional<double> value;  ///< the error (cases) or the observed order (ladders)
-  std::string status;           ///< "pass" | "fail" | "skipped"
+  GateStatus status = GateStatus::kFail;
   std::string message;          ///< why it failed / was skipped; "" on pass
   /// @brief "<= 0.01" or "order >= 0.9" (and "<= tol" too for ladders with both).
   std::string limit() const;

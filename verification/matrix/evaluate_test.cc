@@ -17,16 +17,16 @@ Comparison with_impulse(std::optional<double> v) {
 
 TEST(Evaluate, GatePassesAtOrBelowTolerance) {
   const Gate g{"impulse", 0.01, std::nullopt, "test gate"};
-  EXPECT_EQ(check_gate(g, with_impulse(0.01)).status, "pass");  // "error <= tol"
+  EXPECT_EQ(check_gate(g, with_impulse(0.01)).status, GateStatus::kPass);  // "error <= tol"
   const GateResult f = check_gate(g, with_impulse(0.0100001));
-  EXPECT_EQ(f.status, "fail");
+  EXPECT_EQ(f.status, GateStatus::kFail);
   EXPECT_NE(f.message.find("exceeds"), std::string::npos);
 }
 
 TEST(Evaluate, UnavailableOrMissingNormFails) {
-  EXPECT_EQ(check_gate({"impulse", 1.0, std::nullopt, "test"}, with_impulse(std::nullopt)).status, "fail");
+  EXPECT_EQ(check_gate({"impulse", 1.0, std::nullopt, "test"}, with_impulse(std::nullopt)).status, GateStatus::kFail);
   const GateResult m = check_gate({"impulse_2", 1.0, std::nullopt, "test"}, with_impulse(0.0));
-  EXPECT_EQ(m.status, "fail");
+  EXPECT_EQ(m.status, GateStatus::kFail);
   EXPECT_NE(m.message.find("not produced"), std::string::npos);
 }
 

@@ -67,7 +67,7 @@ class GatesBite : public ::testing::Test {
   }
 
   /// Evaluates the case with the run replaced by a perturbed copy; returns the gate's status.
-  std::string gate_status(const Case& c, std::map<std::string, JobOutcome> runs, const fs::path& dir,
+  std::optional<GateStatus> gate_status(const Case& c, std::map<std::string, JobOutcome> runs, const fs::path& dir,
                           const std::string& metric, std::string* message = nullptr) {
     runs.at(c.run.key()).dir = dir;
     const ItemResult r = evaluate_case(c, runs);
@@ -76,7 +76,7 @@ class GatesBite : public ::testing::Test {
         if (message) *message = g.message;
         return g.status;
       }
-    return "missing";
+    return std::nullopt;  // no such gate
   }
 
   VerificationMatrix matrix_;
@@ -88,7 +88,7 @@ TEST_F(GatesBite, UnperturbedRowsPass) {
   for (const auto* c : {&row("s1_central", "paper", "impulse"), &row("s1_offset_gap", "paper", "contact_start"),
                         &row("s2_transverse", "paper", "impacts")}) {
     const ItemResult r = evaluate_case(*c, run(*c));
-    for (const auto& g : r.gates) EXPECT_EQ(g.status, "pass") << c->name() << " " << g.gate.metric << ": " << g.message;
+    for (const auto& g : r.gates) EXPECT_EQ(g.status, GateStatus::kPass) << c->name() << " " << g.gate.metric << ": " << g.message;
   }
 }
 
@@ -103,8 +103,8 @@ TEST_F(GatesBite, ForceScaledByTwoPercentFails) {
     if (s["contacts"][0].contains(k)) s["contacts"][0][k] = s["contacts"][0][k].get<double>() * 1.02;
   write_run_dir(h, s, tmp_ / "scaled");
   std::string msg;
-  EXPECT_EQ(gate_status(c, runs, tmp_ / "scaled", "impulse", &msg), "fail") << msg;
-  EXPECT_EQ(gate_status(c, runs, runs.at(c.run.key()).dir, "impulse"), "pass");
+  EXPECT_EQ(gate_status(c, runs, tmp_ / "scaled", "impulse", &msg), GateStatus::kFail) << msg;
+  EXPECT_EQ(gate_status(c, runs, runs.at(c.run.key()).dir, "impulse"), GateStatus::kPass);
 }
 
 // Contact one step later: every contact column shifted down one row, intervals moved by dt.
@@ -123,7 +123,7 @@ TEST_F(GatesBite, OneStepDelayOfContactFails) {
     for (auto& t : iv) t = t.get<double>() + dt;
   write_run_dir(h, s, tmp_ / "delayed");
   std::string msg;
-  EXPECT_EQ(gate_status(c, runs, tmp_ / "delayed", "contact_start", &msg), "fail") << msg;
+  EXPECT_EQ(gate_status(c, runs, tmp_ / "delayed", "contact_start", &msg), GateStatus::kFail) << msg;
 }
 
 // The second impact removed: its rows set to zero force and its interval dropped.
@@ -146,7 +146,7 @@ TEST_F(GatesBite, LostImpactFails) {
   s["contacts"][0]["impulse_normal"] = s["contacts"][0]["impulse_normal"].get<double>() - lost;
   write_run_dir(h, s, tmp_ / "lost");
   std::string msg;
-  EXPECT_EQ(gate_status(c, runs, tmp_ / "lost", "impacts", &msg), "fail") << msg;
+  EXPECT_EQ(gate_status(c, runs, tmp_ / "lost", "impacts", &msg), GateStatus::kFail) << msg;
 }
 
 }  // namespace

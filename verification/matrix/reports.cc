@@ -51,8 +51,8 @@ Totals totals(const std::vector<ItemResult>& items) {
   for (const auto& i : items)
     for (const auto& g : i.gates) {
       ++t.gates;
-      if (g.status == "pass") ++t.pass;
-      else if (g.status == "fail") ++t.fail;
+      if (g.status == GateStatus::kPass) ++t.pass;
+      else if (g.status == GateStatus::kFail) ++t.fail;
       else ++t.skipped;
     }
   return t;
@@ -73,8 +73,8 @@ void write_junit(const std::filesystem::path& file, const ReportContext& ctx, co
       time += i->wall_seconds;
       for (const auto& g : i->gates) {
         ++n;
-        f += g.status == "fail";
-        s += g.status == "skipped";
+        f += g.status == GateStatus::kFail;
+        s += g.status == GateStatus::kSkipped;
       }
     }
     x += fmt::format("  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" skipped=\"{}\" time=\"{:.3f}\">\n",
@@ -87,9 +87,9 @@ void write_junit(const std::filesystem::path& file, const ReportContext& ctx, co
         x += fmt::format("    <testcase classname=\"{}\" name=\"{}\" time=\"{:.3f}\">", xml_escape(cls), xml_escape(name),
                          i->gates.empty() ? 0.0 : i->wall_seconds / static_cast<double>(i->gates.size()));
         const std::string detail = fmt::format("value {} limit {} | why: {}", value_text(g), g.limit(), g.gate.why);
-        if (g.status == "fail")
+        if (g.status == GateStatus::kFail)
           x += fmt::format("\n      <failure message=\"{}\">{}</failure>\n    ", xml_escape(g.message), xml_escape(detail));
-        else if (g.status == "skipped")
+        else if (g.status == GateStatus::kSkipped)
           x += fmt::format("\n      <skipped message=\"{}\"/>\n    ", xml_escape(g.message));
         else
           x += fmt::format("<system-out>{}</system-out>", xml_escape(detail));
@@ -134,7 +134,7 @@ void write_markdown(const std::filesystem::path& file, const ReportContext& ctx,
     for (const auto* i : list) {
       const std::string run = i->kind == "convergence" ? i->name.substr(scene.size() + 1) + " (self-convergence)" : i->settings;
       for (const auto& g : i->gates) {
-        const std::string res = g.status == "pass" ? "pass" : g.status == "fail" ? "**FAIL**: " + g.message : "skipped: " + g.message;
+        const std::string res = g.status == GateStatus::kPass ? "pass" : g.status == GateStatus::kFail ? "**FAIL**: " + g.message : "skipped: " + g.message;
         m += fmt::format("| {} | {} | {} | {} | {} | {} | {:.2f} |\n", md_escape(run), md_escape(i->reference),
                          g.gate.metric, value_text(g), g.limit(), md_escape(res), i->wall_seconds);
       }

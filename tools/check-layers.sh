@@ -12,7 +12,16 @@ declare -A forbidden
 i=0
 while read -r module dir rest; do
   [[ -z "$module" || "$module" == \#* ]] && continue
-  rank[$module]=$i; folder[$module]=$dir; forbidden[$module]=" ${rest//!/} "; i=$((i + 1))
+  if [[ "$module" == "*" ]]; then  # every subfolder with C++ headers, named after it
+    for sub in ${dir%/\*}/*/; do
+      sub=${sub%/}
+      compgen -G "$sub/*.hpp" > /dev/null || continue
+      m=${sub##*/}; rank[$m]=$i; folder[$m]=$sub; forbidden[$m]=" ${rest//!/} "
+    done
+  else
+    rank[$module]=$i; folder[$module]=$dir; forbidden[$module]=" ${rest//!/} "
+  fi
+  i=$((i + 1))
 done < cmake/modules.txt
 bad=0
 for module in "${!folder[@]}"; do

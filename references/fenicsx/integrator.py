@@ -20,6 +20,7 @@ import numpy as np
 from mpi4py import MPI
 
 from contact import Surface, gaps, solve_contact
+from output import STATE_CODES
 from scene import SceneError
 
 
@@ -172,7 +173,8 @@ def run(cont, st, stats, progress=True):
                         list(c.slave).index(c.centre)])
                 vnc_mid = 0.5 * (vhc + vnc)
                 ub, vb = c.tgt_w @ uc[c.tgt], c.tgt_w @ vnc_mid[c.tgt]
-                row += [infos[k]["R"], infos[k]["tau"], gap, *uc[c.centre], *vnc_mid[c.centre], *ub, *vb]
+                row += [infos[k]["R"], infos[k]["tau"], gap, *uc[c.centre], *vnc_mid[c.centre], *ub, *vb,
+                        STATE_CODES[infos[k]["state"]]]
             rows.append(row + [kin, strain, diss_row, px, py])
         work_sum += w_n
         g_prev = uc

@@ -1,5 +1,5 @@
 """history.csv and summary.json in the layout of interface.md, and the contact statistics
-(intervals, impulses, peaks) computed the way solver/io/ContactStats.hpp describes them:
+(intervals, impulses, peaks) computed the way solver/record/ContactStats.hpp describes them:
 a sample is "in contact" when R > 0, an interval is [first, last] contact sample time, and
 intervals separated by less than the merge gap are merged."""
 
@@ -8,7 +8,9 @@ import math
 import os
 
 CONTACT_COLUMNS = ["R", "tau", "gap", "ua_x", "ua_y", "va_x", "va_y",
-                   "ub_x", "ub_y", "vb_x", "vb_y"]
+                   "ub_x", "ub_y", "vb_x", "vb_y", "state"]
+# The integer of column `state` (interface.md): 0 open, 1 stick, 2 slip, 3 closed without friction.
+STATE_CODES = {"open": 0, "stick": 1, "slip": 2, "frictionless": 3}
 TOTAL_COLUMNS = ["kinetic", "strain", "dissipated", "px", "py"]
 
 
@@ -87,7 +89,7 @@ def write_run(out_dir, columns, rows, summary):
     with open(os.path.join(out_dir, "history.csv"), "w") as f:
         f.write(",".join(columns) + "\n")
         for r in rows:
-            f.write(",".join(repr(float(v)) for v in r) + "\n")
+            f.write(",".join(str(v) if isinstance(v, int) else repr(float(v)) for v in r) + "\n")
     tmp = os.path.join(out_dir, ".summary.json.tmp")
     with open(tmp, "w") as f:
         json.dump(summary, f, indent=2)

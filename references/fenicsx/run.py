@@ -137,16 +137,24 @@ def main(argv):
     for c, s in zip(contacts, stats):
         d = {"striker": rects[c.striker].name, "target": rects[c.target].name, "kind": c.kind}
         d.update(s.summary())
+        d["impacts"] = len(d["intervals"])
         csum.append(d)
     summary = {
-        "scene": scene.name, "scene_sha256": scene.sha256, "method": "fenicsx",
+        "scene": scene.name, "scene_file": scene.file, "scene_sha256": scene.sha256,
+        "description": scene.description, "method": "fenicsx",
         "version": f"{_version()} (dolfinx {dolfinx.__version__})",
-        "dt": st["dt"], "steps": st["nsteps"], "wall_seconds": wall, "critical_dt": st["dt_crit"],
-        "effects": effects, "assumed": assumed,
+        "contact_sampling": "fixed steps: contact statistics from every time step; energies and momentum "
+                            "at the output rows",
+        "dt": st["dt"], "steps": st["nsteps"], "end_time": st["end"], "wall_seconds": wall,
+        "critical_dt": st["dt_crit"], "effects": effects, "assumed": assumed,
+        "overrides": {},
         "energy_initial": res["E0"], "energy_final": res["E_final"],
         "momentum_drift_max": res["drift"],
         "bodies": {n: {"final_velocity": v} for n, v in res["final_velocity"].items()},
         "contacts": csum,
+        "units": {"t": "s", "R": "N", "tau": "N", "gap": "m", "u": "m", "v": "m/s", "energy": "J",
+                  "momentum": "N s", "impulse": "N s"},
+        "complete": True,
         "fenicsx": {
             "ranks": comm.size, "end": st["end"], "output_every_steps": st["out_every"],
             "nodes": cont.V.dofmap.index_map.size_global, "poisson": opts.poisson,

@@ -52,6 +52,26 @@ TEST(RunOutput, WritesBothFiles) {
   EXPECT_EQ(line.substr(0, 6), "0,1.5,");
 }
 
+// The writer produces every key the schema promises (the FEniCSx test holds the script to the
+// same list), and the history header is the schema's.
+TEST(RunOutput, SummaryHasEverySchemaKey) {
+  SimulationResult r = one_row(1.5);
+  r.contacts.resize(2);
+  const nlohmann::json s = summary_json(two_contacts(), r);
+  for (const std::string& k : summary_keys()) EXPECT_TRUE(s.contains(k)) << k;
+  for (const std::string& k : contact_summary_keys()) EXPECT_TRUE(s.at("contacts").at(1).contains(k)) << k;
+  const fs::path d = testing::temp_path("ro_keys");
+  fs::remove_all(d);
+  write_outputs(two_contacts(), r, d);
+  std::ifstream h(d / "history.csv");
+  std::string header;
+  std::getline(h, header);
+  std::string expected;
+  for (const std::string& c : history_columns(2)) expected += (expected.empty() ? "" : ",") + c;
+  EXPECT_EQ(header, expected);
+  fs::remove_all(d);
+}
+
 TEST(RunOutput, NonFiniteValueWritesNothingComplete) {
   const fs::path d = testing::temp_path("ro_nan");
   fs::remove_all(d);

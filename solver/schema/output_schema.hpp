@@ -46,6 +46,13 @@ std::string contact_column(std::string_view base, int k);
 /// contact (suffixed by contact_column), then the model columns.
 std::vector<std::string> history_columns(int n_contacts);
 
+/// @brief The keys every method's summary.json has at its top level (methods add their own:
+/// "critical_step", "ida", "exact", "fenicsx", ...).
+const std::vector<std::string>& summary_keys();
+
+/// @brief The keys every entry of summary.json's "contacts" array has.
+const std::vector<std::string>& contact_summary_keys();
+
 /// @brief The schema as JSON: columns, suffix rule, units and enum forms (`beamimpact schema`).
 nlohmann::json schema_json();
 

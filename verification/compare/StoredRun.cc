@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/schema/output_schema.hpp>
 
 namespace beamimpact::verification {
 namespace {
@@ -129,10 +130,6 @@ double StoredRun::output_step() const {
   for (std::size_t i = 1; i < tt.size(); ++i) d[i - 1] = tt[i] - tt[i - 1];
   std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
   return d[d.size() / 2];
-}
-
-std::string StoredRun::contact_column(const std::string& base, int k) {
-  return k <= 1 ? base : base + "_" + std::to_string(k);
 }
 
 }  // namespace beamimpact::verification

@@ -47,9 +47,6 @@ class StoredRun {
   /// @brief Median spacing of the rows (s): the output step.
   double output_step() const;
 
-  /// @brief Column name of contact k (1-based): "R" for k = 1, "R_2" for k = 2, ...
-  static std::string contact_column(const std::string& base, int k);
-
  private:
   std::map<std::string, std::vector<double>> columns_;
   nlohmann::json summary_ = nlohmann::json::object();

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/schema/output_schema.hpp>
 #include <beamimpact/verification/compare/series.hpp>
 
 namespace beamimpact::verification {
@@ -54,9 +55,9 @@ void add_series_norms(Comparison& cmp, const std::string& name, const Series& a,
 
 void add_vector_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, const Grid& g,
                       const std::string& base, int k, const std::string& what) {
-  const std::vector<std::string> cols = {StoredRun::contact_column(base + "_x", k),
-                                         StoredRun::contact_column(base + "_y", k)};
-  const std::string name = StoredRun::contact_column(base, k);
+  const std::vector<std::string> cols = {contact_column(base + "_x", k),
+                                         contact_column(base + "_y", k)};
+  const std::string name = contact_column(base, k);
   for (const StoredRun* h : {&a, &b}) {
     if (auto m = missing_column(*h, cols)) {
       const std::string why = h->label() + "/history.csv has no column '" + *m + "'";
@@ -106,7 +107,7 @@ Norm relative_scalar(std::string name, double a, double b, std::string definitio
 
 void add_contact_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, const Grid& g, int k,
                        double threshold_rel) {
-  const std::string R = StoredRun::contact_column("R", k);
+  const std::string R = contact_column("R", k);
   const std::string sfx = k <= 1 ? "" : "_" + std::to_string(k);
   const auto& Ra = a.column(R);
   const auto& Rb = b.column(R);
@@ -117,7 +118,7 @@ void add_contact_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, 
                    "the contact force " + R + "(t)");
   // An optional cumulative column `impulse` (N s) is the method's own running impulse: adaptive
   // methods integrate between the rows what the rows cannot show (closure spikes).
-  const std::string J = StoredRun::contact_column("impulse", k);
+  const std::string J = contact_column("impulse", k);
   const auto Ia = a.has(J) ? a.column(J) : running_integral(a.t(), Ra);
   const auto Ib = b.has(J) ? b.column(J) : running_integral(b.t(), Rb);
   add_series_norms(cmp, "I" + sfx, {interpolate(a.t(), Ia, g.t)}, {interpolate(b.t(), Ib, g.t)}, g,

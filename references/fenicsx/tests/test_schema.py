@@ -32,5 +32,9 @@ common.check(set(np.unique(state)) <= set(codes), f"state values {sorted(set(np.
 closed = h["R"] > 0
 common.check(closed.any() and all(codes[int(x)] == "closed" for x in state[closed]), "R > 0 rows have state closed")
 common.check(all(codes[int(x)] == "open" for x in state[~closed]), "R = 0 rows have state open")
+missing = [k for k in schema["summary_keys"] if k not in s]
+common.check(not missing, f"summary.json has every schema key (missing: {missing})")
+missing = [k for k in schema["contact_summary_keys"] if k not in s["contacts"][0]]
+common.check(not missing, f"contacts[0] has every schema contact key (missing: {missing})")
 common.check(s["contacts"][0]["kind"] in schema["contact_kinds"], f"kind {s['contacts'][0]['kind']} is a schema kind")
 common.finish()

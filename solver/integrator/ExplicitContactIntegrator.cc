@@ -39,7 +39,10 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
       // far below any physical penetration per step.
       solver_(pairs_, frictions(scene), effects.friction, model.size(), 1e-10 * length_scale(scene),
               [this](const Eigen::VectorXd& f, Eigen::VectorXd& out) { apply_H(f, out); }) {
-  if (!model.lumped() && fint_.nonlinear()) cmass_ = std::make_unique<CorotationalMass>(model, fint_);
+  if (!model.lumped() && fint_.nonlinear()) {
+    cmass_ = std::make_unique<CorotationalMass>(model, fint_);
+    minv_.factorize_pattern(cmass_->M());  // M_A(t) may hold entries the model's M never stored
+  }
   const int n = model.size();
   U_prev_ = U_ = U_next_ = Ubar_ = fc_ = work_ = work2_ = du_ = scratch_ = hwork_ = Eigen::VectorXd::Zero(n);
   Vbar_ = V_ = model.initial_velocity();  // no contact force at t = 0: Vbar^0 = V^0

@@ -127,7 +127,8 @@ bool ContactPair::relocate(const Eigen::VectorXd& U) {
     const double x = dot(sub(xs, a), ab) / dot(ab, ab);
     if (x < 0.0 && e > 0) { --e; continue; }
     if (x > 1.0 && e < target_elements_ - 1) { ++e; continue; }
-    if (x < -kSnap || x > 1.0 + kSnap) return false;  // beyond the target's ends: keep the last point
+    on_surface_ = x >= -kSnap && x <= 1.0 + kSnap;
+    if (!on_surface_) return false;  // beyond the target's end: keep the end point, carry no force
     const double xi2 = std::clamp(x, 0.0, 1.0);
     if (e == element_ && xi2 == xi2_) return false;
     element_ = e;

@@ -53,8 +53,13 @@ class ContactPair {
 
   /// @brief Re-locates the struck point from the configuration U (for a sliding striker): the
   /// element and weights under the striker node, walking across element boundaries. Returns
-  /// true when the point changed (rows rebuilt). False if the striker is beyond the target's ends.
+  /// true when the point changed (rows rebuilt). When the striker is beyond the target's end
+  /// the rows keep the end point and on_surface() turns false.
   bool relocate(const Eigen::VectorXd& U);
+
+  /// @brief False while a sliding striker is beyond the target's end node: the target's surface
+  /// ends there, so the pair can carry no force (it is open whatever its extended gap says).
+  bool on_surface() const { return on_surface_; }
 
   /// @brief Displacement of the struck point (interpolated as the rows are) from U (m).
   Vec2 target_vector(const Eigen::VectorXd& U) const;
@@ -69,6 +74,7 @@ class ContactPair {
   double xi1_ = 1.0, xi2_ = 0.0;
   Vec2 n_{}, t_{};
   double g0_ = 0.0;
+  bool on_surface_ = true;
   std::vector<DofTerm> gn_, gt_;
 };
 

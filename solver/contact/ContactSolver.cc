@@ -34,14 +34,16 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
     gbar_[c] = p.g0() + ContactPair::eval(p.normal_row(), Ubar);
     sbar_[c] = friction_ ? ContactPair::eval(p.tangent_row(), Ubar) - ContactPair::eval(p.tangent_row(), U) : 0.0;
     out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};
-    active_[c] = gbar_[c] < -tol_;
+    active_[c] = gbar_[c] < -tol_ && p.on_surface();
     if (active_[c]) refresh_response(c);
   }
-  // Gauss-Seidel over contacts: each local solve sees the others' current forces.
+  // Gauss-Seidel over contacts: each local solve sees the others' current forces. A contact that
+  // was open before the others' forces were applied joins as soon as they push it into
+  // penetration (with one contact there is nothing to push: the first pass decides).
   for (int sweep = 0; sweep < (m > 1 ? 100 : 1); ++sweep) {
     double change = 0.0;
     for (int c = 0; c < m; ++c) {
-      if (!active_[c]) continue;
+      if (!active_[c] && (m == 1 || !pairs_[c].on_surface())) continue;
       const ContactPair& p = pairs_[c];
       double g = gbar_[c], s = sbar_[c];
       for (int d = 0; d < m; ++d) {  // effect of the other contacts' forces on this one
@@ -52,6 +54,11 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
           s += out_[d].R * ContactPair::eval(p.tangent_row(), hn_[d]) +
                out_[d].tau * ContactPair::eval(p.tangent_row(), ht_[d]);
         }
+      }
+      if (!active_[c]) {
+        if (g >= -tol_) continue;  // still open with the others' forces
+        active_[c] = 1;
+        refresh_response(c);
       }
       const double Ann = ContactPair::eval(p.normal_row(), hn_[c]);
       ContactForce f{0.0, 0.0, g, s, ContactState::kOpen};

@@ -13,11 +13,9 @@
 namespace beamimpact::paper {
 namespace {
 
+using testing::hard_scene;
 using testing::paper_scene;
 
-std::string hard_scene(const std::string& name) {
-  return (testing::source_dir() / "verification/scenes/hard" / (name + ".toml")).string();
-}
 
 SimulationResult s4(int angle, const std::vector<std::string>& sets = {}) {
   return paper::solve(load_scene(paper_scene("s4_oblique_" + std::to_string(angle)), sets));

@@ -35,6 +35,11 @@ inline std::string paper_scene(const std::string& name) {
   return (source_dir() / "verification/scenes/paper" / (name + ".toml")).string();
 }
 
+/// @brief Path of a hard-case scene, e.g. hard_scene("slide_off_roller").
+inline std::string hard_scene(const std::string& name) {
+  return (source_dir() / "verification/scenes/hard" / (name + ".toml")).string();
+}
+
 /// @brief A paper scene loaded with --set style overrides (e.g. "time.end=1.5").
 inline Scene load_paper_scene(const std::string& name, const std::vector<std::string>& overrides = {}) {
   return load_scene(paper_scene(name), overrides);

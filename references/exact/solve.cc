@@ -40,6 +40,7 @@ SimulationResult finish_summary(ResultRecorder& rec, std::vector<HistoryRow> row
   const double dt = rec.result().dt;
   for (HistoryRow& row : rows) {
     rec.sample(0, row.t, row.contacts[0].R, 0.0, dt, row.contacts[0].state);
+    rec.track_real_gap(0, row.t, row.contacts[0].gap);  // the exact solution's gap is the real one
     rec.track_momentum(row.momentum);
     rec.add_row(std::move(row));
   }

@@ -11,6 +11,7 @@
 #include <beamimpact/model/MassSolver.hpp>
 #include <beamimpact/model/Model.hpp>
 #include <beamimpact/model/critical_dt.hpp>
+#include <beamimpact/model/deformed_geometry.hpp>
 #include <beamimpact/record/ResultRecorder.hpp>
 #include <beamimpact/util/Progress.hpp>
 
@@ -187,14 +188,17 @@ std::vector<std::array<double, 2>> event_intervals(const std::vector<ContactEven
 /// every-th p and the last step N = ceil(end / h), so that the two methods' rows line up.
 /// Returns the output step (s).
 double integrate(const Scene& scene, const IdaOptions& opt, double dt, PenaltyIda& ida, const Observer& obs,
-               ResultRecorder& rec) {
+                 const Model& model, ResultRecorder& rec) {
   const int nc = static_cast<int>(scene.contacts.size());
+  std::vector<DeformedSurface> surfaces;  // the real gap of each contact, from the deformed geometry
+  for (const Contact& c : scene.contacts) surfaces.emplace_back(model, c.target, model.node_id(c.striker, c.node));
   Progress progress("ida", scene.time.end);  // stderr, only on long runs
   auto on_step = [&](double t_prev) {
     progress.update(ida.t());
     for (int i = 0; i < nc; ++i) {
       const ContactReading r = ida.contact(i);
       rec.sample(i, ida.t(), r.R, r.tau, ida.t() - t_prev, obs.state(i, r));
+      rec.track_real_gap(i, ida.t(), surfaces[i].gap(ida.U()).gap);
     }
     rec.track_momentum(obs.momentum(ida.V()));
   };
@@ -249,7 +253,7 @@ SimulationResult solve(const Scene& scene) {
   rule << "contact phases (located by IDA root finding) separated by less than " << opt.merge_gap
        << " s are merged";
   rec.set_merge_rule(opt.merge_gap, rule.str());
-  const double output_step = integrate(scene, opt, dt, ida, obs, rec);
+  const double output_step = integrate(scene, opt, dt, ida, obs, model, rec);
 
   const auto V = ida.V();
   for (int b = 0; b < model.num_bodies(); ++b) {

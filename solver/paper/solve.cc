@@ -6,6 +6,7 @@
 
 #include <beamimpact/integrator/ExplicitContactIntegrator.hpp>
 #include <beamimpact/model/critical_dt.hpp>
+#include <beamimpact/model/deformed_geometry.hpp>
 #include <beamimpact/record/ResultRecorder.hpp>
 #include <beamimpact/scene/SceneError.hpp>
 #include <beamimpact/scene/TableReader.hpp>
@@ -71,13 +72,14 @@ HistoryRow make_row(const ExplicitContactIntegrator& in) {
   return row;
 }
 
-/// Records the complete step p: contact samples every step, a row every output_every-th step
-/// and at the last one. Throws when the energy is no longer finite or has grown 1e6-fold.
+/// Records the complete step p: contact samples and real gaps every step, a row every
+/// output_every-th step and at the last one. Throws when the energy is no longer finite or has grown 1e6-fold.
 void record_step(const ExplicitContactIntegrator& integ, long p, long N, const Scene& scene, double critical_dt,
-                 ResultRecorder& rec) {
+                 std::vector<DeformedSurface>& surfaces, ResultRecorder& rec) {
   for (std::size_t c = 0; c < integ.forces().size(); ++c) {
     const ContactForce& f = integ.forces()[c];
     rec.sample(c, integ.time(), f.R, f.tau, integ.dt(), f.state);
+    rec.track_real_gap(c, integ.time(), surfaces[c].gap(integ.U()).gap);
   }
   if (p % scene.time.output_every != 0 && p != N) return;
   HistoryRow row = make_row(integ);
@@ -124,9 +126,11 @@ SimulationResult solve(const Scene& scene_in) {
   set_merge_rule(options, r.dt, rec);
 
   ExplicitContactIntegrator integ(model, scene, effects, r.dt, options.surface);
+  std::vector<DeformedSurface> surfaces;  // the real gap of each contact, from the deformed geometry
+  for (const Contact& c : scene.contacts) surfaces.emplace_back(model, c.target, model.node_id(c.striker, c.node));
   Progress progress("paper", scene.time.end);
   for (long p = 0;; ++p) {
-    record_step(integ, p, N, scene, cs.dt, rec);
+    record_step(integ, p, N, scene, cs.dt, surfaces, rec);
     if (p == N) break;
     integ.step();
     progress.update(integ.time());

@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <tuple>
 #include <stdexcept>
 
 namespace beamimpact {
 
 ResultRecorder::ResultRecorder(const Scene& scene, std::string method, ContactSampling sampling)
-    : scene_(scene), wall0_(std::chrono::steady_clock::now()) {
+    : scene_(scene),
+      real_gap_(scene.contacts.size(), {std::numeric_limits<double>::infinity(), 0.0}),
+      wall0_(std::chrono::steady_clock::now()) {
   r_.method = std::move(method);
   r_.contact_sampling = describe(sampling);
 }
@@ -54,6 +58,7 @@ SimulationResult ResultRecorder::finish(const std::vector<ContactKind>& kinds) {
     s.target = scene_.bodies[scene_.contacts[c].target].name;
     s.kind = kinds[c];
     stats_[c].fill(s);
+    if (std::isfinite(real_gap_[c].first)) std::tie(s.real_gap_min, s.real_gap_min_time) = real_gap_[c];
     r_.contacts.push_back(std::move(s));
   }
   r_.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count();

@@ -47,6 +47,13 @@ class ResultRecorder {
     stats_[contact].add(t, R, tau, dt, state);
   }
 
+  /// @brief The real gap of a contact at time t (m): the gap from the deformed geometry
+  /// (model/deformed_geometry.hpp, or an exact solution's own gap), never a method's contact
+  /// rows. The summary reports the smallest one and when it occurred.
+  void track_real_gap(std::size_t contact, double t, double gap) {
+    if (gap < real_gap_[contact].first) real_gap_[contact] = {gap, t};
+  }
+
   /// @brief Total linear momentum (N s); the drift is measured from the first value given.
   void track_momentum(const Vec2& p);
 
@@ -70,6 +77,7 @@ class ResultRecorder {
   const Scene& scene_;
   SimulationResult r_;
   std::vector<ContactStats> stats_;
+  std::vector<std::pair<double, double>> real_gap_;  ///< per contact: smallest real gap (m) and its time (s)
   bool momentum_started_ = false;
   Vec2 p0_{};
   std::chrono::steady_clock::time_point wall0_;

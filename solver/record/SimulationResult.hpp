@@ -45,6 +45,8 @@ struct ContactSummary {
   double peak_R_excluding_closure = 0.0;    ///< N, first step of each interval left out
   double first_step_R = 0.0;                ///< N, the closure step of the first interval
   long stick_steps = 0, slip_steps = 0;
+  double real_gap_min = 0.0;                ///< m, smallest real gap (deformed geometry; < 0: penetration)
+  double real_gap_min_time = 0.0;           ///< s, when it occurred
   nlohmann::json extra = nlohmann::json::object();  ///< method-specific keys
 };
 

@@ -39,7 +39,8 @@ nlohmann::json summary_json(const Scene& scene, const SimulationResult& r) {
               {"impulse_tangential", c.impulse_tangential}, {"peak_R", c.peak_R},
               {"peak_R_excluding_closure", c.peak_R_excluding_closure},
               {"first_step_R", c.first_step_R}, {"stick_steps", c.stick_steps},
-              {"slip_steps", c.slip_steps}};
+              {"slip_steps", c.slip_steps}, {"real_gap_min", c.real_gap_min},
+              {"real_gap_min_time", c.real_gap_min_time}};
     j.update(c.extra);
     contacts.push_back(j);
   }
@@ -77,7 +78,7 @@ void write_outputs(const Scene& scene, const SimulationResult& r, const std::fil
     for (double v : {r.energy_initial, r.energy_final, r.momentum_drift_max, r.critical_dt})
       check_finite(v, "summary value");
     for (const ContactSummary& c : r.contacts)
-      for (double v : {c.impulse_normal, c.impulse_tangential, c.peak_R, c.peak_R_excluding_closure})
+      for (double v : {c.impulse_normal, c.impulse_tangential, c.peak_R, c.peak_R_excluding_closure, c.real_gap_min})
         check_finite(v, "contact summary value");
     const int nc = static_cast<int>(scene.contacts.size());
     fmt::memory_buffer b;

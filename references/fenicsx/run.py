@@ -136,7 +136,8 @@ def main(argv):
     csum = []
     ncol = len(CONTACT_COLUMNS)
     for k, (c, s) in enumerate(zip(contacts, stats)):
-        d = {"striker": rects[c.striker].name, "target": rects[c.target].name, "kind": c.kind}
+        d = {"striker": rects[c.striker].name, "target": rects[c.target].name, "kind": c.kind,
+             "friction": c.friction}
         d.update(s.summary())
         d["impacts"] = len(d["intervals"])
         # The gap column is measured on the deformed mesh (node to deformed segment): its least

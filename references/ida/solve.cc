@@ -288,6 +288,7 @@ SimulationResult solve(const Scene& scene) {
     s.extra = contacts.extra[i];
     s.extra["events"] = events;
     s.extra["impulse_normal_step_sum"] = step_sum;
+    s.friction = contacts.laws[i].mu;  // as applied
   }
   return result;
 }

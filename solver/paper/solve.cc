@@ -147,7 +147,9 @@ SimulationResult solve(const Scene& scene_in) {
   r.extra["dofs_per_node"] = model.dofs_per_node();
   std::vector<ContactKind> kinds;
   for (const ContactPair& pair : integ.pairs()) kinds.push_back(pair.kind());
-  return rec.finish(kinds);
+  SimulationResult result = rec.finish(kinds);
+  for (std::size_t c = 0; c < scene.contacts.size(); ++c) result.contacts[c].friction = scene.contacts[c].friction;  // as applied
+  return result;
 }
 
 }  // namespace beamimpact::paper

@@ -57,6 +57,7 @@ SimulationResult ResultRecorder::finish(const std::vector<ContactKind>& kinds) {
     s.striker = scene_.bodies[scene_.contacts[c].striker].name;
     s.target = scene_.bodies[scene_.contacts[c].target].name;
     s.kind = kinds[c];
+    s.friction = scene_.contacts[c].friction;
     stats_[c].fill(s);
     if (std::isfinite(real_gap_[c].first)) std::tie(s.real_gap_min, s.real_gap_min_time) = real_gap_[c];
     r_.contacts.push_back(std::move(s));

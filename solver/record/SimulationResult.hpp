@@ -37,6 +37,7 @@ struct HistoryRow {
 struct ContactSummary {
   std::string striker, target;
   ContactKind kind = ContactKind::kEndToEnd;
+  double friction = 0.0;                    ///< Coulomb mu the method applied
   std::vector<std::array<double, 2>> intervals;  ///< s, [start, end] of each contact interval
   std::string merge_rule;                   ///< how chatter was merged into intervals
   double impulse_normal = 0.0;              ///< N s

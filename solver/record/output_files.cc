@@ -33,7 +33,7 @@ nlohmann::json summary_json(const Scene& scene, const SimulationResult& r) {
   for (const auto& [name, v] : r.final_velocity) bodies[name]["final_velocity"] = {v[0], v[1]};
   json contacts = json::array();
   for (const ContactSummary& c : r.contacts) {
-    json j = {{"striker", c.striker}, {"target", c.target}, {"kind", to_string(c.kind)},
+    json j = {{"striker", c.striker}, {"target", c.target}, {"kind", to_string(c.kind)}, {"friction", c.friction},
               {"intervals", c.intervals}, {"impacts", c.intervals.size()},
               {"merge_rule", c.merge_rule}, {"impulse_normal", c.impulse_normal},
               {"impulse_tangential", c.impulse_tangential}, {"peak_R", c.peak_R},

@@ -55,7 +55,7 @@ const std::vector<std::string>& summary_keys() {
 
 const std::vector<std::string>& contact_summary_keys() {
   static const std::vector<std::string> k = {
-      "striker",        "target",          "kind",   "intervals",  "impacts",
+      "striker",        "target",          "kind",   "friction",   "intervals",  "impacts",
       "merge_rule",     "impulse_normal",  "impulse_tangential", "peak_R", "peak_R_excluding_closure",
       "first_step_R",   "stick_steps",     "slip_steps", "real_gap_min", "real_gap_min_time"};
   return k;

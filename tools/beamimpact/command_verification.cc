@@ -71,27 +71,32 @@ void verify(const VerifyArgs& a) {
   std::vector<JobSpec> specs = m.runs(a.tier);
   std::vector<const Case*> cases;
   std::vector<const Convergence*> ladders;
+  std::vector<const RunCheck*> checks;
   auto selected = [&](const std::string& name) { return a.only.empty() || name.find(a.only) != std::string::npos; };
   for (const auto& c : m.cases)
     if (VerificationMatrix::in_tier(c.tier, a.tier) && selected(c.name())) cases.push_back(&c);
   for (const auto& v : m.convergence)
     if (VerificationMatrix::in_tier(v.tier, a.tier) && selected(v.name())) ladders.push_back(&v);
+  for (const auto& c : m.checks)
+    if (VerificationMatrix::in_tier(c.tier, a.tier) && selected(c.name())) checks.push_back(&c);
   if (!a.only.empty()) {  // only the runs the selected items need
     specs.clear();
     std::set<std::string> seen;
     auto add = [&](const JobSpec& s) { if (seen.insert(s.key()).second) specs.push_back(s); };
     for (const auto* c : cases) { add(c->run); add(c->reference); }
     for (const auto* v : ladders) for (const auto& s : v->runs) add(s);
+    for (const auto* c : checks) add(c->run);
   }
   const fs::path out = a.out;
   fs::create_directories(out);
-  fmt::print(stderr, "verify: {} case(s), {} convergence ladder(s), {} run(s), tier {}, {} job(s)\n", cases.size(),
-             ladders.size(), specs.size(), a.tier, a.jobs);
+  fmt::print(stderr, "verify: {} case(s), {} convergence ladder(s), {} check(s), {} run(s), tier {}, {} job(s)\n",
+             cases.size(), ladders.size(), checks.size(), specs.size(), a.tier, a.jobs);
   const auto runs = execute_jobs(specs, out / "runs", launcher(m.root), a.jobs, m.timeout);
 
   std::vector<ItemResult> items;
   for (const auto* c : cases) items.push_back(evaluate_case(*c, runs));
   for (const auto* v : ladders) items.push_back(evaluate_ladder(*v, runs));
+  for (const auto* c : checks) items.push_back(evaluate_check(*c, runs));
 
   ReportContext ctx;
   ctx.command = fmt::format("beamimpact verify {} --tier {} --out {} --jobs {}{}", a.matrix, a.tier, a.out, a.jobs,
@@ -171,8 +176,9 @@ void add_verification_commands(CLI::App& app) {
   CLI::App* v = app.add_subcommand("verify", "Run the verification matrix; exit 1 if any gate fails");
   v->add_option("MATRIX", va->matrix, "VerificationMatrix file")->capture_default_str();
   v->add_option("--out", va->out, "Output directory (runs/, junit.xml, norms.json, report.md)")->required();
-  v->add_option("--tier", va->tier, "quick (CI) or full (adds fine meshes and small dt)")
-      ->check(CLI::IsMember({"quick", "full"}))->capture_default_str();
+  v->add_option("--tier", va->tier,
+                 "quick (CI), stability (health checks of the hard cases) or full (everything, plus fine meshes and small dt)")
+      ->check(CLI::IsMember(VerificationMatrix::tier_names()))->capture_default_str();
   v->add_option("--jobs", va->jobs, "Runs in parallel")->capture_default_str();
   v->add_option("--only", va->only, "Only cases whose name contains this text (e.g. s1_central)");
   v->callback([va] { verify(*va); });

@@ -11,6 +11,7 @@
 #include <beamimpact/scene/SceneError.hpp>
 #include <beamimpact/scene/TableReader.hpp>
 #include <beamimpact/verification/compare/compare_runs.hpp>
+#include <beamimpact/verification/compare/run_checks.hpp>
 
 namespace beamimpact::verification {
 namespace {
@@ -84,8 +85,10 @@ class Loader {
     }
     each(top, "case", [&](TableReader& r, const std::string& p) { m.cases.push_back(read_case(r, p)); });
     each(top, "convergence", [&](TableReader& r, const std::string& p) { m.convergence.push_back(read_ladder(r, p)); });
+    each(top, "check", [&](TableReader& r, const std::string& p) { m.checks.push_back(read_check(r, p)); });
     top.finish();
-    if (m.cases.empty() && m.convergence.empty()) throw SceneError(file_, "case", "expected at least one [[case]]");
+    if (m.cases.empty() && m.convergence.empty() && m.checks.empty())
+      throw SceneError(file_, "case", "expected at least one [[case]], [[convergence]] or [[check]]");
     return m;
   }
 
@@ -138,7 +141,10 @@ class Loader {
     return s;
   }
 
-  std::vector<Gate> read_gates(TableReader& r, const std::string& prefix, bool ladder) {
+  enum class GateKind { kCase, kLadder, kCheck };
+
+  std::vector<Gate> read_gates(TableReader& r, const std::string& prefix, GateKind kind) {
+    const bool ladder = kind == GateKind::kLadder;
     std::vector<Gate> gates;
     const toml::node* n = r.raw("gates");
     const toml::array* a = n ? n->as_array() : nullptr;
@@ -150,7 +156,10 @@ class Loader {
       TableReader g(*t, file_, p, nullptr);
       Gate gate;
       gate.metric = g.string("metric", "a norm name of `beamimpact compare` (e.g. \"impulse\", \"R.rel_l2\")");
-      if (!known_norm(gate.metric)) g.fail("metric", "unknown norm '" + gate.metric + "' (see `beamimpact compare` output)");
+      if (kind == GateKind::kCheck && !known_check(gate.metric))
+        g.fail("metric", "unknown check '" + gate.metric + "'; expected one of: " + fmt::format("{}", fmt::join(check_names(), ", ")));
+      if (kind != GateKind::kCheck && !known_norm(gate.metric))
+        g.fail("metric", "unknown norm '" + gate.metric + "' (see `beamimpact compare` output)");
       if (g.has("tol")) gate.tol = g.number("tol", "a non-negative tolerance in the norm's unit");
       if (ladder && g.has("min_order")) gate.min_order = g.number("min_order", "the least acceptable observed order");
       if (!gate.tol && !gate.min_order) g.fail("tol", ladder ? "expected tol and/or min_order" : "expected a tolerance");
@@ -163,8 +172,8 @@ class Loader {
     return gates;
   }
 
-  void common(TableReader& r, std::string& tier, bool& required, std::string& note) {
-    tier = r.choice_or("tier", "quick", {"quick", "full"});
+  void common(TableReader& r, std::string& tier, bool& required, std::string& note, const char* default_tier = "quick") {
+    tier = r.choice_or("tier", default_tier, VerificationMatrix::tier_names());
     required = r.boolean_or("required", true);
     if (r.has("note")) note = r.string("note", "text");
   }
@@ -179,7 +188,7 @@ class Loader {
     c.reference = read_spec(rr, ref_scene, true);
     rr.finish();
     common(r, c.tier, c.required, c.note);
-    c.gates = read_gates(r, prefix, false);
+    c.gates = read_gates(r, prefix, GateKind::kCase);
     if (c.run.key() == c.reference.key()) r.fail("reference", "expected a run different from the case's own run");
     return c;
   }
@@ -200,8 +209,16 @@ class Loader {
       v.runs.push_back(spec);
     }
     common(r, v.tier, v.required, v.note);
-    v.gates = read_gates(r, prefix, true);
+    v.gates = read_gates(r, prefix, GateKind::kLadder);
     return v;
+  }
+
+  RunCheck read_check(TableReader& r, const std::string& prefix) {
+    RunCheck c;
+    c.run = read_spec(r, scene_path(r), true);
+    common(r, c.tier, c.required, c.note, "stability");
+    c.gates = read_gates(r, prefix, GateKind::kCheck);
+    return c;
   }
 
   std::string file_;
@@ -225,6 +242,13 @@ std::string Convergence::name() const {
 
 VerificationMatrix VerificationMatrix::load(const std::filesystem::path& file) { return Loader(file).load(); }
 
+std::string RunCheck::name() const { return run.label() + " checks"; }
+
+const std::vector<std::string>& VerificationMatrix::tier_names() {
+  static const std::vector<std::string> t = {"quick", "stability", "full"};
+  return t;
+}
+
 std::vector<JobSpec> VerificationMatrix::runs(const std::string& tier) const {
   std::vector<JobSpec> out;
   std::set<std::string> seen;
@@ -236,6 +260,8 @@ std::vector<JobSpec> VerificationMatrix::runs(const std::string& tier) const {
   for (const auto& v : convergence)
     if (in_tier(v.tier, tier))
       for (const auto& s : v.runs) add(s);
+  for (const auto& c : checks)
+    if (in_tier(c.tier, tier)) add(c.run);
   return out;
 }
 

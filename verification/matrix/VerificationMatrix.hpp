@@ -44,6 +44,18 @@ struct Convergence {
   std::string name() const;
 };
 
+/// @brief Health checks of one run, no reference (the stability tier): gates on the metrics of
+/// check_run() (energy band, tension, friction cone, real penetration, momentum drift).
+struct RunCheck {
+  JobSpec run;
+  std::string tier = "stability";
+  bool required = true;
+  std::vector<Gate> gates;
+  std::string note;
+  /// @brief "two_contacts_pushed paper checks".
+  std::string name() const;
+};
+
 /// @brief The whole matrix file.
 struct VerificationMatrix {
   std::filesystem::path file;
@@ -51,13 +63,17 @@ struct VerificationMatrix {
   double timeout = 900.0;           ///< s, per run
   std::vector<Case> cases;
   std::vector<Convergence> convergence;
+  std::vector<RunCheck> checks;
 
   /// @brief Reads and checks a matrix file. Throws SceneError (file, key, what was expected) for
   /// unknown keys, unknown metrics, gates without a tolerance or reason, and missing scenes.
   static VerificationMatrix load(const std::filesystem::path& file);
-  /// @brief Every distinct run needed by the cases and ladders of a tier ("quick" or "full").
+  /// @brief Every distinct run needed by the cases, ladders and checks of a tier.
   std::vector<JobSpec> runs(const std::string& tier) const;
-  /// @brief True when an item of tier `item` belongs to a run of tier `tier`.
+  /// @brief The tiers: "quick" (CI), "stability" (hard cases' health checks), "full" (all items,
+  /// plus fine meshes and small steps).
+  static const std::vector<std::string>& tier_names();
+  /// @brief True when an item of tier `item` belongs to a run of tier `tier` ("full" runs all).
   static bool in_tier(const std::string& item, const std::string& tier) { return tier == "full" || item == tier; }
 };
 

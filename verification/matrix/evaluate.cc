@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <beamimpact/verification/compare/compare_runs.hpp>
+#include <beamimpact/verification/compare/run_checks.hpp>
 
 namespace beamimpact::verification {
 
@@ -111,6 +112,30 @@ ItemResult evaluate_case(const Case& c, const std::map<std::string, JobOutcome>&
     r.comparisons.push_back(cmp);
   } catch (const std::exception& e) {
     not_evaluated(r, c.gates, std::string("comparison failed: ") + e.what(), false);
+  }
+  return r;
+}
+
+ItemResult evaluate_check(const RunCheck& c, const std::map<std::string, JobOutcome>& runs) {
+  ItemResult r;
+  r.kind = "check";
+  r.scene = c.run.scene_name();
+  r.name = c.name();
+  r.settings = c.run.settings_label();
+  r.tier = c.tier;
+  r.required = c.required;
+  r.note = c.note;
+  if (auto it = runs.find(c.run.key()); it != runs.end()) {
+    r.wall_seconds = it->second.process_seconds;
+    r.solver_seconds = it->second.solver_seconds;
+  }
+  if (!runs_ok(r, {&c.run}, c.gates, runs)) return r;  // a crash, a NaN or a refusal fails every gate
+  try {
+    const Comparison cmp = check_run(StoredRun::read(runs.at(c.run.key()).dir));
+    for (const auto& g : c.gates) r.gates.push_back(check_gate(g, cmp));
+    r.comparisons.push_back(cmp);
+  } catch (const std::exception& e) {
+    not_evaluated(r, c.gates, std::string("health check failed: ") + e.what(), false);
   }
   return r;
 }

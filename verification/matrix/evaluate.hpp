@@ -34,7 +34,7 @@ struct GateResult {
 
 /// @brief Outcome of one case or ladder: its gates and what they were computed from.
 struct ItemResult {
-  std::string kind;              ///< "case" | "convergence"
+  std::string kind;              ///< "case" | "convergence" | "check"
   std::string scene;             ///< scene name (file stem)
   std::string name;              ///< Case::name() / Convergence::name()
   std::string settings;          ///< run settings label ("paper dt=0.01")
@@ -57,6 +57,9 @@ GateResult check_gate(const Gate& gate, const Comparison& cmp);
 
 /// @brief Evaluates a case from the finished runs (keyed by JobSpec::key()).
 ItemResult evaluate_case(const Case& c, const std::map<std::string, JobOutcome>& runs);
+
+/// @brief Evaluates the health checks of one run (check_run()) from the finished runs.
+ItemResult evaluate_check(const RunCheck& c, const std::map<std::string, JobOutcome>& runs);
 
 /// @brief Evaluates a convergence ladder from the finished runs.
 ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, JobOutcome>& runs);

@@ -76,244 +76,357 @@ void check(int status, const char* what) {
     throw std::runtime_error(std::string("rod-on-beam: ") + what + ": " + gsl_strerror(status));
 }
 
+/// @brief Output times k dt_out, k = 0, 1, ... while <= t_end (s; the last one clamped to t_end).
+std::vector<double> output_times(double dt_out, double t_end) {
+  std::vector<double> out_t;
+  for (long k = 0;; ++k) {
+    const double t = static_cast<double>(k) * dt_out;
+    if (t > t_end * (1.0 + 1e-12)) break;
+    out_t.push_back(std::min(t, t_end));
+  }
+  return out_t;
+}
+
+/// @brief Modal data of the beam at the struck point and the rod's constants, for rhs().
+/// @param s problem data
+/// @param mem the rod's reflection memory the dynamics reads the delayed wave from
+Dynamics make_dynamics(const RodOnBeamSetup& s, const DelayMemory& mem) {
+  Dynamics d;
+  d.N = s.modes;
+  d.M = s.beam.modal_mass();
+  d.Z = s.rod.impedance();
+  d.v0 = s.v0;
+  d.T = s.rod.round_trip();
+  d.g0 = s.gap;
+  d.mem = &mem;
+  for (int n = 1; n <= d.N; ++n) {
+    d.phi.push_back(s.beam.shape(n, s.x_c));
+    d.omega2.push_back(s.beam.omega(n) * s.beam.omega(n));
+  }
+  return d;
+}
+
+/// @brief The steps of one solution and the state they share: rigid flight up to the first
+/// touch, then smooth pieces between breakpoints (a piece start returns one rod round trip
+/// later), each integrated through memory samples and output times, with contact onset and
+/// separation located inside a piece. Fills the solution and the reflection memory it is given.
+class Integration {
+ public:
+  /// @param s problem data
+  /// @param sol the solution to fill
+  /// @param mem the rod's reflection memory to fill
+  Integration(const RodOnBeamSetup& s, RodOnBeamSolution& sol, DelayMemory& mem)
+      : s_(s), sol_(sol), mem_(mem), d_(make_dynamics(s, mem)), N_(d_.N),
+        dim_(static_cast<std::size_t>(2 * N_ + 3)) {
+    sol_.modes = N_;
+    t0_ = s_.v0 > 0.0 ? s_.gap / s_.v0 : std::numeric_limits<double>::infinity();
+    T_ = d_.T;
+    // Memory samples a quarter radian of the highest mode apart (see DelayMemory::value).
+    delta_ = std::min(0.25 / s_.beam.omega(N_), T_ / 32.0);
+    sol_.sample_dt = delta_;
+    out_t_ = output_times(s_.dt_out, s_.t_end);
+  }
+  Integration(const Integration&) = delete;  // rhs() and the drivers hold pointers into it
+  Integration& operator=(const Integration&) = delete;
+
+  /// @brief Output rows before the first touch: rigid rod, beam at rest.
+  void add_rows_before_touch() {
+    while (out_i_ < out_t_.size() && out_t_[out_i_] < t0_) {
+      RodOnBeamRow r;
+      r.t = out_t_[out_i_++];
+      r.u = s_.v0 * r.t;
+      r.du = s_.v0;
+      r.gap = s_.gap - r.u;
+      r.rod.kinetic = 0.5 * s_.rod.mass() * s_.v0 * s_.v0;
+      r.rod.momentum = s_.rod.mass() * s_.v0;
+      sol_.rows.push_back(r);
+    }
+  }
+
+  /// @brief True when every output row has been written.
+  bool all_rows_written() const { return out_i_ == out_t_.size(); }
+
+  /// @brief Integrates from the first touch to t_end, piece by piece.
+  void integrate_from_touch() {
+    allocate_drivers();
+    y_.assign(dim_, 0.0);
+    y_[2 * N_] = s_.gap;  // the rod end has travelled the gap at first touch
+    t_ = t0_;
+    d_.closed = true;
+    contact_start_ = t0_;
+    eps_ = 1e-12 * std::max(T_, s_.t_end);
+    Progress progress("exact (" + std::to_string(N_) + " modes)", s_.t_end);  // stderr, long runs only
+    while (t_ < s_.t_end - eps_) {
+      progress.update(t_);
+      const double nb = next_breakpoint();
+      begin_piece();
+      if (!integrate_piece(nb)) t_ = nb;
+    }
+  }
+
+  /// @brief Closes an open contact interval at t_end, writes the remaining output rows and the
+  /// totals (impulse, energy balance error).
+  void finish() {
+    if (d_.closed) sol_.intervals.push_back({contact_start_, s_.t_end});
+    while (out_i_ < out_t_.size()) sol_.rows.push_back(make_row(t_, y_.data())), ++out_i_;
+    sol_.impulse = y_[2 * N_ + 1];
+    sol_.energy_error = energy_balance_error();
+  }
+
+ private:
+  /// @brief The main and the root-finding rk8pd drivers, with absolute tolerances rtol times
+  /// natural scales: displacement v0 x (time scale), velocity v0, impulse Z v0 x (time scale),
+  /// work (impulse) v0.
+  void allocate_drivers() {
+    const double tc = std::min(T_, s_.t_end - t0_) > 0.0 ? std::min(T_, s_.t_end - t0_) : T_;
+    const double X = s_.v0 * tc, V = s_.v0, J = d_.Z * s_.v0 * tc, W = J * s_.v0;
+    scale_.assign(dim_, X);
+    for (int n = 0; n < N_; ++n) scale_[N_ + n] = V;
+    scale_[2 * N_ + 1] = J;
+    scale_[2 * N_ + 2] = W;
+    sys_ = {rhs, nullptr, dim_, &d_};
+    const double h0 = 0.1 * delta_;
+    drv_.reset(gsl_odeiv2_driver_alloc_scaled_new(&sys_, gsl_odeiv2_step_rk8pd, h0, s_.rtol,
+                                                  s_.rtol, 1.0, 0.0, scale_.data()));
+    aux_.reset(gsl_odeiv2_driver_alloc_scaled_new(&sys_, gsl_odeiv2_step_rk8pd, h0, s_.rtol,
+                                                  s_.rtol, 1.0, 0.0, scale_.data()));
+  }
+
+  /// @brief End of the piece starting at t_ (s): the earliest pending breakpoint or t_end.
+  /// The piece start itself becomes a breakpoint one rod round trip later.
+  double next_breakpoint() {
+    while (!pending_.empty() && *pending_.begin() <= t_ + eps_) pending_.erase(pending_.begin());
+    pending_.insert(t_ + T_);  // this piece start comes back after one round trip in the rod
+    return std::min(*pending_.begin(), s_.t_end);
+  }
+
+  /// @brief Starts a piece at t_: points the delayed wave at its memory piece, lets the
+  /// breakpoint switch the contact state, opens a memory piece and samples it.
+  void begin_piece() {
+    d_.past = (t_ - T_ >= t0_ - eps_) ? mem_.piece_at(t_ - T_ + eps_) : -1;
+    if (!after_event_) switch_state_at_breakpoint();
+    after_event_ = false;
+    if (sol_.pieces == 0) sol_.first_P = d_.force(t_, y_.data());
+    ++sol_.pieces;
+    mem_.start_piece(t_);
+    memory_sample(t_, y_.data());
+    track(t_, y_.data());
+  }
+
+  /// @brief A breakpoint can switch the contact state by itself (the delayed wave jumps):
+  /// separation if the contact force would be negative, onset if the gap is closed and the
+  /// beam point is slower than the rod end.
+  void switch_state_at_breakpoint() {
+    if (d_.closed && d_.trial_force(t_, y_.data()) < 0.0) {
+      d_.closed = false;
+      sol_.intervals.push_back({contact_start_, t_});
+      y_[2 * N_] = d_.g0 + d_.beam_deflection(y_.data());  // drift removal, as in apply_event
+      ++sol_.events;
+    } else if (!d_.closed && d_.gap(y_.data()) <= 0.0 &&
+               d_.beam_velocity(y_.data()) < s_.v0 - 2.0 * d_.delayed(t_) / d_.Z) {
+      d_.closed = true;
+      contact_start_ = t_;
+      ++sol_.events;
+    }
+  }
+
+  /// @brief Where the integration of a piece stops (s, is an output time): memory samples
+  /// every delta, the output times up to nb, and the piece end nb, in time order.
+  std::vector<std::pair<double, bool>> piece_stops(double nb) const {
+    std::vector<std::pair<double, bool>> stops;
+    for (double s = t_ + delta_; s < nb - 0.25 * delta_; s += delta_) stops.push_back({s, false});
+    stops.push_back({nb, false});
+    for (std::size_t k = out_i_; k < out_t_.size() && out_t_[k] <= nb; ++k) stops.push_back({out_t_[k], true});
+    std::stable_sort(stops.begin(), stops.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    return stops;
+  }
+
+  /// @brief Integrates the piece from t_ towards nb stop by stop, sampling the memory and
+  /// writing output rows; stops at a contact event inside the piece.
+  /// @return true if the piece ended at an event (t_ is then the event time)
+  bool integrate_piece(double nb) {
+    const auto stops = piece_stops(nb);
+    gsl_odeiv2_driver_reset(drv_.get());
+    for (const auto& [stop, is_out] : stops) {
+      if (stop <= t_) {
+        if (is_out && stop == t_ && next_output_is(stop)) write_row();
+        continue;
+      }
+      const double t_prev = t_;
+      const std::vector<double> y_prev = y_;
+      const double f_prev = d_.event(t_, y_.data());
+      check(gsl_odeiv2_driver_apply(drv_.get(), &t_, stop, y_.data()), "integration");
+      sol_.steps += static_cast<long>(drv_->e->count);
+      gsl_odeiv2_driver_reset(drv_.get());
+      const double f_now = d_.event(t_, y_.data());
+      if (f_now < 0.0) {
+        // Separation (force through 0) or re-contact (gap through 0).
+        const double te = f_prev > 0.0 ? locate_event(t_prev, y_prev, t_) : t_prev;
+        apply_event(t_prev, y_prev, te);
+        return true;
+      }
+      if (!is_out) memory_sample(t_, y_.data());
+      track(t_, y_.data());
+      if (is_out && next_output_is(stop)) write_row();
+    }
+    return false;
+  }
+
+  /// @brief Brent root finding on the event function in (ta, tb), each evaluation integrating
+  /// from the last accepted stop (ta, ya).
+  /// @return the upper end of the final bracket, just past the crossing (event function <= 0)
+  double locate_event(double ta, const std::vector<double>& ya, double tb) {
+    struct RootCtx {
+      Integration* self;
+      double ta;
+      const std::vector<double>* ya;
+    } rc{this, ta, &ya};
+    gsl_function F;
+    F.function = [](double x, void* p) {
+      auto& c = *static_cast<RootCtx*>(p);
+      const auto& yx = c.self->integrate_copy(c.ta, *c.ya, x);
+      return c.self->d_.event(x, yx.data());
+    };
+    F.params = &rc;
+    std::unique_ptr<gsl_root_fsolver, void (*)(gsl_root_fsolver*)> owner(
+        gsl_root_fsolver_alloc(gsl_root_fsolver_brent), gsl_root_fsolver_free);
+    gsl_root_fsolver* solver = owner.get();
+    check(gsl_root_fsolver_set(solver, &F, ta, tb), "root bracketing");
+    double lo = ta, hi = tb;
+    for (int it = 0; it < 200; ++it) {
+      check(gsl_root_fsolver_iterate(solver), "root finding");
+      lo = gsl_root_fsolver_x_lower(solver);
+      hi = gsl_root_fsolver_x_upper(solver);
+      if (gsl_root_test_interval(lo, hi, 1e-13 * (1.0 + std::abs(hi)), 0.0) == GSL_SUCCESS) break;
+    }
+    return hi;
+  }
+
+  /// @brief Moves the state to the event at te (from the last accepted stop (ta, ya)) and
+  /// switches the contact state: closes the contact interval or opens a new one.
+  void apply_event(double ta, const std::vector<double>& ya, double te) {
+    y_ = integrate_copy(ta, ya, te);
+    t_ = te;
+    memory_sample(t_, y_.data());
+    track(t_, y_.data());
+    if (te <= last_event_t_) throw std::runtime_error("rod-on-beam: event location made no progress");
+    last_event_t_ = te;
+    if (d_.closed) {
+      sol_.intervals.push_back({contact_start_, t_});
+      // The rod end and the beam point moved together: remove the integration drift of
+      // u - w so that the opening gap starts from exactly zero.
+      y_[2 * N_] = d_.g0 + d_.beam_deflection(y_.data());
+    } else {
+      contact_start_ = t_;
+    }
+    d_.closed = !d_.closed;
+    ++sol_.events;
+    after_event_ = true;
+  }
+
+  /// @brief Integrates a copy of (ta, ya) to tb with the auxiliary driver (used by root
+  /// finding); the result stays valid until the next call.
+  const std::vector<double>& integrate_copy(double ta, const std::vector<double>& ya, double tb) {
+    tmp_ = ya;
+    gsl_odeiv2_driver_reset(aux_.get());
+    double t = ta;
+    if (tb > ta) check(gsl_odeiv2_driver_apply(aux_.get(), &t, tb, tmp_.data()), "integration");
+    sol_.steps += static_cast<long>(aux_->e->count);
+    return tmp_;
+  }
+
+  /// @brief Stores R = P + R(t - T) at tt in the reflection memory.
+  void memory_sample(double tt, const double* yy) { mem_.add(tt, d_.force(tt, yy) + d_.delayed(tt)); }
+
+  /// @brief Updates the extremes of the deflection and of the contact force.
+  void track(double tt, const double* yy) {
+    const double w = d_.beam_deflection(yy);
+    if (w > sol_.w_max) {
+      sol_.w_max = w;
+      sol_.t_w_max = tt;
+    }
+    sol_.w_min = std::min(sol_.w_min, w);
+    sol_.peak_P = std::max(sol_.peak_P, d_.force(tt, yy));
+  }
+
+  /// @brief True if the next output time is exactly stop (s).
+  bool next_output_is(double stop) const { return out_i_ < out_t_.size() && out_t_[out_i_] == stop; }
+
+  /// @brief Writes the output row at the current state and moves to the next output time.
+  void write_row() {
+    sol_.rows.push_back(make_row(t_, y_.data()));
+    ++out_i_;
+  }
+
+  /// @brief The output row of the state (t, y).
+  RodOnBeamRow make_row(double t, const double* y) const {
+    RodOnBeamRow r;
+    r.t = t;
+    r.closed = d_.closed;
+    const double rho = d_.delayed(t);
+    r.P = d_.force(t, y);
+    r.gap = d_.closed ? 0.0 : d_.gap(y);
+    r.u = y[2 * N_];
+    r.du = s_.v0 - (r.P + 2.0 * rho) / d_.Z;
+    r.w = d_.beam_deflection(y);
+    r.dw = d_.beam_velocity(y);
+    r.impulse = y[2 * N_ + 1];
+    r.rod_work = y[2 * N_ + 2];
+    add_beam_energies(y, r);
+    return r;
+  }
+
+  /// @brief Adds the beam's modal kinetic and strain energy (J) and momentum (N s) to r.
+  void add_beam_energies(const double* y, RodOnBeamRow& r) const {
+    const SimpleBeam& beam = s_.beam;
+    for (int n = 0; n < N_; ++n) {
+      r.beam_kinetic += 0.5 * d_.M * y[N_ + n] * y[N_ + n];
+      r.beam_strain += 0.5 * d_.M * d_.omega2[n] * y[n] * y[n];
+      r.beam_momentum += beam.rho * beam.area * beam.shape_integral(n + 1) * y[N_ + n];
+    }
+  }
+
+  /// @brief Largest |beam modal energy - work of P on the rod end| over the output rows (J).
+  double energy_balance_error() const {
+    double E_err = 0.0;
+    for (const auto& r : sol_.rows) E_err = std::max(E_err, std::abs(r.beam_kinetic + r.beam_strain - r.rod_work));
+    return E_err;
+  }
+
+  const RodOnBeamSetup& s_;
+  RodOnBeamSolution& sol_;
+  DelayMemory& mem_;
+  Dynamics d_;  // rhs() reads it through sys_
+  const int N_;
+  const std::size_t dim_;
+  double t0_ = 0.0, T_ = 0.0, delta_ = 0.0;  // s: first touch, rod round trip, memory spacing
+  std::vector<double> out_t_;                // s, output times
+  std::size_t out_i_ = 0;                    // next output row
+  std::vector<double> scale_;                // absolute tolerance scales
+  gsl_odeiv2_system sys_{};                  // the drivers point at it
+  Driver drv_, aux_;                         // main and root-finding drivers
+  std::vector<double> tmp_;                  // integrate_copy's result
+  std::vector<double> y_;                    // state, see rhs()
+  double t_ = 0.0;                           // s
+  double contact_start_ = 0.0;               // s, start of the open contact interval
+  bool after_event_ = false;                 // the current piece starts at a located event
+  double last_event_t_ = -std::numeric_limits<double>::infinity();  // s
+  double eps_ = 0.0;                         // s, time tolerance of breakpoints
+  std::set<double> pending_;                 // s, breakpoints still ahead
+};
+
 }  // namespace
 
 RodOnBeam::RodOnBeam(const RodOnBeamSetup& setup) : s_(setup) { run(); }
 
 void RodOnBeam::run() {
   gsl_set_error_handler_off();
-  const Rod& rod = s_.rod;
-  const SimpleBeam& beam = s_.beam;
-  Dynamics d;
-  d.N = s_.modes;
-  d.M = beam.modal_mass();
-  d.Z = rod.impedance();
-  d.v0 = s_.v0;
-  d.T = rod.round_trip();
-  d.g0 = s_.gap;
-  d.mem = &mem_;
-  for (int n = 1; n <= d.N; ++n) {
-    d.phi.push_back(beam.shape(n, s_.x_c));
-    d.omega2.push_back(beam.omega(n) * beam.omega(n));
-  }
-  const int N = d.N;
-  const std::size_t dim = static_cast<std::size_t>(2 * N + 3);
-  sol_.modes = N;
-  const double t0 = s_.v0 > 0.0 ? s_.gap / s_.v0 : std::numeric_limits<double>::infinity();
-  const double T = d.T;
-  // Memory samples a quarter radian of the highest mode apart (see DelayMemory::value).
-  const double delta = std::min(0.25 / beam.omega(N), T / 32.0);
-  sol_.sample_dt = delta;
-
-  // Output grid.
-  std::vector<double> out_t;
-  for (long k = 0;; ++k) {
-    const double t = static_cast<double>(k) * s_.dt_out;
-    if (t > s_.t_end * (1.0 + 1e-12)) break;
-    out_t.push_back(std::min(t, s_.t_end));
-  }
-  std::size_t out_i = 0;
-  auto energies = [&](const double* y, RodOnBeamRow& r) {
-    for (int n = 0; n < N; ++n) {
-      r.beam_kinetic += 0.5 * d.M * y[N + n] * y[N + n];
-      r.beam_strain += 0.5 * d.M * d.omega2[n] * y[n] * y[n];
-      r.beam_momentum += beam.rho * beam.area * beam.shape_integral(n + 1) * y[N + n];
-    }
-  };
-  auto make_row = [&](double t, const double* y) {
-    RodOnBeamRow r;
-    r.t = t;
-    r.closed = d.closed;
-    const double rho = d.delayed(t);
-    r.P = d.force(t, y);
-    r.gap = d.closed ? 0.0 : d.gap(y);
-    r.u = y[2 * N];
-    r.du = s_.v0 - (r.P + 2.0 * rho) / d.Z;
-    r.w = d.beam_deflection(y);
-    r.dw = d.beam_velocity(y);
-    r.impulse = y[2 * N + 1];
-    r.rod_work = y[2 * N + 2];
-    energies(y, r);
-    return r;
-  };
-  // Rows before the first touch: rigid rod, beam at rest.
-  while (out_i < out_t.size() && out_t[out_i] < t0) {
-    RodOnBeamRow r;
-    r.t = out_t[out_i++];
-    r.u = s_.v0 * r.t;
-    r.du = s_.v0;
-    r.gap = s_.gap - r.u;
-    r.rod.kinetic = 0.5 * rod.mass() * s_.v0 * s_.v0;
-    r.rod.momentum = rod.mass() * s_.v0;
-    sol_.rows.push_back(r);
-  }
-  if (out_i == out_t.size()) return;
-
-  // Natural scales for the absolute tolerances: displacement v0 x (time scale), velocity v0.
-  const double tc = std::min(T, s_.t_end - t0) > 0.0 ? std::min(T, s_.t_end - t0) : T;
-  const double X = s_.v0 * tc, V = s_.v0, J = d.Z * s_.v0 * tc, W = J * s_.v0;
-  std::vector<double> scale(dim, X);
-  for (int n = 0; n < N; ++n) scale[N + n] = V;
-  scale[2 * N + 1] = J;
-  scale[2 * N + 2] = W;
-  gsl_odeiv2_system sys = {rhs, nullptr, dim, &d};
-  const double h0 = 0.1 * delta;
-  Driver drv(gsl_odeiv2_driver_alloc_scaled_new(&sys, gsl_odeiv2_step_rk8pd, h0, s_.rtol,
-                                                  s_.rtol, 1.0, 0.0, scale.data()));
-  Driver aux(gsl_odeiv2_driver_alloc_scaled_new(&sys, gsl_odeiv2_step_rk8pd, h0, s_.rtol,
-                                                 s_.rtol, 1.0, 0.0, scale.data()));
-  // Integrates a copy of (ta, ya) to tb with the auxiliary driver (used by root finding).
-  std::vector<double> tmp(dim);
-  auto integrate_copy = [&](double ta, const std::vector<double>& ya, double tb) {
-    tmp = ya;
-    gsl_odeiv2_driver_reset(aux.get());
-    double t = ta;
-    if (tb > ta) check(gsl_odeiv2_driver_apply(aux.get(), &t, tb, tmp.data()), "integration");
-    sol_.steps += static_cast<long>(aux->e->count);
-    return tmp;
-  };
-
-  std::vector<double> y(dim, 0.0);
-  y[2 * N] = s_.gap;  // the rod end has travelled the gap at first touch
-  double t = t0;
-  d.closed = true;
-  double contact_start = t0;
-  bool after_event = false;
-  double last_event_t = -std::numeric_limits<double>::infinity();
-  const double eps = 1e-12 * std::max(T, s_.t_end);
-  std::set<double> pending;
-  double E_err = 0.0;
-  auto track = [&](double tt, const double* yy) {
-    const double w = d.beam_deflection(yy);
-    if (w > sol_.w_max) {
-      sol_.w_max = w;
-      sol_.t_w_max = tt;
-    }
-    sol_.w_min = std::min(sol_.w_min, w);
-    sol_.peak_P = std::max(sol_.peak_P, d.force(tt, yy));
-  };
-  auto memory_sample = [&](double tt, const double* yy) {
-    mem_.add(tt, d.force(tt, yy) + d.delayed(tt));
-  };
-
-  Progress progress("exact (" + std::to_string(N) + " modes)", s_.t_end);  // stderr, long runs only
-  while (t < s_.t_end - eps) {
-    progress.update(t);
-    while (!pending.empty() && *pending.begin() <= t + eps) pending.erase(pending.begin());
-    pending.insert(t + T);  // this piece start comes back after one round trip in the rod
-    const double nb = std::min(*pending.begin(), s_.t_end);
-    d.past = (t - T >= t0 - eps) ? mem_.piece_at(t - T + eps) : -1;
-    // A breakpoint can switch the contact state by itself (the delayed wave jumps).
-    if (!after_event) {
-      if (d.closed && d.trial_force(t, y.data()) < 0.0) {
-        d.closed = false;
-        sol_.intervals.push_back({contact_start, t});
-        y[2 * N] = d.g0 + d.beam_deflection(y.data());  // drift removal, as below
-        ++sol_.events;
-      } else if (!d.closed && d.gap(y.data()) <= 0.0 &&
-                 d.beam_velocity(y.data()) < s_.v0 - 2.0 * d.delayed(t) / d.Z) {
-        d.closed = true;
-        contact_start = t;
-        ++sol_.events;
-      }
-    }
-    after_event = false;
-    if (sol_.pieces == 0) sol_.first_P = d.force(t, y.data());
-    ++sol_.pieces;
-    mem_.start_piece(t);
-    memory_sample(t, y.data());
-    track(t, y.data());
-
-    // Stops: memory samples every delta, the output times, and the piece end.
-    std::vector<std::pair<double, bool>> stops;  // (time, is an output time)
-    for (double s = t + delta; s < nb - 0.25 * delta; s += delta) stops.push_back({s, false});
-    stops.push_back({nb, false});
-    for (std::size_t k = out_i; k < out_t.size() && out_t[k] <= nb; ++k) stops.push_back({out_t[k], true});
-    std::stable_sort(stops.begin(), stops.end(),
-                     [](const auto& a, const auto& b) { return a.first < b.first; });
-
-    gsl_odeiv2_driver_reset(drv.get());
-    bool event = false;
-    for (const auto& [stop, is_out] : stops) {
-      if (stop <= t) {
-        if (is_out && stop == t && out_i < out_t.size() && out_t[out_i] == stop) {
-          sol_.rows.push_back(make_row(t, y.data()));
-          ++out_i;
-        }
-        continue;
-      }
-      const double t_prev = t;
-      const std::vector<double> y_prev = y;
-      const double f_prev = d.event(t, y.data());
-      check(gsl_odeiv2_driver_apply(drv.get(), &t, stop, y.data()), "integration");
-      sol_.steps += static_cast<long>(drv->e->count);
-      gsl_odeiv2_driver_reset(drv.get());
-      const double f_now = d.event(t, y.data());
-      if (f_now < 0.0) {
-        // Separation (force through 0) or re-contact (gap through 0): Brent on the event
-        // function, each evaluation integrating from the last accepted stop.
-        double te = t_prev;
-        if (f_prev > 0.0) {
-          struct RootCtx {
-            decltype(integrate_copy)* integ;
-            double ta;
-            const std::vector<double>* ya;
-            const Dynamics* dyn;
-          } rc{&integrate_copy, t_prev, &y_prev, &d};
-          gsl_function F;
-          F.function = [](double x, void* p) {
-            auto& c = *static_cast<RootCtx*>(p);
-            const auto yx = (*c.integ)(c.ta, *c.ya, x);
-            return c.dyn->event(x, yx.data());
-          };
-          F.params = &rc;
-          std::unique_ptr<gsl_root_fsolver, void (*)(gsl_root_fsolver*)> owner(
-              gsl_root_fsolver_alloc(gsl_root_fsolver_brent), gsl_root_fsolver_free);
-          gsl_root_fsolver* solver = owner.get();
-          check(gsl_root_fsolver_set(solver, &F, t_prev, t), "root bracketing");
-          double lo = t_prev, hi = t;
-          for (int it = 0; it < 200; ++it) {
-            check(gsl_root_fsolver_iterate(solver), "root finding");
-            lo = gsl_root_fsolver_x_lower(solver);
-            hi = gsl_root_fsolver_x_upper(solver);
-            if (gsl_root_test_interval(lo, hi, 1e-13 * (1.0 + std::abs(hi)), 0.0) == GSL_SUCCESS) break;
-          }
-          te = hi;  // just past the crossing: the event function is <= 0 there
-        }
-        y = integrate_copy(t_prev, y_prev, te);
-        t = te;
-        memory_sample(t, y.data());
-        track(t, y.data());
-        if (te <= last_event_t) throw std::runtime_error("rod-on-beam: event location made no progress");
-        last_event_t = te;
-        if (d.closed) {
-          sol_.intervals.push_back({contact_start, t});
-          // The rod end and the beam point moved together: remove the integration drift of
-          // u - w so that the opening gap starts from exactly zero.
-          y[2 * N] = d.g0 + d.beam_deflection(y.data());
-        } else {
-          contact_start = t;
-        }
-        d.closed = !d.closed;
-        ++sol_.events;
-        event = true;
-        after_event = true;
-        break;
-      }
-      if (!is_out) memory_sample(t, y.data());
-      track(t, y.data());
-      if (is_out && out_i < out_t.size() && out_t[out_i] == stop) {
-        sol_.rows.push_back(make_row(t, y.data()));
-        ++out_i;
-      }
-    }
-    if (!event) t = nb;
-  }
-  if (d.closed) sol_.intervals.push_back({contact_start, s_.t_end});
-  while (out_i < out_t.size()) sol_.rows.push_back(make_row(t, y.data())), ++out_i;
-  sol_.impulse = y[2 * N + 1];
-  for (const auto& r : sol_.rows) E_err = std::max(E_err, std::abs(r.beam_kinetic + r.beam_strain - r.rod_work));
-  sol_.energy_error = E_err;
+  Integration integration(s_, sol_, mem_);
+  integration.add_rows_before_touch();
+  if (integration.all_rows_written()) return;
+  integration.integrate_from_touch();
+  integration.finish();
   if (s_.rod_fields) compute_rod_fields();
 }
 

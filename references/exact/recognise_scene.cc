@@ -33,67 +33,63 @@ bool holds_normal(const Support& s, Vec2 n) {
   return s.fix_x && s.fix_y;
 }
 
-}  // namespace
+/// @brief Throws SceneError(scene.file, key, "the exact method cannot solve this scene: " + msg).
+[[noreturn]] void refuse(const Scene& scene, const std::string& key, const std::string& msg) {
+  throw SceneError(scene.file, key, "the exact method cannot solve this scene: " + msg);
+}
 
-ExactProblem recognise_scene(const Scene& scene) {
-  auto refuse = [&](const std::string& key, const std::string& msg) {
-    throw SceneError(scene.file, key, "the exact method cannot solve this scene: " + msg);
-  };
+/// @brief Refuses a scene that is not two bodies with one frictionless contact and no damping.
+void check_one_frictionless_undamped_contact(const Scene& scene) {
   if (scene.bodies.size() != 2)
-    refuse("bodies", fmt::format("it needs exactly two bodies, found {}", scene.bodies.size()));
+    refuse(scene, "bodies", fmt::format("it needs exactly two bodies, found {}", scene.bodies.size()));
   if (scene.contacts.size() != 1)
-    refuse("contacts", fmt::format("it needs exactly one contact, found {}", scene.contacts.size()));
+    refuse(scene, "contacts", fmt::format("it needs exactly one contact, found {}", scene.contacts.size()));
   const Contact& c = scene.contacts[0];
   if (c.friction != 0.0)
-    refuse("contacts[0].friction",
+    refuse(scene, "contacts[0].friction",
            fmt::format("friction is not zero (mu = {}); the exact solutions are frictionless "
                        "(compare with --set contacts[0].friction=0)", c.friction));
   if (scene.model.rayleigh_mass != 0.0 || scene.model.rayleigh_stiffness != 0.0)
-    refuse("model.rayleigh_mass", "damping is not zero; the exact solutions are undamped");
+    refuse(scene, "model.rayleigh_mass", "damping is not zero; the exact solutions are undamped");
+}
 
-  ExactProblem p;
-  p.striker = c.striker;
-  p.target = c.target;
-  const Body& A = scene.bodies[c.striker];
-  const Body& B = scene.bodies[c.target];
-  const std::string ka = fmt::format("bodies[{}]", c.striker), kb = fmt::format("bodies[{}]", c.target);
-  if (c.node != 0 && c.node != A.elements)
-    refuse("contacts[0].node", "the striker's contact node is not an end of the striker");
-  if (!A.supports.empty()) refuse(ka + ".supports", "the striker has supports; it must be free");
-  const Vec2 pc = A.node_position(c.node);
-  const Vec2 po = A.node_position(c.node == 0 ? A.elements : 0);
-  p.dir = unit(sub(pc, po));
-  const double La = A.length(), Lb = B.length(), scale = La + Lb;
-  const double va_norm = norm(A.velocity), vb_norm = norm(B.velocity);
-  if (std::abs(cross(A.velocity, p.dir)) > kTol * (va_norm + vb_norm + 1e-300))
-    refuse(ka + ".velocity", "the striker's velocity is not along its own axis");
-  p.striker_rod = as_rod(A);
-  const Vec2 eb = unit(sub(B.end, B.start));
+/// @brief The striker's frame, common to both problems, and what the recognisers check against.
+struct Frame {
+  const Body& A;         ///< striker
+  const Body& B;         ///< target
+  std::string ka, kb;    ///< their scene keys, "bodies[i]"
+  Vec2 pc;               ///< m, striker's contact end
+  Vec2 eb;               ///< target axis, unit, start to end
+  double scale;          ///< m, La + Lb
+  double va_norm, vb_norm;  ///< m/s, speeds of striker and target
+};
 
-  if (B.supports.empty()) {
-    // Two free rods: coaxial, end to end, both moving along the common axis.
-    if (std::abs(cross(eb, p.dir)) > kTol || std::abs(cross(sub(B.start, pc), p.dir)) > kTol * scale)
-      refuse(kb + ".start", "the target is not coaxial with the striker (free target: the coaxial "
-                            "rod solution needs both bodies on one line)");
-    const double s1 = dot(sub(B.start, pc), p.dir), s2 = dot(sub(B.end, pc), p.dir);
-    if (std::min(s1, s2) < -kTol * scale)
-      refuse(kb + ".start", "the target is not ahead of the striker's contact end");
-    if (std::abs(cross(B.velocity, p.dir)) > kTol * (va_norm + vb_norm + 1e-300))
-      refuse(kb + ".velocity", "the target's velocity is not along the common axis");
-    p.kind = ExactKind::kCoaxialRods;
-    p.gap = std::max(0.0, std::min(s1, s2));
-    p.target_speed = dot(B.velocity, p.dir);
-    p.v0 = dot(A.velocity, p.dir) - p.target_speed;
-    p.target_rod = as_rod(B);
-    p.contact_kind = ContactKind::kEndToEnd;
-    return p;
-  }
+/// @brief Two free rods: coaxial, end to end, both moving along the common axis.
+void recognise_coaxial_rods(const Scene& scene, const Frame& f, ExactProblem& p) {
+  const Body& B = f.B;
+  if (std::abs(cross(f.eb, p.dir)) > kTol || std::abs(cross(sub(B.start, f.pc), p.dir)) > kTol * f.scale)
+    refuse(scene, f.kb + ".start", "the target is not coaxial with the striker (free target: the coaxial "
+                                   "rod solution needs both bodies on one line)");
+  const double s1 = dot(sub(B.start, f.pc), p.dir), s2 = dot(sub(B.end, f.pc), p.dir);
+  if (std::min(s1, s2) < -kTol * f.scale)
+    refuse(scene, f.kb + ".start", "the target is not ahead of the striker's contact end");
+  if (std::abs(cross(B.velocity, p.dir)) > kTol * (f.va_norm + f.vb_norm + 1e-300))
+    refuse(scene, f.kb + ".velocity", "the target's velocity is not along the common axis");
+  p.kind = ExactKind::kCoaxialRods;
+  p.gap = std::max(0.0, std::min(s1, s2));
+  p.target_speed = dot(B.velocity, p.dir);
+  p.v0 = dot(f.A.velocity, p.dir) - p.target_speed;
+  p.target_rod = as_rod(B);
+  p.contact_kind = ContactKind::kEndToEnd;
+}
 
-  // A rod end-on onto a simply supported beam.
-  if (std::abs(dot(eb, p.dir)) > kTol)
-    refuse(ka + ".end", "the striker is not perpendicular to the target (supported target: the "
-                        "rod-on-beam solution needs a normal, end-on impact)");
-  const Vec2 n = {-eb[1], eb[0]};
+/// @brief A rod end-on onto a simply supported beam, struck strictly between its supports.
+void recognise_rod_on_beam(const Scene& scene, const Frame& f, ExactProblem& p) {
+  const Body& B = f.B;
+  if (std::abs(dot(f.eb, p.dir)) > kTol)
+    refuse(scene, f.ka + ".end", "the striker is not perpendicular to the target (supported target: the "
+                                 "rod-on-beam solution needs a normal, end-on impact)");
+  const Vec2 n = {-f.eb[1], f.eb[0]};
   bool simple = B.supports.size() == 2;
   bool start_held = false, end_held = false;
   for (const Support& s : B.supports) {
@@ -102,26 +98,54 @@ ExactProblem recognise_scene(const Scene& scene) {
     else simple = false;
   }
   if (!(simple && start_held && end_held))
-    refuse(kb + ".supports", "the target is not simply supported (it needs one support at each "
-                             "end holding the transverse displacement, rotation free, no other supports)");
-  if (vb_norm != 0.0) refuse(kb + ".velocity", "the supported target is not at rest");
-  if (!(B.inertia > 0.0)) refuse(kb + ".inertia", "the target has no bending stiffness (inertia = 0)");
+    refuse(scene, f.kb + ".supports", "the target is not simply supported (it needs one support at each "
+                                      "end holding the transverse displacement, rotation free, no other supports)");
+  if (f.vb_norm != 0.0) refuse(scene, f.kb + ".velocity", "the supported target is not at rest");
+  if (!(B.inertia > 0.0)) refuse(scene, f.kb + ".inertia", "the target has no bending stiffness (inertia = 0)");
   if (scene.effects.bending && !*scene.effects.bending)
-    refuse("effects.bending", "bending is forced off, but the rod-on-beam solution is all bending");
-  const Vec2 rel = sub(pc, B.start);
-  const double x_c = dot(rel, eb), h = dot(rel, n);
+    refuse(scene, "effects.bending", "bending is forced off, but the rod-on-beam solution is all bending");
+  const double Lb = B.length();
+  const Vec2 rel = sub(f.pc, B.start);
+  const double x_c = dot(rel, f.eb), h = dot(rel, n);
   if (x_c <= kTol * Lb || x_c >= Lb * (1.0 - kTol))
-    refuse(kb + ".start", "the struck point is not strictly between the target's supports");
+    refuse(scene, f.kb + ".start", "the struck point is not strictly between the target's supports");
   // The contact end must face the beam: moving along dir brings it towards the axis.
   if (h * dot(p.dir, n) > 0.0)
-    refuse(ka + ".end", "the striker's contact end does not face the target");
+    refuse(scene, f.ka + ".end", "the striker's contact end does not face the target");
   p.kind = ExactKind::kRodOnBeam;
   p.gap = std::abs(h);
-  p.v0 = dot(A.velocity, p.dir);
+  p.v0 = dot(f.A.velocity, p.dir);
   p.beam = SimpleBeam{Lb, B.E, B.rho, B.area, B.inertia};
   p.x_c = x_c;
   const double le = Lb / B.elements, k = x_c / le;
   p.contact_kind = std::abs(k - std::round(k)) < 1e-9 ? ContactKind::kNodeToNode : ContactKind::kNodeToSurface;
+}
+
+}  // namespace
+
+ExactProblem recognise_scene(const Scene& scene) {
+  check_one_frictionless_undamped_contact(scene);
+  const Contact& c = scene.contacts[0];
+  ExactProblem p;
+  p.striker = c.striker;
+  p.target = c.target;
+  const Body& A = scene.bodies[c.striker];
+  const Body& B = scene.bodies[c.target];
+  const std::string ka = fmt::format("bodies[{}]", c.striker), kb = fmt::format("bodies[{}]", c.target);
+  if (c.node != 0 && c.node != A.elements)
+    refuse(scene, "contacts[0].node", "the striker's contact node is not an end of the striker");
+  if (!A.supports.empty()) refuse(scene, ka + ".supports", "the striker has supports; it must be free");
+  const Vec2 pc = A.node_position(c.node);
+  const Vec2 po = A.node_position(c.node == 0 ? A.elements : 0);
+  p.dir = unit(sub(pc, po));
+  const double scale = A.length() + B.length();
+  const double va_norm = norm(A.velocity), vb_norm = norm(B.velocity);
+  if (std::abs(cross(A.velocity, p.dir)) > kTol * (va_norm + vb_norm + 1e-300))
+    refuse(scene, ka + ".velocity", "the striker's velocity is not along its own axis");
+  p.striker_rod = as_rod(A);
+  const Frame f{A, B, ka, kb, pc, unit(sub(B.end, B.start)), scale, va_norm, vb_norm};
+  if (B.supports.empty()) recognise_coaxial_rods(scene, f, p);
+  else recognise_rod_on_beam(scene, f, p);
   return p;
 }
 

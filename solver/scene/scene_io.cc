@@ -212,49 +212,80 @@ void read_supports(TableReader& r, Body& b, std::map<std::string, std::string>* 
   }
 }
 
-}  // namespace
+// ---- the steps of load_scene --------------------------------------------------------------
 
-Scene load_scene(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
-  Scene sc;
-  sc.file = path.string();
+/// @brief The scene file's bytes; records its SHA-256 in sc.
+std::string read_scene_file(const std::filesystem::path& path, Scene& sc) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(sc.file, "", "cannot open the scene file");
   std::stringstream buf;
   buf << in.rdbuf();
   const std::string text = buf.str();
   sc.sha256 = sha256_hex(text);
+  return text;
+}
 
-  toml::table root;
+/// @brief Parses the TOML text of the file named in sc; a syntax error names line and column.
+toml::table parse_scene_text(const std::string& text, const Scene& sc) {
   try {
-    root = toml::parse(text, sc.file);
+    return toml::parse(text, sc.file);
   } catch (const toml::parse_error& e) {
     std::ostringstream msg;
     msg << "TOML syntax error at line " << e.source().begin.line << ", column "
         << e.source().begin.column << ": " << e.description();
     throw SceneError(sc.file, "", msg.str());
   }
+}
+
+/// @brief Applies the --set key=value overrides to root in order and records them in sc.
+void apply_overrides(toml::table& root, const std::vector<std::string>& overrides, Scene& sc) {
   for (const std::string& o : overrides) {
     apply_override(root, sc.file, o);
     const auto eq = o.find('=');
     sc.overrides[o.substr(0, eq)] = o.substr(eq + 1);
   }
+}
 
-  auto* assumed = &sc.assumed;
-  TableReader top(root, sc.file, "", assumed);
-  sc.name = top.string("name", "a string naming the scene");
-  sc.description = top.has("description") ? top.string("description", "a string") : "";
+/// @brief Reads the required [time] and the optional [model] table.
+void read_time_and_model(TableReader& top, Scene& sc) {
   const toml::table empty;
   {
-    TableReader r(sub_table(top, "time", true, empty), sc.file, "time", assumed);
+    TableReader r(sub_table(top, "time", true, empty), sc.file, "time", &sc.assumed);
     read_time(r, sc.time);
     r.finish();
   }
   {
-    TableReader r(sub_table(top, "model", false, empty), sc.file, "model", assumed);
+    TableReader r(sub_table(top, "model", false, empty), sc.file, "model", &sc.assumed);
     read_model(r, sc.model);
     r.finish();
   }
+}
 
+/// @brief Reads one [[bodies]] table (its name must be new in sc; defaults go to sc.assumed).
+Body read_body(TableReader& r, Scene& sc) {
+  auto* assumed = &sc.assumed;
+  Body b;
+  b.name = r.string("name", "a string naming the body");
+  if (sc.body_index(b.name) >= 0) r.fail("name", "body name '" + b.name + "' is used twice");
+  b.start = r.vec2("start", "[x, y] of the first node (m)");
+  b.end = r.vec2("end", "[x, y] of the last node (m)");
+  if (!(b.length() > 0.0)) r.fail("end", "expected a point different from start: the length must be positive (m)");
+  const long ne = r.integer("elements", "a whole number of elements >= 1");
+  if (ne < 1 || ne > 10'000'000) r.fail("elements", "expected a whole number of elements >= 1");
+  b.elements = static_cast<int>(ne);
+  b.E = positive(r, "E", "N/m^2");
+  b.rho = positive(r, "rho", "kg/m^3");
+  b.area = positive(r, "area", "m^2");
+  if (r.has("inertia")) b.inertia = positive(r, "inertia", "m^4");
+  if (r.has("velocity")) b.velocity = r.vec2("velocity", "[vx, vy] (m/s)");
+  else (*assumed)[r.path("velocity")] = "[0, 0]";
+  read_supports(r, b, assumed);
+  r.finish();
+  return b;
+}
+
+/// @brief Reads the [[bodies]] tables (at least two).
+void read_bodies(TableReader& top, Scene& sc) {
   const toml::node* bn = top.raw("bodies");
   if (!bn || !bn->as_array() || bn->as_array()->size() < 2)
     top.fail("bodies", "expected at least two [[bodies]] tables");
@@ -262,27 +293,30 @@ Scene load_scene(const std::filesystem::path& path, const std::vector<std::strin
   for (std::size_t i = 0; i < barr.size(); ++i) {
     const std::string key = "bodies[" + std::to_string(i) + "]";
     if (!barr.get(i)->as_table()) top.fail(key, "expected a table");
-    TableReader r(*barr.get(i)->as_table(), sc.file, key, assumed);
-    Body b;
-    b.name = r.string("name", "a string naming the body");
-    if (sc.body_index(b.name) >= 0) r.fail("name", "body name '" + b.name + "' is used twice");
-    b.start = r.vec2("start", "[x, y] of the first node (m)");
-    b.end = r.vec2("end", "[x, y] of the last node (m)");
-    if (!(b.length() > 0.0)) r.fail("end", "expected a point different from start: the length must be positive (m)");
-    const long ne = r.integer("elements", "a whole number of elements >= 1");
-    if (ne < 1 || ne > 10'000'000) r.fail("elements", "expected a whole number of elements >= 1");
-    b.elements = static_cast<int>(ne);
-    b.E = positive(r, "E", "N/m^2");
-    b.rho = positive(r, "rho", "kg/m^3");
-    b.area = positive(r, "area", "m^2");
-    if (r.has("inertia")) b.inertia = positive(r, "inertia", "m^4");
-    if (r.has("velocity")) b.velocity = r.vec2("velocity", "[vx, vy] (m/s)");
-    else (*assumed)[r.path("velocity")] = "[0, 0]";
-    read_supports(r, b, assumed);
-    r.finish();
-    sc.bodies.push_back(std::move(b));
+    TableReader r(*barr.get(i)->as_table(), sc.file, key, &sc.assumed);
+    sc.bodies.push_back(read_body(r, sc));
   }
+}
 
+/// @brief Reads one [[contacts]] table, resolving striker and target names to body indices.
+Contact read_contact(TableReader& r, const Scene& sc) {
+  Contact c;
+  const std::string s = r.string("striker", "the name of a body");
+  c.striker = sc.body_index(s);
+  if (c.striker < 0) r.fail("striker", "expected the name of a body, got '" + s + "'");
+  c.node = node_ref(r, "node", sc.bodies[c.striker]);
+  const std::string t = r.string("target", "the name of a body");
+  c.target = sc.body_index(t);
+  if (c.target < 0) r.fail("target", "expected the name of a body, got '" + t + "'");
+  if (c.target == c.striker) r.fail("target", "expected a body other than the striker");
+  c.friction = r.number_or("friction", 0.0, "a Coulomb coefficient >= 0");
+  if (c.friction < 0) r.fail("friction", "expected a Coulomb coefficient >= 0");
+  r.finish();
+  return c;
+}
+
+/// @brief Reads the [[contacts]] tables (at least one), after the bodies.
+void read_contacts(TableReader& top, Scene& sc) {
   const toml::node* cn = top.raw("contacts");
   if (!cn || !cn->as_array() || cn->as_array()->empty())
     top.fail("contacts", "expected at least one [[contacts]] table");
@@ -290,29 +324,23 @@ Scene load_scene(const std::filesystem::path& path, const std::vector<std::strin
   for (std::size_t i = 0; i < carr.size(); ++i) {
     const std::string key = "contacts[" + std::to_string(i) + "]";
     if (!carr.get(i)->as_table()) top.fail(key, "expected a table");
-    TableReader r(*carr.get(i)->as_table(), sc.file, key, assumed);
-    Contact c;
-    const std::string s = r.string("striker", "the name of a body");
-    c.striker = sc.body_index(s);
-    if (c.striker < 0) r.fail("striker", "expected the name of a body, got '" + s + "'");
-    c.node = node_ref(r, "node", sc.bodies[c.striker]);
-    const std::string t = r.string("target", "the name of a body");
-    c.target = sc.body_index(t);
-    if (c.target < 0) r.fail("target", "expected the name of a body, got '" + t + "'");
-    if (c.target == c.striker) r.fail("target", "expected a body other than the striker");
-    c.friction = r.number_or("friction", 0.0, "a Coulomb coefficient >= 0");
-    if (c.friction < 0) r.fail("friction", "expected a Coulomb coefficient >= 0");
-    r.finish();
-    sc.contacts.push_back(c);
+    TableReader r(*carr.get(i)->as_table(), sc.file, key, &sc.assumed);
+    sc.contacts.push_back(read_contact(r, sc));
   }
+}
 
-  {
-    TableReader r(sub_table(top, "effects", false, empty), sc.file, "effects", nullptr);
-    sc.effects.bending = r.boolean_opt("bending");
-    sc.effects.friction = r.boolean_opt("friction");
-    sc.effects.damping = r.boolean_opt("damping");
-    r.finish();
-  }
+/// @brief Reads the optional [effects] table (unset switches stay unset: derived later).
+void read_effects(TableReader& top, Scene& sc) {
+  const toml::table empty;
+  TableReader r(sub_table(top, "effects", false, empty), sc.file, "effects", nullptr);
+  sc.effects.bending = r.boolean_opt("bending");
+  sc.effects.friction = r.boolean_opt("friction");
+  sc.effects.damping = r.boolean_opt("damping");
+  r.finish();
+}
+
+/// @brief Keeps the method option tables ([paper], [ida], ...) as TOML text for their methods.
+void keep_method_tables(TableReader& top, Scene& sc) {
   for (const std::string& m : kMethodTables) {
     if (const toml::node* n = top.raw(m)) {
       if (!n->as_table()) top.fail(m, "expected a table [" + m + "]");
@@ -321,9 +349,11 @@ Scene load_scene(const std::filesystem::path& path, const std::vector<std::strin
       sc.method_tables[m] = os.str();
     }
   }
-  top.finish();
+}
 
-  // Cross-checks that need the whole scene.
+/// @brief Cross-checks that need the whole scene: a bending scene gives every body an inertia,
+/// and no two bodies overlap at t = 0.
+void check_whole_scene(const Scene& sc) {
   const bool bending = sc.effects.bending.value_or(!scene_is_collinear(sc));
   for (std::size_t i = 0; i < sc.bodies.size(); ++i)
     if (bending && sc.bodies[i].inertia <= 0.0)
@@ -335,6 +365,26 @@ Scene load_scene(const std::filesystem::path& path, const std::vector<std::strin
         throw SceneError(sc.file, "bodies[" + std::to_string(j) + "].start",
                          "bodies '" + sc.bodies[i].name + "' and '" + sc.bodies[j].name +
                              "' overlap at t = 0; expected a positive gap between them");
+}
+
+}  // namespace
+
+Scene load_scene(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
+  Scene sc;
+  sc.file = path.string();
+  toml::table root = parse_scene_text(read_scene_file(path, sc), sc);
+  apply_overrides(root, overrides, sc);
+
+  TableReader top(root, sc.file, "", &sc.assumed);
+  sc.name = top.string("name", "a string naming the scene");
+  sc.description = top.has("description") ? top.string("description", "a string") : "";
+  read_time_and_model(top, sc);
+  read_bodies(top, sc);
+  read_contacts(top, sc);
+  read_effects(top, sc);
+  keep_method_tables(top, sc);
+  top.finish();
+  check_whole_scene(sc);
   return sc;
 }
 

@@ -1,4 +1,5 @@
 #include <beamimpact/exact/RodOnBeam.hpp>
+#include <beamimpact/exact/output_times.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -74,17 +75,6 @@ using Driver = std::unique_ptr<gsl_odeiv2_driver, DriverDeleter>;
 void check(int status, const char* what) {
   if (status != GSL_SUCCESS)
     throw std::runtime_error(std::string("rod-on-beam: ") + what + ": " + gsl_strerror(status));
-}
-
-/// @brief Output times k dt_out, k = 0, 1, ... while <= t_end (s; the last one clamped to t_end).
-std::vector<double> output_times(double dt_out, double t_end) {
-  std::vector<double> out_t;
-  for (long k = 0;; ++k) {
-    const double t = static_cast<double>(k) * dt_out;
-    if (t > t_end * (1.0 + 1e-12)) break;
-    out_t.push_back(std::min(t, t_end));
-  }
-  return out_t;
 }
 
 /// @brief Modal data of the beam at the struck point and the rod's constants, for rhs().

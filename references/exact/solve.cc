@@ -6,6 +6,7 @@
 
 #include <beamimpact/exact/CoaxialRods.hpp>
 #include <beamimpact/exact/RodOnBeam.hpp>
+#include <beamimpact/exact/output_times.hpp>
 #include <beamimpact/exact/recognise_scene.hpp>
 #include <beamimpact/record/ResultRecorder.hpp>
 #include <beamimpact/scene/TableReader.hpp>
@@ -18,17 +19,6 @@ const char* kMergeRule =
     "a zero-force phase with the gap still closed is not a separation (no merging of real gaps)";
 
 Vec2 along(Vec2 d, double s) { return {d[0] * s, d[1] * s}; }
-
-// Output times k dt_out, k = 0, 1, ... up to time.end.
-std::vector<double> output_times(double dt_out, double end) {
-  std::vector<double> t;
-  for (long k = 0;; ++k) {
-    const double tk = static_cast<double>(k) * dt_out;
-    if (tk > end * (1.0 + 1e-12)) break;
-    t.push_back(std::min(tk, end));
-  }
-  return t;
-}
 
 // Records the rows (energies, momentum drift, output-grid contact statistics) and then reports
 // what the exact solution knows exactly: its event times, impulse and peak force. The

@@ -5,8 +5,8 @@
 namespace beamimpact::paper {
 
 ContactSolver::ContactSolver(std::vector<ContactPair>& pairs, std::vector<double> mu, bool friction,
-                             int n, double gap_tol, ApplyH apply_H)
-    : pairs_(pairs), mu_(std::move(mu)), friction_(friction), tol_(gap_tol), apply_H_(std::move(apply_H)),
+                             int n, std::vector<double> gap_tol, ApplyH apply_H)
+    : pairs_(pairs), mu_(std::move(mu)), friction_(friction), tol_(std::move(gap_tol)), apply_H_(std::move(apply_H)),
       out_(pairs.size()), hn_(pairs.size(), Eigen::VectorXd::Zero(n)),
       ht_(friction ? pairs.size() : 0, Eigen::VectorXd::Zero(n)), fresh_(pairs.size(), 0),
       scratch_(Eigen::VectorXd::Zero(n)), gbar_(pairs.size()), sbar_(pairs.size()), active_(pairs.size()) {}
@@ -34,7 +34,7 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
     gbar_[c] = p.g0() + ContactPair::eval(p.normal_row(), Ubar);
     sbar_[c] = friction_ ? ContactPair::eval(p.tangent_row(), Ubar) - ContactPair::eval(p.tangent_row(), U) : 0.0;
     out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};
-    active_[c] = gbar_[c] < -tol_ && p.on_surface();
+    active_[c] = gbar_[c] < -tol_[c] && p.on_surface();
     if (active_[c]) refresh_response(c);
   }
   // Gauss-Seidel over contacts: each local solve sees the others' current forces. A contact that
@@ -56,13 +56,13 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
         }
       }
       if (!active_[c]) {
-        if (g >= -tol_) continue;  // still open with the others' forces
+        if (g >= -tol_[c]) continue;  // still open with the others' forces
         active_[c] = 1;
         refresh_response(c);
       }
       const double Ann = ContactPair::eval(p.normal_row(), hn_[c]);
       ContactForce f{0.0, 0.0, g, s, ContactState::kOpen};
-      if (g < -tol_) {
+      if (g < -tol_[c]) {
         if (!friction_ || mu_[c] == 0.0) {
           f.R = -g / Ann;  // Eq. 20 in general form: the gap closes exactly
           f.state = friction_ ? ContactState::kSlip : ContactState::kClosed;

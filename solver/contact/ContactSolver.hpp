@@ -28,9 +28,10 @@ class ContactSolver {
  public:
   /// @brief apply_H(f, out): out = dt^2 H f (the response of U^{p+1} to a force f).
   using ApplyH = std::function<void(const Eigen::VectorXd&, Eigen::VectorXd&)>;
-  /// @brief friction: build tangent rows (false: normal rows only, tau = 0 and no 2x2 solves).
+  /// @brief friction: build tangent rows (false: normal rows only, tau = 0 and no 2x2 solves);
+  /// gap_tol: per contact, the penetration (m) below which a predicted gap counts as closed.
   ContactSolver(std::vector<ContactPair>& pairs, std::vector<double> mu, bool friction, int n,
-                double gap_tol, ApplyH apply_H);
+                std::vector<double> gap_tol, ApplyH apply_H);
 
   /// @brief Solves for Ubar (predicted U^{p+1}) and U (current U^p). Re-locates sliding points.
   const std::vector<ContactForce>& solve(const Eigen::VectorXd& Ubar, const Eigen::VectorXd& U);
@@ -48,7 +49,7 @@ class ContactSolver {
   std::vector<ContactPair>& pairs_;
   std::vector<double> mu_;
   bool friction_;
-  double tol_;
+  std::vector<double> tol_;
   ApplyH apply_H_;
   std::vector<ContactForce> out_;
   std::vector<Eigen::VectorXd> hn_, ht_;  ///< dt^2 H G_n, dt^2 H G_t per contact

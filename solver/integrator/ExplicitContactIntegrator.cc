@@ -17,10 +17,17 @@ std::vector<double> frictions(const Scene& scene) {
   return mu;
 }
 
-double length_scale(const Scene& scene) {
-  double L = 0.0;
-  for (const Body& b : scene.bodies) L = std::max(L, b.length());
-  return L;
+/// Per contact: 1e-10 of the larger element length of the two bodies in contact. Above the
+/// roundoff of positions (~1e-15 relative), far below any physical penetration per step, and
+/// blind to bodies that take no part in the contact.
+std::vector<double> gap_tolerances(const Scene& scene) {
+  std::vector<double> tol;
+  for (const Contact& c : scene.contacts) {
+    const Body& a = scene.bodies[c.striker];
+    const Body& b = scene.bodies[c.target];
+    tol.push_back(1e-10 * std::max(a.length() / a.elements, b.length() / b.elements));
+  }
+  return tol;
 }
 
 }  // namespace
@@ -35,9 +42,7 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
       minv_(model),
       fint_(model, effects.corotational ? effects.rotating : std::vector<bool>(scene.bodies.size(), false)),
       pairs_(make_pairs(model, scene, surface)),
-      // Gap tolerance 1e-10 of the largest body: above roundoff of positions (~1e-15 relative),
-      // far below any physical penetration per step.
-      solver_(pairs_, frictions(scene), effects.friction, model.size(), 1e-10 * length_scale(scene),
+      solver_(pairs_, frictions(scene), effects.friction, model.size(), gap_tolerances(scene),
               [this](const Eigen::VectorXd& f, Eigen::VectorXd& out) { apply_H(f, out); }) {
   if (!model.lumped() && fint_.nonlinear()) {
     cmass_ = std::make_unique<CorotationalMass>(model, fint_);

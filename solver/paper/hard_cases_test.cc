@@ -58,6 +58,28 @@ TEST(HardCases, ContactPushedIntoPenetrationByAnotherClosesInTheSameStep) {
 }
 
 
+// The gap tolerance belongs to each contact (1e-10 of its elements' size), not to the scene: a
+// 2 km body that takes no part in any contact must not change S4-45's contacts. dt is fixed
+// (4e-5 s, about the scene's automatic step) so that only the tolerance can differ. Before the
+// fix the tolerance was 1e-10 of the longest body: 2e-7 m instead of 1e-10 m.
+TEST(HardCases, AnUnrelatedBodyDoesNotChangeTheContacts) {
+  Scene base = load_scene(testing::paper_scene("s4_oblique_45"), {"model.kinematics=linear"});
+  base.time.dt = 4e-5;
+  Scene with_far = base;
+  Body far = with_far.bodies[1];
+  far.name = "far";
+  far.start = {1000.0, 1000.0};
+  far.end = {3000.0, 1000.0};
+  far.supports.clear();
+  with_far.bodies.push_back(far);
+  const SimulationResult a = solve(base), b = solve(with_far);
+  ASSERT_EQ(a.history.size(), b.history.size());
+  EXPECT_EQ(a.contacts[0].intervals, b.contacts[0].intervals);
+  EXPECT_EQ(a.contacts[0].impulse_normal, b.contacts[0].impulse_normal);  // the same steps, to the last bit
+  for (std::size_t i = 0; i < a.history.size(); ++i)
+    ASSERT_EQ(a.history[i].contacts[0].R, b.history[i].contacts[0].R) << "row " << i;
+}
+
 // ---- The real gap (issue 11/12): measured every step from the deformed geometry -------------
 
 /// The smallest real gap of contact c over the run (m), computed here at every step from the

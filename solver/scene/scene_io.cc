@@ -1,8 +1,11 @@
 #include <beamimpact/scene/scene_io.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
+
+#include <fmt/format.h>
 
 #include <beamimpact/util/sha256.hpp>
 #include <beamimpact/scene/collinear.hpp>
@@ -353,6 +356,32 @@ void keep_method_tables(TableReader& top, Scene& sc) {
 
 /// @brief Cross-checks that need the whole scene: a bending scene gives every body an inertia,
 /// and no two bodies overlap at t = 0.
+/// Distance (m) from point x to the segment of body b.
+double distance_to_body(const Vec2& x, const Body& b) {
+  const Vec2 d{b.end[0] - b.start[0], b.end[1] - b.start[1]};
+  const double L2 = d[0] * d[0] + d[1] * d[1];
+  const double s = std::clamp(((x[0] - b.start[0]) * d[0] + (x[1] - b.start[1]) * d[1]) / L2, 0.0, 1.0);
+  return std::hypot(x[0] - b.start[0] - s * d[0], x[1] - b.start[1] - s * d[1]);
+}
+
+/// A striker node that touches its target at t = 0 has no gap to close: refused for every method.
+void check_initial_gaps(const Scene& sc) {
+  double scale = 0.0;
+  for (const Body& b : sc.bodies) scale = std::max(scale, b.length());
+  for (std::size_t i = 0; i < sc.contacts.size(); ++i) {
+    const Contact& c = sc.contacts[i];
+    const Body& striker = sc.bodies[c.striker];
+    const Body& target = sc.bodies[c.target];
+    const Vec2 x = striker.node_position(c.node);
+    if (distance_to_body(x, target) <= 1e-9 * scale)
+      throw SceneError(sc.file, "contacts[" + std::to_string(i) + "].node",
+                       fmt::format("the striker node of '{}' at ({:.6g}, {:.6g}) m touches target '{}' at t = 0 "
+                                   "(zero initial gap); expected a positive gap: move '{}' away from '{}' "
+                                   "(a contact must close during the run)",
+                                   striker.name, x[0], x[1], target.name, striker.name, target.name));
+  }
+}
+
 void check_whole_scene(const Scene& sc) {
   const bool bending = sc.effects.bending.value_or(!scene_is_collinear(sc));
   for (std::size_t i = 0; i < sc.bodies.size(); ++i)
@@ -365,6 +394,7 @@ void check_whole_scene(const Scene& sc) {
         throw SceneError(sc.file, "bodies[" + std::to_string(j) + "].start",
                          "bodies '" + sc.bodies[i].name + "' and '" + sc.bodies[j].name +
                              "' overlap at t = 0; expected a positive gap between them");
+  check_initial_gaps(sc);
 }
 
 }  // namespace

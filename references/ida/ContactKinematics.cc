@@ -22,7 +22,7 @@ void append_scaled(std::vector<DofTerm>& out, const std::vector<DofTerm>& in, do
 
 }  // namespace
 
-double ContactFrame::gap(const Eigen::VectorXd& U) const { return g0 + apply(n_terms, U); }
+double ContactFrame::gap(const Eigen::VectorXd& U) const { return beyond > 0.0 ? beyond : g0 + apply(n_terms, U); }
 double ContactFrame::normal_rate(const Eigen::VectorXd& V) const { return apply(n_terms, V); }
 double ContactFrame::tangential_rate(const Eigen::VectorXd& V) const { return apply(t_terms, V); }
 
@@ -74,7 +74,7 @@ ModelContact::ModelContact(const Model& model, const Scene& scene, int contact_i
   striker_t_ = model.project(striker_node_, t_);
 }
 
-double ModelContact::coordinate(const Eigen::VectorXd& U) const {
+double ModelContact::coordinate(const Eigen::VectorXd& U, double* beyond) const {
   // The struck material point is where the target's displaced line passes under the striker:
   // s + t.u_b(s) = s_ref + t.u_a. Two fixed-point sweeps are exact to O(strain^2).
   const double L = le_ * target_elements_;
@@ -90,6 +90,7 @@ double ModelContact::coordinate(const Eigen::VectorXd& U) const {
     const Vec2 ub{(1 - xi2) * u1[0] + xi2 * u2[0], (1 - xi2) * u1[1] + xi2 * u2[1]};
     s = sa - dot(t_, ub);
   }
+  if (beyond) *beyond = s < 0.0 ? -s : (s > L ? s - L : 0.0);
   return std::clamp(s, 0.0, L);
 }
 
@@ -105,7 +106,7 @@ ContactFrame ModelContact::evaluate(const Eigen::VectorXd& U) const {
     f.xi2 = end_node_ == target_first_node_ ? 0.0 : 1.0;
     return f;
   }
-  const double r = coordinate(U) / le_;
+  const double r = coordinate(U, &f.beyond) / le_;
   f.segment = std::clamp(static_cast<int>(std::floor(r)), 0, target_elements_ - 1);
   f.xi2 = r - f.segment;
   const int n1 = target_first_node_ + f.segment, n2 = n1 + 1;

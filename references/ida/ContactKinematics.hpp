@@ -23,8 +23,10 @@ struct ContactFrame {
   std::vector<DofTerm> t_terms; ///< d(relative tangential displacement)/dU (striker +t, target -xi t)
   int segment = 0;              ///< target element that holds the struck point (sparsity identity)
   double xi2 = 0.0;             ///< weight of the segment's second node (0 at its first node)
+  double beyond = 0.0;          ///< m, how far the striker is past the target's end (0 over the surface)
 
-  /// @brief Gap (m) = g0 + n . U.
+  /// @brief Gap (m) = g0 + n . U over the surface; past the target's end the surface has ended
+  /// and the gap is the distance beyond it (> 0: the contact opens, no phantom surface).
   double gap(const Eigen::VectorXd& U) const;
   /// @brief n . V (m/s) for any vector (gap rate for V).
   double normal_rate(const Eigen::VectorXd& V) const;
@@ -92,7 +94,9 @@ class ModelContact : public ContactKinematics {
   std::vector<DofTerm> striker_n_, striker_t_;
   std::vector<DofTerm> end_n_, end_t_;  ///< end_to_end: the target end node's terms
   int end_node_ = -1;
-  double coordinate(const Eigen::VectorXd& U) const;
+  /// Struck point's coordinate along the target (m), clamped to it; `beyond` receives how far
+  /// the unclamped one lies past an end (0 over the surface).
+  double coordinate(const Eigen::VectorXd& U, double* beyond = nullptr) const;
 };
 
 }  // namespace beamimpact::ida

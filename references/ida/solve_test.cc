@@ -208,3 +208,33 @@ TEST(RunIda, BadOptionsAreSceneErrors) {
 
 }  // namespace
 }  // namespace beamimpact::ida
+
+namespace beamimpact::ida {
+namespace {
+
+// IDA's struck point is clamped to the target; past the target's end its surface has ended, so
+// the gap is the distance beyond the end and the contact opens. Before the fix IDA pressed on the
+// end point's extension: 19 rows with R > 0 (up to 0.11 N) and the tip past B's end. Checked
+// from the history (tip and struck-point positions), at both ends of the target.
+TEST(IdaHardCases, StrikerSlidingOffEitherEndIsReleased) {
+  for (const char* name : {"slide_off_roller", "slide_off_pin"}) {
+    const Scene s = load_scene(testing::hard_scene(name));
+    const SimulationResult r = solve(s);
+    const double tip0 = s.bodies[0].end[0];
+    const bool toward_end = s.bodies[0].velocity[0] > 0.0;
+    const double end = toward_end ? s.bodies[1].end[0] : s.bodies[1].start[0];
+    int beyond = 0, carried = 0;
+    for (const HistoryRow& row : r.history) {
+      const ContactSample& c = row.contacts[0];
+      const double past = (tip0 + c.ua[0]) - (end + c.ub[0]);
+      if ((toward_end ? past : -past) <= 1e-3) continue;
+      ++beyond;
+      carried += c.R > 0.0;
+    }
+    EXPECT_GT(beyond, 50) << name;
+    EXPECT_EQ(carried, 0) << name << ": rows with the tip past the end and R > 0";
+  }
+}
+
+}  // namespace
+}  // namespace beamimpact::ida

@@ -39,11 +39,12 @@ MUTANTS = [
                  "    active_[c] = gbar_[c] < -tol_ && p.on_surface() &&\n"
                  "                 (!was_open || p.g0() + ContactPair::eval(p.normal_row(), U) < -tol_);\n")]),
     dict(name="nts_weights_swapped", ci=False,
-         what="node-to-surface: the target nodes' weights xi1, xi2 swapped (the point mirrored in its element)",
+         what="node-to-surface (both weights non-zero): the target nodes' weights xi1, xi2 swapped",
          edits=[(CP, "    if (xi1_ != 0.0) model_.append_projection(n1, d, -xi1_, out);\n"
                      "    if (xi2_ != 0.0) model_.append_projection(n1 + 1, d, -xi2_, out);",
-                 "    if (xi2_ != 0.0) model_.append_projection(n1, d, -xi2_, out);\n"
-                 "    if (xi1_ != 0.0) model_.append_projection(n1 + 1, d, -xi1_, out);")]),
+                 "    const bool nts = xi1_ != 0.0 && xi2_ != 0.0;  // node-to-node and end-to-end untouched\n"
+                 "    if (xi1_ != 0.0) model_.append_projection(nts ? n1 + 1 : n1, d, -xi1_, out);\n"
+                 "    if (xi2_ != 0.0) model_.append_projection(nts ? n1 : n1 + 1, d, -xi2_, out);")]),
     dict(name="friction_sign", ci=False,
          what="slip friction acts along the sliding instead of against it",
          edits=[(CS, "const double sigma = Rs > 0.0 ? (Ts >= 0 ? 1.0 : -1.0) : (s > 0 ? -1.0 : 1.0);",

@@ -2,6 +2,8 @@
 """@brief Mutation testing of the paper's integrator: build each mutant (tools/mutation/mutants.py)
 in a scratch copy of the source tree and run the quick verification tier against it.
 
+Besides the quick tier, the real-gap tests (GEOMETRY_TESTS) run against each mutant.
+
 Usage: tools/mutation-test.sh [--all] [--only NAME[,NAME]] [--out DIR] [--scratch DIR] [--jobs N]
   default: the fast CI subset (mutants marked ci); --all: every mutant.
 Writes OUT/mutation.json: [{"mutant", "what", "killed_by": [gate ids "case:metric"], ...}] and
@@ -12,6 +14,7 @@ build/, so ccache serves every unmutated object).
 """
 import argparse
 import json
+import re
 import os
 import shutil
 import subprocess
@@ -22,6 +25,10 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from mutants import MUTANTS  # noqa: E402
+
+# Test binaries (under build/solver/) run against each mutant besides the quick tier: the real-gap
+# tests measure penetration from U and the target's own interpolation (solver/paper/hard_cases_test.cc).
+GEOMETRY_TESTS = ["hard_cases_test"]
 
 
 def sh(cmd, **kw):
@@ -68,9 +75,21 @@ def build(build_dir: Path, tree: Path, log: Path):
         if r.returncode:
             log.write_text(r.stdout + r.stderr)
             return False
-    r = sh(["cmake", "--build", str(build_dir), "-j2", "--target", "beamimpact"], env=env)
+    r = sh(["cmake", "--build", str(build_dir), "-j2", "--target", "beamimpact", *GEOMETRY_TESTS], env=env)
     log.write_text(r.stdout + r.stderr)
     return r.returncode == 0
+
+
+def geometry_tests(build_dir: Path, log: Path):
+    """Run the tests that judge the integrator from the deformed geometry (the real gap), not from
+    its own contact algebra; return the failed test names as "test:Suite.Name"."""
+    failed, text = [], ""
+    for t in GEOMETRY_TESTS:
+        r = sh([str(build_dir / "solver" / t), "--gtest_brief=1"])
+        text += r.stdout + r.stderr
+        failed += sorted({"test:" + m.group(1) for m in re.finditer(r"^\[  FAILED  \] ([\w/]+\.[\w/]+)", r.stdout, re.M)})
+    log.write_text(text)
+    return failed
 
 
 def verify(tree: Path, binary: Path, out: Path, jobs: int):
@@ -121,6 +140,7 @@ def main():
         print(f"mutation-test: the unmutated tree does not build (see {runs / 'baseline.build.log'})", file=sys.stderr)
         return 2
     failed, rc, wall = verify(tree, binary, runs / "baseline", a.jobs)
+    failed += geometry_tests(build_dir, runs / "baseline.tests.log")
     if rc != 0 or failed:
         print(f"mutation-test: the unmutated tree fails the quick tier ({failed}); see {runs / 'baseline.log'}", file=sys.stderr)
         return 2
@@ -141,7 +161,7 @@ def main():
                 entry["note"] = "mutant does not compile"
             else:
                 failed, rc, wall = verify(tree, binary, runs / name, a.jobs)
-                entry["killed_by"] = failed
+                entry["killed_by"] = failed + geometry_tests(build_dir, runs / f"{name}.tests.log")
                 if rc not in (0, 1):
                     entry["killed_by"].append(f"verify exited {rc}")
                 entry["wall_seconds"] = round(wall, 1)

@@ -27,8 +27,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from mutants import MUTANTS  # noqa: E402
 
 # Test binaries (under build/solver/) run against each mutant besides the quick tier: the real-gap
-# tests measure penetration from U and the target's own interpolation (solver/paper/hard_cases_test.cc).
-GEOMETRY_TESTS = ["hard_cases_test"]
+# tests measure penetration from U and the target's own interpolation (solver/paper/hard_cases_test.cc),
+# the sliding-gap test the gap of a closed sliding contact from the deformed node positions.
+GEOMETRY_TESTS = ["hard_cases_test", "sliding_gap_test"]
 
 
 def sh(cmd, **kw):

@@ -9,8 +9,10 @@
 // BEAMIMPACT_IDA_FULL, the "full" variant (dt0 ... dt0/16, the scenes' end times).
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -59,6 +61,24 @@ double displacement_difference(const SimulationResult& p, const SimulationResult
     }
   }
   return d;
+}
+
+using Intervals = std::vector<std::array<double, 2>>;
+
+/// Intervals separated by less than gap seconds joined into one.
+Intervals merged(const Intervals& in, double gap) {
+  Intervals out;
+  for (const auto& iv : in)
+    if (!out.empty() && iv[0] - out.back()[1] < gap) out.back()[1] = iv[1];
+    else out.push_back(iv);
+  return out;
+}
+
+/// The contact intervals as "[start, end] s" pairs, for failure messages.
+std::string interval_list(const Intervals& list) {
+  std::string s;
+  for (const auto& iv : list) s += "[" + std::to_string(iv[0]) + ", " + std::to_string(iv[1]) + "] ";
+  return s.empty() ? "(none)" : s;
 }
 
 class IdaVsPaper : public ::testing::TestWithParam<Case> {};
@@ -112,10 +132,18 @@ TEST_P(IdaVsPaper, AgreeAndConvergeAsPaperDtFalls) {
     // at 90 deg), which only the shrinking sequence below can judge.
     EXPECT_LE(ds, dt + 1e-9);
     EXPECT_LE(de, 2.0 * dt + period);
-    if (cp.intervals.size() == ci.intervals.size()) {
-      EXPECT_LE(dI, 2.0 * dt * cp.peak_R_excluding_closure);
-      EXPECT_LE(du, static_cast<double>(events) * v0 * dt);
-    }
+    // The same semi-discrete model must give the same sequence of impacts: a count mismatch is a
+    // failure (both lists printed), never a reason to skip the bounds below. Both lists are merged
+    // with one gap in seconds, 5 paper steps at dt0 for every rung: at dt0 the paper's event
+    // timing (closure up to 1 dt early, release up to 1.5 dt early) splits a contact that IDA
+    // keeps closed (S4_60: a 4-step separation at 0.0197 s, gone at dt0/2).
+    const double merge_gap = 5.0 * dt * static_cast<double>(every);  // s, 5 x dt0
+    const auto mp = merged(cp.intervals, merge_gap), mi = merged(ci.intervals, merge_gap);
+    EXPECT_EQ(mp.size(), mi.size()) << c.scene << " dt=" << dt << " (merge gap " << merge_gap
+                                    << " s): paper intervals " << interval_list(mp) << ", IDA intervals "
+                                    << interval_list(mi);
+    EXPECT_LE(dI, 2.0 * dt * cp.peak_R_excluding_closure);
+    EXPECT_LE(du, static_cast<double>(events) * v0 * dt);
     if (k == 0) {
       first_dI = dI;
       first_du = du;

@@ -51,10 +51,12 @@ TEST(Intervals, MergeGapInSecondsMakesCountsIndependentOfDt) {
   auto impacts = [](const std::vector<std::string>& sets) {
     return paper::solve(load_scene(paper_scene("s2_transverse"), sets)).contacts[0].intervals.size();
   };
-  EXPECT_EQ(impacts({"time.dt=0.01"}), 2u);
-  EXPECT_EQ(impacts({"time.dt=0.0025"}), 3u);
-  EXPECT_EQ(impacts({"time.dt=0.0025", "paper.merge_gap=0.03"}), 2u);
-  EXPECT_EQ(impacts({"time.dt=0.01", "paper.merge_gap=0.03"}), 2u);
+  // The counts themselves are checked against the exact solution's in
+  // verification/compare/impact_counts_test.cc; here only the merge rule's property.
+  const std::size_t seconds_coarse = impacts({"time.dt=0.01", "paper.merge_gap=0.03"});
+  EXPECT_EQ(impacts({"time.dt=0.0025", "paper.merge_gap=0.03"}), seconds_coarse);
+  EXPECT_EQ(impacts({"time.dt=0.01"}), seconds_coarse);            // 3 steps = 0.03 s at dt = 0.01
+  EXPECT_EQ(impacts({"time.dt=0.0025"}), seconds_coarse + 1);      // 3 steps = 0.0075 s: the bounce counts
 }
 
 // ---- dt near the stability limit ------------------------------------------------------------

@@ -78,12 +78,18 @@ const nlohmann::json* summary_contact(const StoredRun& h, int k) {
   return &s.at("contacts").at(static_cast<std::size_t>(k - 1));
 }
 
-/// Contact intervals from summary.json (the method's own, event-accurate) or else from the rows.
+/// Contact intervals from summary.json (the method's own, event-accurate) or else from the rows;
+/// either way, intervals closer than merge_gap seconds are one (the same rule for both runs, so
+/// that counts do not depend on each method's merge rule in steps).
 std::vector<Interval> intervals_of(const StoredRun& h, const nlohmann::json* sc, const std::vector<double>& R,
                                    double threshold, double merge_gap) {
   if (sc && sc->contains("intervals")) {
     std::vector<Interval> out;
-    for (const auto& iv : sc->at("intervals")) out.push_back({iv.at(0).get<double>(), iv.at(1).get<double>(), 0, 0});
+    for (const auto& iv : sc->at("intervals")) {
+      const double t0 = iv.at(0).get<double>(), t1 = iv.at(1).get<double>();
+      if (!out.empty() && t0 - out.back().end < merge_gap) out.back().end = t1;
+      else out.push_back({t0, t1, 0, 0});
+    }
     return out;
   }
   return contact_intervals(h.t(), R, threshold, merge_gap);
@@ -145,8 +151,8 @@ void add_contact_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, 
   const auto iva = intervals_of(a, sa, Ra, thr, cmp.merge_gap);
   const auto ivb = intervals_of(b, sb, Rb, thr, cmp.merge_gap);
   const std::string rule = fmt::format(
-      "(intervals: summary.json contacts[].intervals with each method's merge rule; without them, rows with "
-      "R > {:.3g} N, samples closer than {:.6g} s merged)", thr, cmp.merge_gap);
+      "(intervals: summary.json contacts[].intervals, else rows with R > {:.3g} N; intervals closer than "
+      "{:.6g} s merged)", thr, cmp.merge_gap);
   cmp.norms.push_back({"impacts" + sfx, std::abs(static_cast<double>(iva.size()) - static_cast<double>(ivb.size())),
                        "count", "|n_a - n_b|, n = number of contact intervals " + rule,
                        static_cast<double>(iva.size()), static_cast<double>(ivb.size()), {}});

@@ -1,0 +1,84 @@
+"""@brief The mutants of the paper's code that the quick verification tier must kill.
+
+Each mutant is a deliberate, small fault in the integrator, the contact solver or the beam model
+(solver/contact, solver/integrator, solver/model): a list of exact text edits (file, old, new);
+`old` must occur exactly once in the file, so a refactor that moves the code makes the mutant
+fail loudly ("not applicable") instead of silently testing nothing. `ci` marks the fast subset
+that CI runs (tools/mutation-test.sh without --all).
+"""
+
+CS = "solver/contact/ContactSolver.cc"
+CP = "solver/contact/ContactPair.cc"
+INTEG = "solver/integrator/ExplicitContactIntegrator.cc"
+
+# The contact loop's first lines, used by the mutants that need the previous step's state.
+_OPEN_LINES = (
+    "    out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};\n"
+    "    active_[c] = gbar_[c] < -tol_ && p.on_surface();\n")
+
+
+def _scaled_force(k):
+    return [(CS, "for (const DofTerm& t : pairs_[c].normal_row()) f(t.eq) += t.coeff * out_[c].R;",
+             f"for (const DofTerm& t : pairs_[c].normal_row()) f(t.eq) += t.coeff * ({k} * out_[c].R);"),
+            (CS, "for (const DofTerm& t : pairs_[c].tangent_row()) f(t.eq) += t.coeff * out_[c].tau;",
+             f"for (const DofTerm& t : pairs_[c].tangent_row()) f(t.eq) += t.coeff * ({k} * out_[c].tau);")]
+
+
+MUTANTS = [
+    dict(name="force_x0.98", ci=True,
+         what="the applied contact force (normal and friction) scaled by 0.98",
+         edits=_scaled_force(0.98)),
+    dict(name="force_x1.02", ci=False,
+         what="the applied contact force (normal and friction) scaled by 1.02",
+         edits=_scaled_force(1.02)),
+    dict(name="contact_late", ci=True,
+         what="a contact closes one step late: only once U^p itself penetrates, not the prediction",
+         edits=[(CS, _OPEN_LINES,
+                 "    const bool was_open = out_[c].state == ContactState::kOpen;\n"
+                 "    out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};\n"
+                 "    active_[c] = gbar_[c] < -tol_ && p.on_surface() &&\n"
+                 "                 (!was_open || p.g0() + ContactPair::eval(p.normal_row(), U) < -tol_);\n")]),
+    dict(name="nts_weights_swapped", ci=False,
+         what="node-to-surface (both weights non-zero): the target nodes' weights xi1, xi2 swapped",
+         edits=[(CP, "    if (xi1_ != 0.0) model_.append_projection(n1, d, -xi1_, out);\n"
+                     "    if (xi2_ != 0.0) model_.append_projection(n1 + 1, d, -xi2_, out);",
+                 "    const bool nts = xi1_ != 0.0 && xi2_ != 0.0;  // node-to-node and end-to-end untouched\n"
+                 "    if (xi1_ != 0.0) model_.append_projection(nts ? n1 + 1 : n1, d, -xi1_, out);\n"
+                 "    if (xi2_ != 0.0) model_.append_projection(nts ? n1 : n1 + 1, d, -xi2_, out);")]),
+    dict(name="friction_sign", ci=False,
+         what="slip friction acts along the sliding instead of against it",
+         edits=[(CS, "const double sigma = Rs > 0.0 ? (Ts >= 0 ? 1.0 : -1.0) : (s > 0 ? -1.0 : 1.0);",
+                 "const double sigma = Rs > 0.0 ? (Ts >= 0 ? -1.0 : 1.0) : (s > 0 ? 1.0 : -1.0);")]),
+    dict(name="no_half_step_velocity", ci=False,
+         what="the dt/2 M^-1 f_c velocity correction of V^p dropped (V^p = Vbar^p during contact)",
+         edits=[(INTEG, "    V_.noalias() += (0.5 * dt_) * work_;\n", "")]),
+    dict(name="stale_response", ci=False,
+         what="the response columns H n, H t are not recomputed after the contact point moves",
+         edits=[(CS, "if (out_[c].state != ContactState::kStick && pairs_[c].relocate(Ubar)) fresh_[c] = 0;",
+                 "if (out_[c].state != ContactState::kStick) pairs_[c].relocate(Ubar);")]),
+    dict(name="hrz_rotary_x2", ci=False,
+         what="HRZ rotary inertia m L^2/78 replaced by m L^2/39",
+         edits=[("solver/model/frame_element.cc", "m * L * L / 78.0", "m * L * L / 39.0")]),
+    dict(name="release_eps", ci=False,
+         what="release on R <= 0 replaced by R < -eps: a closed contact holds while its gap is below "
+              "1e-4 x the largest body length (a tensile multiplier up to that gap / A_nn)",
+         edits=[(CS, _OPEN_LINES,
+                 "    const bool was_open = out_[c].state == ContactState::kOpen;\n"
+                 "    out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};\n"
+                 "    const double hold = was_open ? -tol_ : 1e6 * tol_;\n"
+                 "    active_[c] = gbar_[c] < hold && p.on_surface();\n"),
+                (CS, "      ContactForce f{0.0, 0.0, g, s, ContactState::kOpen};\n      if (g < -tol_) {",
+                 "      ContactForce f{0.0, 0.0, g, s, ContactState::kOpen};\n      if (g < -tol_ || active_[c]) {"),
+                (CS, "            if (R > 0.0) {", "            if (R > -1e6 * tol_ / Ann) {")]),
+    dict(name="damping_sign", ci=False,
+         what="Rayleigh damping force sign flipped (C v added instead of subtracted)",
+         edits=[(INTEG, "  f -= model_.rayleigh_mass() * scratch_;", "  f += model_.rayleigh_mass() * scratch_;"),
+                (INTEG, "  f -= model_.rayleigh_stiffness() * scratch_;", "  f += model_.rayleigh_stiffness() * scratch_;")]),
+    dict(name="critical_dt_x2", ci=False,
+         what="the critical step doubled (2/omega_max -> 4/omega_max): dt = fraction x critical is 2x too large",
+         edits=[("solver/model/critical_dt.cc", "c.dt = c.omega_max > 0 ? 2.0 / c.omega_max",
+                 "c.dt = c.omega_max > 0 ? 4.0 / c.omega_max")]),
+    dict(name="never_stick", ci=True,
+         what="stick is never chosen: every closed frictional contact slips",
+         edits=[(CS, "if (Rs > 0.0 && std::abs(Ts) <= mu_[c] * Rs) {", "if (false && Rs > 0.0 && std::abs(Ts) <= mu_[c] * Rs) {")]),
+]

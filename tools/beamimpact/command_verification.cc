@@ -1,6 +1,8 @@
 #include "command_verification.hpp"
 
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <memory>
@@ -162,9 +164,20 @@ void add_verification_commands(CLI::App& app) {
   c->add_option("DIR_1", ca->a, "Run directory (history.csv, summary.json)")->required();
   c->add_option("DIR_2", ca->b, "Reference run directory")->required();
   c->add_option("--json", ca->json, "Write the norms as JSON here (default DIR_1/compare.json)");
-  c->add_option("--window", ca->options.window, "s, force averaging window (default 10 coarser output steps)");
-  c->add_option("--grid", ca->options.grid_step, "s, common grid step (default the finer output step)");
-  c->add_option("--merge", ca->options.merge_gap, "s, contact samples closer than this are one impact (default 3.5 coarser output steps)");
+  const CLI::Validator positive_time(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (end != text.c_str() && *end == '\0' && v > 0.0 && std::isfinite(v)) return {};
+        return "expected a positive finite time (s), got '" + text.substr(0, 80) + "'";
+      },
+      "TIME>0");
+  c->add_option("--window", ca->options.window, "s, force averaging window (default 10 coarser output steps)")
+      ->check(positive_time);
+  c->add_option("--grid", ca->options.grid_step, "s, common grid step (default the finer output step)")
+      ->check(positive_time);
+  c->add_option("--merge", ca->options.merge_gap, "s, contact samples closer than this are one impact (default 3.5 coarser output steps)")
+      ->check(positive_time);
   c->callback([ca] { compare(*ca); });
 
   auto va = std::make_shared<VerifyArgs>();

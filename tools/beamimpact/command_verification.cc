@@ -19,6 +19,7 @@
 #include <beamimpact/verification/matrix/reports.hpp>
 #include <beamimpact/verification/matrix/execute_jobs.hpp>
 #include <beamimpact/verification/matrix/sweep.hpp>
+#include <beamimpact/verification/matrix/interruption.hpp>
 
 namespace beamimpact {
 namespace {
@@ -69,6 +70,7 @@ void verify(const VerifyArgs& a) {
   const auto start = std::chrono::steady_clock::now();
   const std::string started = utc_now();
   if (a.jobs < 1) throw SceneError(a.matrix, "--jobs", "expected a positive number of parallel runs");
+  forward_interruptions();
   const VerificationMatrix m = VerificationMatrix::load(a.matrix);
   std::vector<JobSpec> specs = m.runs(a.tier);
   std::vector<const Case*> cases;
@@ -104,6 +106,7 @@ void verify(const VerifyArgs& a) {
   ctx.started = started;
   ctx.jobs = a.jobs;
   ctx.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (interruption()) ctx.incomplete = fmt::format("interrupted by signal {}; runs not finished are failed or skipped", interruption());
   write_junit(out / "junit.xml", ctx, items);
   write_json(out / "norms.json", ctx, items);
   write_markdown(out / "report.md", ctx, items);
@@ -122,6 +125,10 @@ void verify(const VerifyArgs& a) {
              failed ? "FAILED" : "passed", gates, gates - failed - skipped, failed, skipped, ctx.wall_seconds,
              (out / "report.md").string());
   fmt::print("junit: {}\nnorms: {}\n", (out / "junit.xml").string(), (out / "norms.json").string());
+  if (interruption()) {
+    fmt::print(stderr, "verify: interrupted (signal {}): the report is marked incomplete\n", interruption());
+    throw CommandExit{interrupted_exit_code()};
+  }
   if (failed) throw CommandExit{1};
 }
 
@@ -129,6 +136,7 @@ void sweep(SweepArgs& a) {
   const auto start = std::chrono::steady_clock::now();
   a.o.scene = a.scene;
   a.o.out = a.out;
+  forward_interruptions();
   const SweepResult r = execute_sweep(a.o, launcher(find_source_root(a.scene)));
   std::string dts, meshes;
   for (double d : a.o.fractions.empty() ? a.o.dts : a.o.fractions) dts += fmt::format("{}{:g}", dts.empty() ? "" : ",", d);
@@ -136,9 +144,9 @@ void sweep(SweepArgs& a) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string header = fmt::format(
       "- command: `beamimpact sweep {} --method {} {} {}{} --reference {} --out {} --jobs {}`\n- version: `{}`\n"
-      "- made {} (UTC), wall time {:.1f} s\n",
+      "- made {} (UTC), wall time {:.1f} s\n{}",
       a.scene, a.o.method, a.o.fractions.empty() ? "--dt" : "--fraction", dts, meshes.empty() ? "" : " --mesh " + meshes, a.o.reference, a.out, a.o.jobs, kVersion,
-      utc_now(), wall);
+      utc_now(), wall, interruption() ? fmt::format("- **INCOMPLETE: interrupted by signal {}**\n", interruption()) : "");
   write_sweep(a.o, r, header);
   for (const auto& p : r.points) {
     const auto& s = p.outcome.spec;
@@ -154,6 +162,10 @@ void sweep(SweepArgs& a) {
     fmt::print("\n");
   }
   fmt::print("errors against {}\nreport: {}\n", r.reference_label, (fs::path(a.out) / "sweep.md").string());
+  if (interruption()) {
+    fmt::print(stderr, "sweep: interrupted (signal {}): the report is marked incomplete\n", interruption());
+    throw CommandExit{interrupted_exit_code()};
+  }
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <beamimpact/api/registry.hpp>
 #include <beamimpact/record/output_files.hpp>
 #include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/scene/run_cost.hpp>
 #include <beamimpact/scene/scene_io.hpp>
 
 namespace beamimpact {
@@ -16,6 +17,8 @@ SimulationResult run(const Scene& scene, std::string_view method_name, const Run
                      "'" + m.name + "' is an external program, not callable in-process; it runs as: " +
                          m.command.front() + " " + m.command.back() + " SCENE --out DIR");
   if (options.out) std::filesystem::remove(*options.out / "summary.json");
+  // Before anything is allocated: refuse a run far beyond the ordinary (the estimate is printed).
+  check_run_cost(scene, scene.time.dt ? *scene.time.dt : estimate_auto_dt(scene));
   SimulationResult r = m.solve(scene);
   if (options.out) write_outputs(scene, r, *options.out);
   return r;

@@ -10,6 +10,7 @@
 #include <beamimpact/exact/recognise_scene.hpp>
 #include <beamimpact/record/ResultRecorder.hpp>
 #include <beamimpact/scene/TableReader.hpp>
+#include <beamimpact/scene/run_cost.hpp>
 
 namespace beamimpact::exact {
 namespace {
@@ -197,6 +198,7 @@ SimulationResult solve(const Scene& scene) {
     r.dt = scene.time.end / 2000.0;
     r.assumed["exact.dt_out"] = fmt::format("{} s (time.end / 2000, as time.dt is auto)", r.dt);
   }
+  check_run_cost(scene, r.dt);  // one row per output time: refuses 1e300 rows (was a hang)
   BeamOptions o;
   if (p.kind == ExactKind::kRodOnBeam) {
     if (in.has("modes")) {

@@ -203,6 +203,7 @@ def load_scene(path, overrides=None):
     end = t.number("end", "the end time (s)", positive=True)
     output_every = t.integer("output_every", "write every n-th step", 1, minimum=1)
     t.boolean("allow_above_critical", False)   # the continuum always picks its own stable step
+    t.boolean("allow_long_run", False)         # the cost guard is the C++ CLI's (solver/scene/run_cost.hpp)
     t.finish()
 
     m = _Table(doc.get("model", {}), file, "model", assumed)

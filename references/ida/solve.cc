@@ -13,6 +13,7 @@
 #include <beamimpact/model/critical_dt.hpp>
 #include <beamimpact/model/deformed_geometry.hpp>
 #include <beamimpact/record/ResultRecorder.hpp>
+#include <beamimpact/scene/run_cost.hpp>
 #include <beamimpact/util/Progress.hpp>
 
 namespace beamimpact::ida {
@@ -205,7 +206,7 @@ double integrate(const Scene& scene, const IdaOptions& opt, double dt, PenaltyId
   rec.add_row(obs.row());
   const double h = opt.output_step.value_or(dt);
   const long every = opt.output_step ? 1 : scene.time.output_every;
-  const long N = static_cast<long>(std::ceil(scene.time.end / h - 1e-9));
+  const long N = step_count(scene, h);
   rec.result().assumed["ida.output_step"] =
       str(h * static_cast<double>(every)) + " s" + (opt.output_step ? "" : " (the scene's dt x output_every)");
   for (long p = 1; p <= N; ++p) {

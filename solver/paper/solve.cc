@@ -10,6 +10,7 @@
 #include <beamimpact/record/ResultRecorder.hpp>
 #include <beamimpact/scene/SceneError.hpp>
 #include <beamimpact/scene/TableReader.hpp>
+#include <beamimpact/scene/run_cost.hpp>
 #include <beamimpact/util/Progress.hpp>
 
 namespace beamimpact::paper {
@@ -121,7 +122,7 @@ SimulationResult solve(const Scene& scene_in) {
   const CriticalStep cs = critical_step(model);
   r.critical_dt = cs.dt;
   r.dt = choose_dt(scene, cs, r);
-  const long N = static_cast<long>(std::ceil(scene.time.end / r.dt - 1e-9));
+  const long N = step_count(scene, r.dt);
   r.steps = N;
   set_merge_rule(options, r.dt, rec);
 

@@ -20,6 +20,7 @@ struct TimeSettings {
   double end = 0.0;               ///< s, end time
   int output_every = 1;           ///< write every n-th step to history.csv
   bool allow_above_critical = false;  ///< accept dt above the stability limit
+  bool allow_long_run = false;  ///< accept a run beyond the ordinary cost (run_cost.hpp)
 };
 
 /// @brief Mass lumping choice for the element mass matrix.

@@ -23,7 +23,19 @@ class SceneError : public std::runtime_error {
 
  private:
   static std::string format(const std::string& file, const std::string& key, const std::string& msg) {
-    return file + (key.empty() ? std::string() : ": key '" + key + "'") + ": " + msg;
+    return file + (key.empty() ? std::string() : ": key '" + clip(key) + "'") + ": " + clip(msg);
+  }
+  /// Cuts every run of more than 80 non-blank characters (an echoed value) to 80, marked "...".
+  static std::string clip(const std::string& text) {
+    constexpr std::size_t kLongest = 80;
+    std::string out;
+    std::size_t run = 0;
+    for (char c : text) {
+      run = (c == ' ' || c == '\n') ? 0 : run + 1;
+      if (run <= kLongest - 3) out += c;
+      else if (run == kLongest - 2) out += "...";
+    }
+    return out;
   }
   std::string file_;
   std::string key_;

@@ -107,6 +107,12 @@ bool segments_overlap(const Body& p, const Body& q) {
 
 // ---- readers -----------------------------------------------------------------------------
 
+std::string fmt_range(const std::string& expected, double got) {
+  std::ostringstream os;
+  os << "expected " << expected << ", got " << got;
+  return os.str();
+}
+
 const toml::table& sub_table(TableReader& r, const std::string& key, bool required,
                              const toml::table& empty) {
   const toml::node* n = r.raw(key);
@@ -118,9 +124,27 @@ const toml::table& sub_table(TableReader& r, const std::string& key, bool requir
   return *n->as_table();
 }
 
+/// Magnitudes a scene may use: far outside any physical beam in SI units, and far enough from
+/// the double range (1e-308 .. 1e308) that products of a few of them (masses, energies, step
+/// counts) stay finite and nonzero. Outside it a run ends in a zero mass or an infinite energy.
+constexpr double kSmallest = 1e-30, kLargest = 1e30;
+
 double positive(TableReader& r, const std::string& key, const std::string& unit) {
   const double v = r.number(key, "a positive number (" + unit + ")");
   if (!(v > 0.0)) r.fail(key, "expected a positive number (" + unit + "), got " + std::to_string(v));
+  if (v < kSmallest || v > kLargest)
+    r.fail(key, fmt_range("a positive number between 1e-30 and 1e30 (" + unit + ")", v));
+  return v;
+}
+
+/// Refuses a value of magnitude above 1e30 (a coordinate, velocity or damping coefficient).
+double bounded(TableReader& r, const std::string& key, double v, const std::string& what) {
+  if (!(std::abs(v) <= kLargest)) r.fail(key, fmt_range(what + " of magnitude at most 1e30", v));
+  return v;
+}
+
+Vec2 bounded(TableReader& r, const std::string& key, const Vec2& v, const std::string& what) {
+  for (double x : v) bounded(r, key, x, what);
   return v;
 }
 
@@ -159,6 +183,7 @@ void read_time(TableReader& r, TimeSettings& t) {
   t.output_every = static_cast<int>(r.integer_or("output_every", 1, "a whole number of steps >= 1"));
   if (t.output_every < 1) r.fail("output_every", "expected a whole number of steps >= 1");
   t.allow_above_critical = r.boolean_or("allow_above_critical", false);
+  t.allow_long_run = r.boolean_or("allow_long_run", false);
   if (t.dt && *t.dt > t.end) r.fail("dt", "expected a step no longer than time.end");
 }
 
@@ -183,6 +208,8 @@ void read_model(TableReader& r, ModelSettings& m) {
   m.rayleigh_stiffness = r.number_or("rayleigh_stiffness", 0.0, "a number >= 0 (s)");
   if (m.rayleigh_mass < 0) r.fail("rayleigh_mass", "expected a number >= 0 (1/s)");
   if (m.rayleigh_stiffness < 0) r.fail("rayleigh_stiffness", "expected a number >= 0 (s)");
+  bounded(r, "rayleigh_mass", m.rayleigh_mass, "a number >= 0 (1/s)");
+  bounded(r, "rayleigh_stiffness", m.rayleigh_stiffness, "a number >= 0 (s)");
 }
 
 void read_supports(TableReader& r, Body& b, std::map<std::string, std::string>* assumed) {
@@ -270,8 +297,8 @@ Body read_body(TableReader& r, Scene& sc) {
   Body b;
   b.name = r.string("name", "a string naming the body");
   if (sc.body_index(b.name) >= 0) r.fail("name", "body name '" + b.name + "' is used twice");
-  b.start = r.vec2("start", "[x, y] of the first node (m)");
-  b.end = r.vec2("end", "[x, y] of the last node (m)");
+  b.start = bounded(r, "start", r.vec2("start", "[x, y] of the first node (m)"), "coordinates (m)");
+  b.end = bounded(r, "end", r.vec2("end", "[x, y] of the last node (m)"), "coordinates (m)");
   if (!(b.length() > 0.0)) r.fail("end", "expected a point different from start: the length must be positive (m)");
   const long ne = r.integer("elements", "a whole number of elements >= 1");
   if (ne < 1 || ne > 10'000'000) r.fail("elements", "expected a whole number of elements >= 1");
@@ -280,7 +307,7 @@ Body read_body(TableReader& r, Scene& sc) {
   b.rho = positive(r, "rho", "kg/m^3");
   b.area = positive(r, "area", "m^2");
   if (r.has("inertia")) b.inertia = positive(r, "inertia", "m^4");
-  if (r.has("velocity")) b.velocity = r.vec2("velocity", "[vx, vy] (m/s)");
+  if (r.has("velocity")) b.velocity = bounded(r, "velocity", r.vec2("velocity", "[vx, vy] (m/s)"), "velocities (m/s)");
   else (*assumed)[r.path("velocity")] = "[0, 0]";
   read_supports(r, b, assumed);
   r.finish();
@@ -314,6 +341,7 @@ Contact read_contact(TableReader& r, const Scene& sc) {
   if (c.target == c.striker) r.fail("target", "expected a body other than the striker");
   c.friction = r.number_or("friction", 0.0, "a Coulomb coefficient >= 0");
   if (c.friction < 0) r.fail("friction", "expected a Coulomb coefficient >= 0");
+  bounded(r, "friction", c.friction, "a Coulomb coefficient >= 0");
   r.finish();
   return c;
 }

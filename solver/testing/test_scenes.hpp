@@ -21,13 +21,28 @@ inline std::filesystem::path source_dir() {
   return BEAMIMPACT_SOURCE_DIR_DEFAULT;
 }
 
+/// @brief The folder of this test process's temporary files, TempDir()/beamimpact_<pid>: made on
+/// first use, removed with everything in it when the process exits (tests leave nothing behind).
+inline const std::filesystem::path& temp_root() {
+  struct Root {
+    std::filesystem::path path =
+        std::filesystem::path(::testing::TempDir()) / ("beamimpact_" + std::to_string(getpid()));
+    Root() { std::filesystem::create_directories(path); }
+    ~Root() {
+      std::error_code ignored;
+      std::filesystem::remove_all(path, ignored);
+    }
+  };
+  static const Root root;
+  return root.path;
+}
+
 /// @brief A temporary path private to this test process and test: ctest runs test cases as
 /// parallel processes, so a fixed name in the temp folder would be shared between them.
 inline std::filesystem::path temp_path(const std::string& name) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   const std::string test = info ? std::string(info->test_suite_name()) + "." + info->name() : "none";
-  return std::filesystem::path(::testing::TempDir()) /
-         ("beamimpact_" + std::to_string(getpid()) + "_" + test + "_" + name);
+  return temp_root() / (test + "_" + name);
 }
 
 /// @brief Path of a paper scene, e.g. paper_scene("s1_central").

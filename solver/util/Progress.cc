@@ -4,6 +4,11 @@
 #include <unistd.h>
 
 namespace beamimpact {
+namespace {
+bool g_enabled = true;  // set once by the CLI before any run starts
+}  // namespace
+
+void Progress::set_enabled(bool enabled) { g_enabled = enabled; }
 
 Progress::Progress(std::string label, double total)
     : label_(std::move(label)), total_(total), start_(std::chrono::steady_clock::now()), last_(start_) {}
@@ -11,7 +16,7 @@ Progress::Progress(std::string label, double total)
 void Progress::report(double value) {
   using namespace std::chrono;
   const auto now = steady_clock::now();
-  if (now - start_ < seconds(1) || now - last_ < milliseconds(500)) return;
+  if (!g_enabled || now - start_ < seconds(1) || now - last_ < milliseconds(500)) return;
   last_ = now;
   const double pct = total_ > 0 ? 100.0 * value / total_ : 0.0;
   // On a terminal, one line rewritten in place; in a log, one line per update.

@@ -19,6 +19,8 @@ class Progress {
   }
   /// @brief Ends the line if anything was printed.
   ~Progress();
+  /// @brief Silences every Progress of this process (the CLI's --quiet); on by default.
+  static void set_enabled(bool enabled);
 
  private:
   void report(double value);

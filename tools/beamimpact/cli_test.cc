@@ -88,6 +88,27 @@ TEST(Cli, BadInputExitsTwoWithOneMessageAndNoResult) {
        "key 'time.dt': expected at most the critical step"},
       {"unknown method", "run " + paper_scene("s1_central") + " --method magic", "key '--method'"},
       {"bad --set", "run " + paper_scene("s1_central") + " --set nonsense", "--set expects key=value"},
+      // Non-physical magnitudes (issue 16): each ended in a zero mass or an infinite energy, exit 3.
+      {"denormal rho", "run " + paper_scene("s1_central") + " --set bodies[0].rho=5e-324",
+       "key 'bodies[0].rho': expected a positive number between 1e-30 and 1e30 (kg/m^3)"},
+      {"huge velocity", "run " + paper_scene("s1_central") + " --set bodies[0].velocity=[1e308,0]",
+       "key 'bodies[0].velocity': expected velocities (m/s) of magnitude at most 1e30"},
+      {"huge damping", "run " + paper_scene("s1_central") + " --set model.rayleigh_mass=1e308",
+       "key 'model.rayleigh_mass'"},
+      // Step counts that overflowed a long (paper, IDA: -9223372036854775808 steps, exit 0) or hung (exact).
+      {"dt 1e-300 paper", "run " + paper_scene("s1_central") + " --set time.dt=1e-300", "key 'time.dt'"},
+      {"dt 1e-300 ida", "run " + paper_scene("s1_central") + " --method ida --set time.dt=1e-300", "key 'time.dt'"},
+      {"dt 1e-300 exact", "run " + paper_scene("s1_central") + " --method exact --set time.dt=1e-300", "key 'time.dt'"},
+      {"1e16 steps paper", "run " + paper_scene("s1_central") + " --allow-long --set time.dt=1e-13 --set time.end=1e3",
+       "key 'time.dt': expected a step that divides time.end = 1000 s into at most 1e+15 steps"},
+      {"1e16 steps ida", "run " + paper_scene("s1_central") + " --method ida --allow-long --set time.dt=1e-13 --set time.end=1e3",
+       "into at most 1e+15 steps"},
+      {"1e16 steps exact", "run " + paper_scene("s1_central") + " --method exact --allow-long --set time.dt=1e-13 --set time.end=1e3",
+       "into at most 1e+15 steps"},
+      // Runs that cannot finish: the estimate is printed, the flag is named (400 steps x 3e7 DOFs).
+      {"1e7 elements", "run " + paper_scene("s1_central") + " --set bodies[0].elements=10000000",
+       "key 'time.allow_long_run': this run is far beyond an ordinary one: 400 steps x 3e+07 DOFs"},
+      {"end 4.3e9 s", "run " + paper_scene("s1_central") + " --set time.end=4.3e9", "4.3e+11 steps x 66 DOFs"},
   };
   for (const Bad& c : cases) {
     const fs::path out = fresh_dir("bad");
@@ -98,6 +119,25 @@ TEST(Cli, BadInputExitsTwoWithOneMessageAndNoResult) {
     EXPECT_FALSE(fs::exists(out / "summary.json")) << c.what;
     EXPECT_FALSE(fs::exists(out / "history.csv")) << c.what;
   }
+}
+
+TEST(Cli, LongValuesAreCutInTheMessage) {
+  // A 5000-character value was echoed whole; the message keeps 80 characters of it.
+  const Result r = run("run " + paper_scene("s1_central") + " --out " + fresh_dir("long").string() +
+                       " --set contacts[0].node=" + std::string(5000, 'x'));
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("key 'contacts[0].node'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("xxxxxxxxxx..."), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find(std::string(78, 'x')), std::string::npos) << r.output;
+}
+
+TEST(Cli, QuietPrintsNothingAndAllowLongRuns) {
+  // 3e6 steps x 66 DOFs = 2e8 DOF-steps is ordinary and passes with --allow-long too; it lasts
+  // over 1 s, so without --quiet a progress line appears (checked: it did before the fix).
+  const Result r = run("run " + paper_scene("s1_central") + " --out " + fresh_dir("quiet").string() +
+                       " --quiet --allow-long --set time.end=30000");
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_EQ(r.output, "");
 }
 
 TEST(Cli, FailedRerunRemovesAStaleSummary) {

@@ -7,6 +7,7 @@
 #include <beamimpact/api/registry.hpp>
 #include <beamimpact/api/run.hpp>
 #include <beamimpact/schema/output_schema.hpp>
+#include <beamimpact/util/Progress.hpp>
 
 namespace beamimpact {
 namespace {
@@ -15,6 +16,7 @@ struct RunArgs {
   std::string scene, out, method = "paper";
   std::vector<std::string> sets;
   bool quiet = false;
+  bool allow_long = false;
 };
 
 void print_result(const SimulationResult& r, const std::string& out) {
@@ -33,7 +35,10 @@ void print_result(const SimulationResult& r, const std::string& out) {
 }
 
 void simulate(const RunArgs& a) {
-  const SimulationResult r = beamimpact::run(a.scene, a.method, RunOptions{a.sets, a.out});
+  Progress::set_enabled(!a.quiet);
+  std::vector<std::string> sets = a.sets;
+  if (a.allow_long) sets.push_back("time.allow_long_run=true");
+  const SimulationResult r = beamimpact::run(a.scene, a.method, RunOptions{sets, a.out});
   if (!a.quiet) print_result(r, a.out);
 }
 
@@ -55,7 +60,9 @@ void add_command_run(CLI::App& app) {
   sub->add_option("--method", args->method, "A method of the registry (`beamimpact methods`): " + method_names())
       ->capture_default_str();
   sub->add_option("--set", args->sets, "Override a scene key, e.g. --set time.dt=0.005 (repeatable)");
-  sub->add_flag("--quiet", args->quiet, "Print nothing on success");
+  sub->add_flag("--quiet", args->quiet, "Print nothing on success (no progress either)");
+  sub->add_flag("--allow-long", args->allow_long,
+                "Run even when the cost estimate is far beyond the ordinary (as time.allow_long_run = true)");
   sub->callback([args] { simulate(*args); });
 }
 

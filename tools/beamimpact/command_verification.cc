@@ -1,6 +1,8 @@
 #include "command_verification.hpp"
 
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <memory>
@@ -17,6 +19,7 @@
 #include <beamimpact/verification/matrix/reports.hpp>
 #include <beamimpact/verification/matrix/execute_jobs.hpp>
 #include <beamimpact/verification/matrix/sweep.hpp>
+#include <beamimpact/verification/matrix/interruption.hpp>
 
 namespace beamimpact {
 namespace {
@@ -67,6 +70,7 @@ void verify(const VerifyArgs& a) {
   const auto start = std::chrono::steady_clock::now();
   const std::string started = utc_now();
   if (a.jobs < 1) throw SceneError(a.matrix, "--jobs", "expected a positive number of parallel runs");
+  forward_interruptions();
   const VerificationMatrix m = VerificationMatrix::load(a.matrix);
   std::vector<JobSpec> specs = m.runs(a.tier);
   std::vector<const Case*> cases;
@@ -107,6 +111,7 @@ void verify(const VerifyArgs& a) {
   ctx.started = started;
   ctx.jobs = a.jobs;
   ctx.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (interruption()) ctx.incomplete = fmt::format("interrupted by signal {}; runs not finished are failed or skipped", interruption());
   write_junit(out / "junit.xml", ctx, items);
   write_json(out / "norms.json", ctx, items);
   write_markdown(out / "report.md", ctx, items);
@@ -125,6 +130,10 @@ void verify(const VerifyArgs& a) {
              failed ? "FAILED" : "passed", gates, gates - failed - skipped, failed, skipped, ctx.wall_seconds,
              (out / "report.md").string());
   fmt::print("junit: {}\nnorms: {}\n", (out / "junit.xml").string(), (out / "norms.json").string());
+  if (interruption()) {
+    fmt::print(stderr, "verify: interrupted (signal {}): the report is marked incomplete\n", interruption());
+    throw CommandExit{interrupted_exit_code()};
+  }
   if (failed) throw CommandExit{1};
 }
 
@@ -132,6 +141,7 @@ void sweep(SweepArgs& a) {
   const auto start = std::chrono::steady_clock::now();
   a.o.scene = a.scene;
   a.o.out = a.out;
+  forward_interruptions();
   const SweepResult r = execute_sweep(a.o, launcher(find_source_root(a.scene)));
   std::string dts, meshes;
   for (double d : a.o.fractions.empty() ? a.o.dts : a.o.fractions) dts += fmt::format("{}{:g}", dts.empty() ? "" : ",", d);
@@ -139,9 +149,9 @@ void sweep(SweepArgs& a) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string header = fmt::format(
       "- command: `beamimpact sweep {} --method {} {} {}{} --reference {} --out {} --jobs {}`\n- version: `{}`\n"
-      "- made {} (UTC), wall time {:.1f} s\n",
+      "- made {} (UTC), wall time {:.1f} s\n{}",
       a.scene, a.o.method, a.o.fractions.empty() ? "--dt" : "--fraction", dts, meshes.empty() ? "" : " --mesh " + meshes, a.o.reference, a.out, a.o.jobs, kVersion,
-      utc_now(), wall);
+      utc_now(), wall, interruption() ? fmt::format("- **INCOMPLETE: interrupted by signal {}**\n", interruption()) : "");
   write_sweep(a.o, r, header);
   for (const auto& p : r.points) {
     const auto& s = p.outcome.spec;
@@ -157,6 +167,10 @@ void sweep(SweepArgs& a) {
     fmt::print("\n");
   }
   fmt::print("errors against {}\nreport: {}\n", r.reference_label, (fs::path(a.out) / "sweep.md").string());
+  if (interruption()) {
+    fmt::print(stderr, "sweep: interrupted (signal {}): the report is marked incomplete\n", interruption());
+    throw CommandExit{interrupted_exit_code()};
+  }
 }
 
 }  // namespace
@@ -167,9 +181,20 @@ void add_verification_commands(CLI::App& app) {
   c->add_option("DIR_1", ca->a, "Run directory (history.csv, summary.json)")->required();
   c->add_option("DIR_2", ca->b, "Reference run directory")->required();
   c->add_option("--json", ca->json, "Write the norms as JSON here (default DIR_1/compare.json)");
-  c->add_option("--window", ca->options.window, "s, force averaging window (default 10 coarser output steps)");
-  c->add_option("--grid", ca->options.grid_step, "s, common grid step (default the finer output step)");
-  c->add_option("--merge", ca->options.merge_gap, "s, contact samples closer than this are one impact (default 3.5 coarser output steps)");
+  const CLI::Validator positive_time(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (end != text.c_str() && *end == '\0' && v > 0.0 && std::isfinite(v)) return {};
+        return "expected a positive finite time (s), got '" + text.substr(0, 80) + "'";
+      },
+      "TIME>0");
+  c->add_option("--window", ca->options.window, "s, force averaging window (default 10 coarser output steps)")
+      ->check(positive_time);
+  c->add_option("--grid", ca->options.grid_step, "s, common grid step (default the finer output step)")
+      ->check(positive_time);
+  c->add_option("--merge", ca->options.merge_gap, "s, contact samples closer than this are one impact (default 3.5 coarser output steps)")
+      ->check(positive_time);
   c->callback([ca] { compare(*ca); });
 
   auto va = std::make_shared<VerifyArgs>();

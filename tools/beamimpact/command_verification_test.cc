@@ -161,5 +161,42 @@ TEST_F(Commands, SweepTabulatesEachStep) {
   EXPECT_EQ(run(fmt::format("sweep {} --dt -0.01 --out '{}'", s1, (tmp_ / "sw2").string())).code, 2);
 }
 
+// Bad options of compare and sweep (issue 16): exit 2 naming the option, nothing run. Before, --grid 0
+// or nan fell back to the default, --grid 1e-9 died of std::bad_alloc, --mesh 0 and an unknown
+// reference exited 3 after starting runs.
+TEST_F(Commands, BadCompareAndSweepOptionsExitTwo) {
+  const std::string s1 = "verification/scenes/paper/s1_central.toml", s2 = "verification/scenes/paper/s2_transverse.toml";
+  const std::string a = (tmp_ / "a").string(), b = (tmp_ / "b").string();
+  ASSERT_EQ(run(fmt::format("run {} --out '{}' --quiet", s1, a)).code, 0);
+  ASSERT_EQ(run(fmt::format("run {} --out '{}' --quiet", s2, b)).code, 0);
+  struct Bad { std::string args, says; };
+  const std::vector<Bad> cases = {
+      {"--grid 0", "--grid: expected a positive finite time (s), got '0'"},
+      {"--grid nan", "--grid: expected a positive finite time (s), got 'nan'"},
+      {"--grid inf", "--grid: expected a positive finite time (s)"},
+      {"--window -1", "--window: expected a positive finite time (s)"},
+      {"--merge inf", "--merge: expected a positive finite time (s)"},
+      {"--grid 1e-9", "key '--grid': expected a step giving at most 1e+08 grid points"},
+  };
+  for (const auto& c : cases) {
+    const Result r = run(fmt::format("compare '{}' '{}' {}", a, a, c.args));
+    EXPECT_EQ(r.code, 2) << c.args << ": " << r.out;
+    EXPECT_NE(r.out.find(c.says), std::string::npos) << c.args << ": " << r.out;
+  }
+  // Runs of different scene files compare, with a warning.
+  const Result diff = run(fmt::format("compare '{}' '{}' --json '{}'", a, b, (tmp_ / "c.json").string()));
+  EXPECT_NE(diff.out.find("warning: the runs are of different scene files (scene_sha256 differs"), std::string::npos)
+      << diff.out;
+  EXPECT_EQ(run(fmt::format("compare '{}' '{}' --json '{}'", a, a, (tmp_ / "c.json").string())).out.find("warning"),
+            std::string::npos);
+  const Result mesh = run(fmt::format("sweep {} --dt 0.01 --mesh 0 --out '{}'", s1, (tmp_ / "sw").string()));
+  EXPECT_EQ(mesh.code, 2) << mesh.out;
+  EXPECT_NE(mesh.out.find("key 'mesh': expected an element multiplier 1..64"), std::string::npos) << mesh.out;
+  EXPECT_FALSE(fs::exists(tmp_ / "sw" / "runs")) << "nothing runs before the input is checked";
+  const Result ref = run(fmt::format("sweep {} --dt 0.01 --reference bogus --out '{}'", s1, (tmp_ / "sw").string()));
+  EXPECT_EQ(ref.code, 2) << ref.out;
+  EXPECT_NE(ref.out.find("expected a method name (paper, exact, ida, fenicsx), got 'bogus'"), std::string::npos) << ref.out;
+}
+
 }  // namespace
 }  // namespace beamimpact

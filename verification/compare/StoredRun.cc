@@ -37,6 +37,47 @@ void check_times(const std::vector<double>& t, const std::string& file) {
   }
 }
 
+/// Refuses a null anywhere (no writer produces one; it would read as 0 or throw later).
+void check_no_null(const nlohmann::json& j, const std::string& file, const std::string& where) {
+  if (j.is_null()) throw SceneError(file, where.empty() ? "/" : where, "expected a value, found null");
+  if (j.is_object())
+    for (const auto& [k, v] : j.items()) check_no_null(v, file, where + "/" + k);
+  if (j.is_array())
+    for (std::size_t i = 0; i < j.size(); ++i) check_no_null(j[i], file, where + "/" + std::to_string(i));
+}
+
+/// The keys the comparison reads, checked for their types once here (so that a wrong type is
+/// bad input naming the key, not a JSON library error later).
+void check_summary(const nlohmann::json& s, const std::string& file) {
+  if (!s.is_object()) throw SceneError(file, "", "expected a JSON object");
+  check_no_null(s, file, "");
+  auto fail = [&](const std::string& key, const std::string& what) { throw SceneError(file, key, "expected " + what); };
+  auto pair_of_numbers = [](const nlohmann::json& v) {
+    return v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number();
+  };
+  if (s.contains("scene_sha256") && !s["scene_sha256"].is_string()) fail("scene_sha256", "a string");
+  if (s.contains("contacts")) {
+    if (!s["contacts"].is_array()) fail("contacts", "an array of contact objects");
+    for (std::size_t k = 0; k < s["contacts"].size(); ++k) {
+      const auto& c = s["contacts"][k];
+      const std::string key = "contacts/" + std::to_string(k);
+      if (!c.is_object()) fail(key, "a contact object");
+      if (c.contains("impulse_normal") && !c["impulse_normal"].is_number()) fail(key + "/impulse_normal", "a number (N s)");
+      if (c.contains("intervals")) {
+        if (!c["intervals"].is_array()) fail(key + "/intervals", "an array of [start, end] times (s)");
+        for (const auto& iv : c["intervals"])
+          if (!pair_of_numbers(iv)) fail(key + "/intervals", "an array of [start, end] times (s)");
+      }
+    }
+  }
+  if (s.contains("bodies")) {
+    if (!s["bodies"].is_object()) fail("bodies", "an object of bodies by name");
+    for (const auto& [name, b] : s["bodies"].items())
+      if (!b.is_object() || (b.contains("final_velocity") && !pair_of_numbers(b["final_velocity"])))
+        fail("bodies/" + name + "/final_velocity", "[vx, vy] (m/s)");
+  }
+}
+
 }  // namespace
 
 StoredRun StoredRun::read(const std::filesystem::path& dir) {
@@ -53,6 +94,7 @@ StoredRun StoredRun::read(const std::filesystem::path& dir) {
   } catch (const nlohmann::json::exception& e) {
     throw SceneError(sum, "", std::string("expected valid JSON: ") + e.what());
   }
+  check_summary(h.summary_, sum);
 
   std::ifstream in(csv);
   if (!in) throw SceneError(csv, "", "expected history.csv (not found or unreadable)");

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/testing/test_scenes.hpp>
 
 namespace beamimpact::verification {
 namespace {
@@ -14,7 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path make_run(const std::string& name, const std::string& csv, bool summary = true) {
-  const fs::path dir = fs::temp_directory_path() / ("beamimpact_rh_" + name + "_" + std::to_string(::getpid()));
+  const fs::path dir = beamimpact::testing::temp_path("rh_" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "history.csv") << csv;
@@ -58,6 +59,27 @@ TEST(StoredRun, BadInputNamesFileAndColumn) {
     EXPECT_NE(msg.find(c.expect), std::string::npos) << c.name << ": " << msg;
     EXPECT_NE(msg.find(dir.string()), std::string::npos) << c.name << ": " << msg;
     fs::remove_all(dir);
+  }
+}
+
+TEST(StoredRun, BadSummaryNamesTheKey) {
+  // Each was read (null as 0) or ended in a raw JSON library error (type_error.304, exit 3).
+  struct Case { std::string name, summary, expect; };
+  const std::vector<Case> cases = {
+      {"null", R"({"method": "paper", "energy_final": null})", "key '/energy_final': expected a value, found null"},
+      {"intervals", R"({"contacts": [{"intervals": "x"}]})", "key 'contacts/0/intervals': expected an array of [start, end]"},
+      {"interval3", R"({"contacts": [{"intervals": [[0, 1, 2]]}]})", "key 'contacts/0/intervals'"},
+      {"impulse", R"({"contacts": [{"impulse_normal": "4"}]})", "key 'contacts/0/impulse_normal': expected a number"},
+      {"bodies", R"({"bodies": []})", "key 'bodies': expected an object"},
+      {"velocity", R"({"bodies": {"A": {"final_velocity": [1, 2, 3]}}})", "key 'bodies/A/final_velocity'"},
+      {"array", "[1]", "expected a JSON object"},
+  };
+  for (const auto& c : cases) {
+    const auto dir = make_run(c.name, "t,R\n0,0\n0.01,1\n");
+    std::ofstream(dir / "summary.json") << c.summary;
+    const std::string msg = error_of(dir);
+    EXPECT_NE(msg.find(c.expect), std::string::npos) << c.name << ": " << msg;
+    EXPECT_NE(msg.find((dir / "summary.json").string()), std::string::npos) << c.name << ": " << msg;
   }
 }
 

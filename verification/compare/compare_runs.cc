@@ -269,14 +269,27 @@ Comparison compare_runs(const StoredRun& a, const StoredRun& b, const CompareOpt
   for (const StoredRun* h : {&a, &b})
     if (!(h->output_step() > 0.0)) throw SceneError(h->label(), "t", "expected at least two rows in history.csv");
   const double fine = std::min(ha, hb), coarse = std::max(ha, hb);
-  cmp.grid_step = options.grid_step > 0.0 ? options.grid_step : fine;
-  cmp.window = options.window > 0.0 ? options.window : 10.0 * coarse;
-  cmp.merge_gap = options.merge_gap > 0.0 ? options.merge_gap : 3.5 * coarse;
+  cmp.grid_step = options.grid_step != 0.0 ? options.grid_step : fine;
+  cmp.window = options.window != 0.0 ? options.window : 10.0 * coarse;
+  cmp.merge_gap = options.merge_gap != 0.0 ? options.merge_gap : 3.5 * coarse;
   const double span_b = b.t().back() - b.t().front();
   if (cmp.t1 - cmp.t0 < 0.99 * span_b) {
     cmp.notes.push_back(fmt::format("the runs overlap on [{:.6g}, {:.6g}] s only, the reference spans [{:.6g}, {:.6g}] s",
                                     cmp.t0, cmp.t1, b.t().front(), b.t().back()));
   }
+  // Bad options are bad input (CLI: compare --grid/--window/--merge), not a silent default.
+  for (const auto& [key, v] : {std::pair{"--grid", options.grid_step}, std::pair{"--window", options.window},
+                               std::pair{"--merge", options.merge_gap}})
+    if (v != 0.0 && !(v > 0.0 && std::isfinite(v)))
+      throw SceneError(a.label(), key, fmt::format("expected a positive finite time (s), got {}", v));
+  constexpr double kMostGridPoints = 1e8;  // 0.8 GB per resampled series: beyond any output
+  if ((cmp.t1 - cmp.t0) / cmp.grid_step > kMostGridPoints)
+    throw SceneError(a.label(), "--grid", fmt::format("expected a step giving at most {:g} grid points on [{:g}, {:g}] s, "
+                                                      "got {:g} s", kMostGridPoints, cmp.t0, cmp.t1, cmp.grid_step));
+  const auto sha = [](const StoredRun& h) { return h.summary().value("scene_sha256", std::string()); };
+  if (!sha(a).empty() && !sha(b).empty() && sha(a) != sha(b))
+    cmp.notes.push_back("warning: the runs are of different scene files (scene_sha256 differs: " + sha(a).substr(0, 12) +
+                        " vs " + sha(b).substr(0, 12) + ")");
   const Grid g{uniform_grid(cmp.t0, cmp.t1, cmp.grid_step)};
 
   const int na = a.contacts(), nb = b.contacts();

@@ -1,4 +1,5 @@
 #include <beamimpact/verification/matrix/child_process.hpp>
+#include <beamimpact/verification/matrix/interruption.hpp>
 
 #include <fcntl.h>
 #include <signal.h>
@@ -48,6 +49,16 @@ ProcessResult spawn_and_wait(const std::vector<std::string>& argv, const std::fi
       return r;
     }
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (interruption() != 0) {  // forward: SIGTERM to the run's group, SIGKILL if still there after 2 s
+      kill(-pid, SIGTERM);
+      for (int i = 0; i < 100 && waitpid(pid, &status, WNOHANG) == 0; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      kill(-pid, SIGKILL);  // the group's other members (mpirun's, python's children) too
+      if (waitpid(pid, &status, WNOHANG) == 0) waitpid(pid, &status, 0);
+      r.timed_out = true;
+      r.error = "interrupted (signal " + std::to_string(interruption()) + ")";
+      break;
+    }
     if (elapsed > timeout_seconds) {
       kill(-pid, SIGKILL);  // the whole group of this one run, by its id
       waitpid(pid, &status, 0);

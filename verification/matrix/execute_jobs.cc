@@ -11,6 +11,7 @@
 
 #include <beamimpact/api/registry.hpp>
 #include <beamimpact/verification/matrix/child_process.hpp>
+#include <beamimpact/verification/matrix/interruption.hpp>
 
 namespace beamimpact::verification {
 namespace {
@@ -96,7 +97,8 @@ std::map<std::string, JobOutcome> execute_jobs(const std::vector<JobSpec>& specs
   std::size_t done = 0;
   auto worker = [&] {
     for (std::size_t i = next++; i < order.size(); i = next++) {
-      JobOutcome o = run_one(order[i], out_dir / order[i].key(), launcher, why[i], timeout_seconds);
+      const std::string skip = interruption() ? "not started: interrupted" : why[i];
+      JobOutcome o = run_one(order[i], out_dir / order[i].key(), launcher, skip, timeout_seconds);
       std::lock_guard lock(mu);
       ++done;
       fmt::print(stderr, "[{}/{}] {}: {}{} ({:.2f} s)\n", done, order.size(), o.spec.label(), status_name(o.status),

@@ -64,8 +64,8 @@ Totals totals(const std::vector<ItemResult>& items) {
 void write_junit(const std::filesystem::path& file, const ReportContext& ctx, const std::vector<ItemResult>& items) {
   const Totals all = totals(items);
   std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  x += fmt::format("<testsuites name=\"beamimpact verify {}\" tests=\"{}\" failures=\"{}\" skipped=\"{}\" time=\"{:.3f}\">\n",
-                   xml_escape(ctx.tier), all.gates, all.fail, all.skipped, ctx.wall_seconds);
+  x += fmt::format("<testsuites name=\"beamimpact verify {}{}\" tests=\"{}\" failures=\"{}\" skipped=\"{}\" time=\"{:.3f}\">\n",
+                   xml_escape(ctx.tier), ctx.incomplete.empty() ? "" : " (INCOMPLETE: " + xml_escape(ctx.incomplete) + ")", all.gates, all.fail, all.skipped, ctx.wall_seconds);
   for (const auto& [scene, list] : by_scene(items)) {
     int n = 0, f = 0, s = 0;
     double time = 0.0;
@@ -106,7 +106,9 @@ void write_json(const std::filesystem::path& file, const ReportContext& ctx, con
   const Totals t = totals(items);
   nlohmann::json j{{"command", ctx.command}, {"matrix", ctx.matrix}, {"tier", ctx.tier}, {"version", ctx.version},
                    {"started_utc", ctx.started}, {"wall_seconds", ctx.wall_seconds}, {"jobs", ctx.jobs},
-                   {"gates", t.gates}, {"passed", t.pass}, {"failed", t.fail}, {"skipped", t.skipped}};
+                   {"gates", t.gates}, {"passed", t.pass}, {"failed", t.fail}, {"skipped", t.skipped},
+                   {"complete", ctx.incomplete.empty()}};
+  if (!ctx.incomplete.empty()) j["incomplete"] = ctx.incomplete;
   auto& arr = j["items"] = nlohmann::json::array();
   for (const auto& i : items) arr.push_back(to_json(i));
   write_file_atomic(file, j.dump(1) + "\n");
@@ -115,6 +117,7 @@ void write_json(const std::filesystem::path& file, const ReportContext& ctx, con
 void write_markdown(const std::filesystem::path& file, const ReportContext& ctx, const std::vector<ItemResult>& items) {
   const Totals t = totals(items);
   std::string m = "# beamimpact verification report\n\n";
+  if (!ctx.incomplete.empty()) m += "**INCOMPLETE: " + ctx.incomplete + "**\n\n";
   m += fmt::format("- command: `{}`\n- matrix: `{}`, tier **{}**, {} parallel job(s)\n- version: `{}`\n"
                    "- started {} (UTC), wall time {:.1f} s\n",
                    ctx.command, ctx.matrix, ctx.tier, ctx.jobs, ctx.version, ctx.started, ctx.wall_seconds);

@@ -21,6 +21,7 @@ struct ReportContext {
   std::string started;        ///< UTC time stamp
   double wall_seconds = 0.0;  ///< s, whole verify
   int jobs = 1;
+  std::string incomplete;     ///< why the report is incomplete (e.g. "interrupted by signal 2"), "" if complete
 };
 
 /// @brief JUnit XML: one testsuite per scene, one testcase per gate, named

@@ -71,6 +71,8 @@ SweepResult execute_sweep(const SweepOptions& o, const Launcher& launcher) {
   }
   std::vector<JobSpec> all = specs;
   if (ref) all.push_back(*ref);
+  // Bad input (a mesh multiplier of 0, an unknown reference method) is refused before any run.
+  for (const JobSpec& s : all) (void)launcher.argv(s, o.out);
   const auto outcomes = execute_jobs(all, o.out / "runs", launcher, o.jobs, o.timeout);
   if (ref) {
     const JobOutcome& ro = outcomes.at(ref->key());

@@ -1,0 +1,68 @@
+#include <beamimpact/scene/run_cost.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include <beamimpact/scene/SceneError.hpp>
+
+namespace beamimpact {
+namespace {
+
+/// Bytes per degree of freedom of the assembled model: sparse K, M, C and their factorisations,
+/// the integrator's state vectors and element frames (a few hundred doubles and indices per
+/// node). An estimate for the order of magnitude, not an allocation limit.
+constexpr double kBytesPerDof = 2000.0;
+/// Bytes per recorded history row and contact (about 20 doubles: gap, R, tau, u, v of both
+/// points, energies, momentum).
+constexpr double kBytesPerRowAndContact = 200.0;
+
+}  // namespace
+
+std::string RunCost::to_string() const {
+  return fmt::format("{:.3g} steps x {:.3g} DOFs = {:.3g} DOF-steps, about {:.3g} GB of memory", steps, dofs, work,
+                     bytes / 1e9);
+}
+
+RunCost estimate_run_cost(const Scene& scene, double dt) {
+  RunCost c;
+  for (const Body& b : scene.bodies) c.dofs += 3.0 * (static_cast<double>(b.elements) + 1.0);
+  c.steps = dt > 0.0 && std::isfinite(dt) ? std::ceil(scene.time.end / dt - 1e-9)
+                                          : std::numeric_limits<double>::infinity();
+  c.work = c.steps * c.dofs;
+  const double rows = c.steps / std::max(1, scene.time.output_every);
+  c.bytes = c.dofs * kBytesPerDof +
+            rows * kBytesPerRowAndContact * static_cast<double>(std::max<std::size_t>(1, scene.contacts.size()));
+  return c;
+}
+
+double estimate_auto_dt(const Scene& scene) {
+  double dt = std::numeric_limits<double>::infinity();
+  for (const Body& b : scene.bodies)
+    dt = std::min(dt, b.length() / b.elements * std::sqrt(b.rho / b.E));
+  return scene.time.fraction * dt;
+}
+
+void check_run_cost(const Scene& scene, double dt) {
+  const RunCost c = estimate_run_cost(scene, dt);
+  if (!(c.steps <= kMostSteps))
+    throw SceneError(scene.file, "time.dt",
+                     fmt::format("expected a step that divides time.end = {:g} s into at most {:g} steps, "
+                                 "got dt = {:g} s ({:.3g} steps)",
+                                 scene.time.end, kMostSteps, dt, c.steps));
+  if ((c.work > kOrdinaryWork || c.bytes > kOrdinaryBytes) && !scene.time.allow_long_run)
+    throw SceneError(scene.file, "time.allow_long_run",
+                     fmt::format("this run is far beyond an ordinary one: {} (ordinary: at most {:g} DOF-steps "
+                                 "and {:g} GB); set time.allow_long_run = true (or --allow-long) to run it",
+                                 c.to_string(), kOrdinaryWork, kOrdinaryBytes / 1e9));
+}
+
+long step_count(const Scene& scene, double dt) {
+  const RunCost c = estimate_run_cost(scene, dt);
+  if (!(c.steps <= kMostSteps)) check_run_cost(scene, dt);  // throws with the message
+  return static_cast<long>(c.steps);
+}
+
+}  // namespace beamimpact

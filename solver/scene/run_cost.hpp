@@ -1,0 +1,50 @@
+#pragma once
+/// @file run_cost.hpp
+/// @brief What a run will cost, estimated from the scene before anything is allocated: steps,
+/// degrees of freedom, work (DOF-steps) and memory. A run far beyond the ordinary is refused
+/// (bad input, exit 2) unless the scene asks for it with time.allow_long_run = true; a step
+/// count that does not fit a 64-bit counter or the double time axis is always refused.
+
+#include <string>
+
+#include <beamimpact/scene/Scene.hpp>
+
+namespace beamimpact {
+
+/// @brief The estimate for one scene and step.
+struct RunCost {
+  double steps = 0.0;   ///< ceil(end / dt)
+  double dofs = 0.0;    ///< 3 per node (u_x, u_y, theta), all bodies
+  double work = 0.0;    ///< steps x dofs (DOF-steps)
+  double bytes = 0.0;   ///< model + recorded history, estimated
+  /// @brief "4e+05 steps x 66 DOFs = 2.6e+07 DOF-steps, about 0.01 GB".
+  std::string to_string() const;
+};
+
+/// @brief Limits of an ordinary run: about an hour of one core at 3e7 DOF-steps/s, and memory a
+/// CI machine or a laptop has. Above either, time.allow_long_run = true is needed.
+inline constexpr double kOrdinaryWork = 1e11;       ///< DOF-steps
+inline constexpr double kOrdinaryBytes = 4e9;       ///< bytes
+/// @brief Above this many steps a run is refused outright: t + dt == t in double precision near
+/// t = end once end / dt exceeds 2^52 (4.5e15), and the step counter must not overflow.
+inline constexpr double kMostSteps = 1e15;
+
+/// @brief The estimate for `scene` run with step `dt` (s). dt <= 0 or not finite gives infinite
+/// steps.
+RunCost estimate_run_cost(const Scene& scene, double dt);
+
+/// @brief An upper estimate of the critical step (s) before the model is built: the smallest
+/// axial element transit time le sqrt(rho / E) (bending and contact only lower it), times
+/// time.fraction. Used for dt = "auto".
+double estimate_auto_dt(const Scene& scene);
+
+/// @brief Throws SceneError (key time.dt or time.allow_long_run) when `scene` at step `dt` (s)
+/// has more than kMostSteps steps, or exceeds kOrdinaryWork / kOrdinaryBytes without
+/// time.allow_long_run. The message states the estimate.
+void check_run_cost(const Scene& scene, double dt);
+
+/// @brief The number of steps ceil(end / dt - 1e-9) as a long, after the check against
+/// kMostSteps (SceneError on key time.dt otherwise).
+long step_count(const Scene& scene, double dt);
+
+}  // namespace beamimpact

@@ -1,0 +1,57 @@
+// The run-cost estimate and its guard: counts from the scene (no model built).
+#include <beamimpact/scene/run_cost.hpp>
+
+#include <gtest/gtest.h>
+
+#include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/testing/test_scenes.hpp>
+
+namespace beamimpact {
+namespace {
+
+using testing::load_paper_scene;
+
+TEST(RunCost, CountsStepsAndDofsOfS1) {
+  // S1: end 4 s, dt 0.01 s -> 400 steps; two bodies of 10 elements -> 2 x 11 nodes x 3 DOFs = 66.
+  const RunCost c = estimate_run_cost(load_paper_scene("s1_central"), 0.01);
+  EXPECT_EQ(c.steps, 400.0);
+  EXPECT_EQ(c.dofs, 66.0);
+  EXPECT_EQ(c.work, 400.0 * 66.0);
+  EXPECT_EQ(step_count(load_paper_scene("s1_central"), 0.01), 400);
+}
+
+TEST(RunCost, AutoStepIsTheAxialTransitTime) {
+  // S1: le = 1 m, c = sqrt(E / rho) = 10 m/s -> le / c = 0.1 s (the critical step the solver
+  // finds for S1, 0.1 s); dt = "auto" takes fraction 0.5 of it.
+  const Scene s = load_paper_scene("s1_central", {"time.dt=\"auto\""});
+  EXPECT_NEAR(estimate_auto_dt(s), 0.05, 1e-15);
+}
+
+TEST(RunCost, RefusesBeyondOrdinaryUnlessAllowed) {
+  // 1e9 steps x 66 DOFs = 6.6e10 DOF-steps is ordinary work but 1e9 rows x 200 B = 200 GB of
+  // history is not; end 4e9 s: 4e11 x 66 = 2.6e13 DOF-steps.
+  const Scene big = load_paper_scene("s1_central", {"time.end=1e7"});
+  EXPECT_THROW(check_run_cost(big, 0.01), SceneError);
+  EXPECT_NO_THROW(check_run_cost(load_paper_scene("s1_central", {"time.end=1e7", "time.allow_long_run=true"}), 0.01));
+  EXPECT_NO_THROW(check_run_cost(load_paper_scene("s1_central"), 0.01));
+  try {
+    check_run_cost(load_paper_scene("s1_central", {"time.end=4e9"}), 0.01);
+    FAIL() << "expected a refusal";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.key(), "time.allow_long_run");
+    EXPECT_NE(std::string(e.what()).find("4e+11 steps x 66 DOFs = 2.64e+13 DOF-steps"), std::string::npos) << e.what();
+  }
+}
+
+TEST(RunCost, StepCountBeyondTheTimeAxisIsAlwaysRefused) {
+  // 1e3 s / 1e-13 s = 1e16 steps > 1e15: refused even with allow_long_run (it overflowed a long
+  // at dt = 1e-300 and could not advance t in double precision).
+  const Scene s = load_paper_scene("s1_central", {"time.end=1e3", "time.allow_long_run=true"});
+  EXPECT_THROW(step_count(s, 1e-13), SceneError);
+  EXPECT_THROW(check_run_cost(s, 1e-13), SceneError);
+  EXPECT_THROW(check_run_cost(s, 0.0), SceneError);
+  EXPECT_EQ(step_count(s, 1e-12), 1'000'000'000'000'000);
+}
+
+}  // namespace
+}  // namespace beamimpact

@@ -1,0 +1,74 @@
+// Determinism: the same scene gives byte-identical history.csv and summary.json (apart from the
+// wall time, its own line "wall_seconds") across reruns and across verify --jobs values.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <beamimpact/testing/test_scenes.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// summary.json without its "wall_seconds" line (the one field that may differ).
+std::string without_wall_time(const std::string& json) {
+  std::istringstream in(json);
+  std::string out;
+  for (std::string line; std::getline(in, line);)
+    if (line.find("\"wall_seconds\"") == std::string::npos) out += line + "\n";
+  return out;
+}
+
+void expect_same_run(const fs::path& a, const fs::path& b) {
+  ASSERT_TRUE(fs::exists(a / "summary.json")) << a;
+  ASSERT_TRUE(fs::exists(b / "summary.json")) << b;
+  EXPECT_EQ(read(a / "history.csv"), read(b / "history.csv")) << a << " vs " << b;
+  const std::string sa = read(a / "summary.json"), sb = read(b / "summary.json");
+  EXPECT_NE(sa.find("\"wall_seconds\""), std::string::npos) << "wall time kept in its own field";
+  EXPECT_EQ(without_wall_time(sa), without_wall_time(sb)) << a << " vs " << b;
+}
+
+int beamimpact(const std::string& args) {
+  return std::system(fmt::format("cd '{}' && '{}' {} > /dev/null 2>&1", BEAMIMPACT_SOURCE, BEAMIMPACT_EXE, args).c_str());
+}
+
+TEST(Determinism, RerunsGiveIdenticalFiles) {
+  const fs::path dir = beamimpact::testing::temp_path("rerun");
+  for (const auto& [scene, method] : {std::pair{"s2_transverse", "paper"}, std::pair{"s2_transverse", "ida"},
+                                      std::pair{"s1_central", "exact"}, std::pair{"s4_oblique_45", "paper"}}) {
+    const fs::path a = dir / (std::string(scene) + method + "_a"), b = dir / (std::string(scene) + method + "_b");
+    for (const fs::path& out : {a, b})
+      ASSERT_EQ(beamimpact(fmt::format("run verification/scenes/paper/{}.toml --method {} --out '{}' --quiet", scene,
+                                       method, out.string())),
+                0);
+    expect_same_run(a, b);
+  }
+}
+
+TEST(Determinism, VerifyJobsDoNotChangeTheRuns) {
+  const fs::path dir = beamimpact::testing::temp_path("jobs");
+  for (int jobs : {1, 2})
+    ASSERT_EQ(beamimpact(fmt::format("verify verification/matrix.toml --only 's1_central paper dt=0.01 vs' "
+                                     "--out '{}' --jobs {}",
+                                     (dir / std::to_string(jobs)).string(), jobs)),
+              0);
+  int compared = 0;
+  for (const auto& e : fs::directory_iterator(dir / "1" / "runs")) {
+    expect_same_run(e.path(), dir / "2" / "runs" / e.path().filename());
+    ++compared;
+  }
+  EXPECT_GE(compared, 2) << "the case's run and its reference";
+}
+
+}  // namespace

@@ -175,7 +175,7 @@ def main():
 
     (out / "mutation.json").write_text(json.dumps(results, indent=1) + "\n")
     killed = sum(1 for r in results if r["killed_by"])
-    md = [f"# Mutation score: {killed} / {len(results)} killed by the quick tier\n",
+    md = [f"# Mutation score: {killed} / {len(results)} killed (quick tier + geometry tests)\n",
           "| mutant | what | killed by (gates) |", "|---|---|---|"]
     for r in results:
         k = ", ".join(r["killed_by"][:6]) + (f" (+{len(r['killed_by']) - 6})" if len(r["killed_by"]) > 6 else "")

@@ -49,7 +49,7 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
     minv_.factorize_pattern(cmass_->M());  // M_A(t) may hold entries the model's M never stored
   }
   const int n = model.size();
-  U_prev_ = U_ = U_next_ = Ubar_ = fc_ = work_ = work2_ = du_ = scratch_ = hwork_ = Eigen::VectorXd::Zero(n);
+  U_prev_ = U_ = U_next_ = Ubar_ = fc_ = work_ = work2_ = du_ = scratch_ = hwork_ = c_du_ = Eigen::VectorXd::Zero(n);
   Vbar_ = V_ = model.initial_velocity();  // no contact force at t = 0: Vbar^0 = V^0
   fint_U_ = fint_next_ = Eigen::VectorXd::Zero(n);
   fint_.apply(U_, fint_U_);
@@ -124,15 +124,21 @@ void ExplicitContactIntegrator::advance() {
   // Vbar^{p+1} = Vbar^p + M^-1 (-dt/2 (f(U^{p+1}) + f(U^p)) - C (U^{p+1} - U^p) + dt f_c)
   work2_.noalias() = (-0.5 * dt_) * (fint_next_ + fint_U_);
   if (solver_.any_force()) work2_.noalias() += dt_ * fc_;
+  double damper_work = 0.0;
   if (damped_) {
-    // The paper's velocity line replaces C (V^p + V^{p+1}) dt/2 by C (U^{p+1} - U^p).
+    // The paper's velocity line replaces C (V^p + V^{p+1}) dt/2 by C (U^{p+1} - U^p). The damper's
+    // share of the kinetic energy 1/2 Vbar M Vbar is then exactly (Vbar^p + Vbar^{p+1})/2 . C du:
+    // booked below (du^T C du / dt, at the half-step velocity, under-counted it by 7.7 % at
+    // a0 dt = 0.5).
     du_.noalias() = U_next_ - U_;
-    const double before = work2_.dot(du_);
-    subtract_damping_force(du_, work2_);
-    dissipated_ += (before - work2_.dot(du_)) / dt_;  // du^T C du / dt: energy the damper took
+    c_du_.setZero();
+    subtract_damping_force(du_, c_du_);  // c_du_ = -C du
+    work2_ += c_du_;
+    damper_work = -0.5 * Vbar_.dot(c_du_);
   }
   apply_Minv(work2_, work_);
   Vbar_ += work_;
+  if (damped_) dissipated_ += damper_work - 0.5 * Vbar_.dot(c_du_);
   std::swap(U_prev_, U_);
   std::swap(U_, U_next_);
   std::swap(fint_U_, fint_next_);

@@ -92,7 +92,7 @@ class ExplicitContactIntegrator {
   long p_ = 0;
   Eigen::VectorXd U_prev_, U_, U_next_,  // U^{p-1}, U^p, U^{p+1} (rotated by swaps)
       Vbar_, V_, fint_U_, fint_next_, Ubar_, fc_, work_, work2_,
-      du_, scratch_, hwork_;
+      du_, scratch_, hwork_, c_du_;
   double dissipated_ = 0.0;
 };
 

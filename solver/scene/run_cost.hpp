@@ -21,8 +21,9 @@ struct RunCost {
   std::string to_string() const;
 };
 
-/// @brief Limits of an ordinary run: about an hour of one core at 3e7 DOF-steps/s, and memory a
-/// CI machine or a laptop has. Above either, time.allow_long_run = true is needed.
+/// @brief Limits of an ordinary run: 1e11 DOF-steps is 8-18 minutes of one core at the measured
+/// 0.9-2.2e8 DOF-steps/s (README, Benchmarks), far more with contact search or IDA; 4 GB is what
+/// a CI machine or a laptop has. Above either, time.allow_long_run = true is needed.
 inline constexpr double kOrdinaryWork = 1e11;       ///< DOF-steps
 inline constexpr double kOrdinaryBytes = 4e9;       ///< bytes
 /// @brief Above this many steps a run is refused outright: t + dt == t in double precision near

@@ -14,8 +14,10 @@ namespace beamimpact {
 /// @brief The estimate for one scene and step.
 struct RunCost {
   double steps = 0.0;   ///< ceil(end / dt)
+  double wave_steps = 0.0;  ///< end / (smallest axial element transit time): what resolving the
+                            ///< fastest wave takes (IDA's and the exact method's own steps)
   double dofs = 0.0;    ///< 3 per node (u_x, u_y, theta), all bodies
-  double work = 0.0;    ///< steps x dofs (DOF-steps)
+  double work = 0.0;    ///< max(steps, wave_steps) x dofs (DOF-steps)
   double bytes = 0.0;   ///< model + recorded history, estimated
   /// @brief "4e+05 steps x 66 DOFs = 2.6e+07 DOF-steps, about 0.01 GB".
   std::string to_string() const;

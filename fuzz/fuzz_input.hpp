@@ -12,20 +12,14 @@
 
 #include <unistd.h>
 
+#include <beamimpact/util/ScratchDir.hpp>
+
 namespace beamimpact::fuzz {
 
 /// @brief TMPDIR/beamimpact_fuzz_<pid>, made on first use and removed at exit.
 inline const std::filesystem::path& scratch() {
-  struct Dir {
-    std::filesystem::path path = std::filesystem::temp_directory_path() / ("beamimpact_fuzz_" + std::to_string(getpid()));
-    Dir() { std::filesystem::create_directories(path); }
-    ~Dir() {
-      std::error_code ignored;
-      std::filesystem::remove_all(path, ignored);
-    }
-  };
-  static const Dir dir;
-  return dir.path;
+  static const ScratchDir dir(std::filesystem::temp_directory_path() / ("beamimpact_fuzz_" + std::to_string(getpid())));
+  return dir.path();
 }
 
 /// @brief Writes `text` to scratch()/name and returns the path.

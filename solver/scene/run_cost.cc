@@ -22,8 +22,8 @@ constexpr double kBytesPerRowAndContact = 200.0;
 }  // namespace
 
 std::string RunCost::to_string() const {
-  return fmt::format("{:.3g} steps x {:.3g} DOFs = {:.3g} DOF-steps, about {:.3g} GB of memory", steps, dofs, work,
-                     bytes / 1e9);
+  return fmt::format("{:.3g} steps (the fastest wave needs {:.3g}) x {:.3g} DOFs = {:.3g} DOF-steps, about {:.3g} GB "
+                     "of memory", steps, wave_steps, dofs, work, bytes / 1e9);
 }
 
 RunCost estimate_run_cost(const Scene& scene, double dt) {
@@ -31,7 +31,8 @@ RunCost estimate_run_cost(const Scene& scene, double dt) {
   for (const Body& b : scene.bodies) c.dofs += 3.0 * (static_cast<double>(b.elements) + 1.0);
   c.steps = dt > 0.0 && std::isfinite(dt) ? std::ceil(scene.time.end / dt - 1e-9)
                                           : std::numeric_limits<double>::infinity();
-  c.work = c.steps * c.dofs;
+  c.wave_steps = scene.time.end / (estimate_auto_dt(scene) / scene.time.fraction);
+  c.work = std::max(c.steps, c.wave_steps) * c.dofs;
   const double rows = c.steps / std::max(1, scene.time.output_every);
   c.bytes = c.dofs * kBytesPerDof +
             rows * kBytesPerRowAndContact * static_cast<double>(std::max<std::size_t>(1, scene.contacts.size()));

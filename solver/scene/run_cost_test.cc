@@ -17,6 +17,7 @@ TEST(RunCost, CountsStepsAndDofsOfS1) {
   EXPECT_EQ(c.steps, 400.0);
   EXPECT_EQ(c.dofs, 66.0);
   EXPECT_EQ(c.work, 400.0 * 66.0);
+  EXPECT_NEAR(c.wave_steps, 40.0, 1e-12);  // 4 s / (1 m / 10 m/s)
   EXPECT_EQ(step_count(load_paper_scene("s1_central"), 0.01), 400);
 }
 
@@ -39,7 +40,7 @@ TEST(RunCost, RefusesBeyondOrdinaryUnlessAllowed) {
     FAIL() << "expected a refusal";
   } catch (const SceneError& e) {
     EXPECT_EQ(e.key(), "time.allow_long_run");
-    EXPECT_NE(std::string(e.what()).find("4e+11 steps x 66 DOFs = 2.64e+13 DOF-steps"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("4e+11 steps (the fastest wave needs 4e+10) x 66 DOFs = 2.64e+13 DOF-steps"), std::string::npos) << e.what();
   }
 }
 

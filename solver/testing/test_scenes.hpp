@@ -11,6 +11,7 @@
 
 #include <beamimpact/scene/Scene.hpp>
 #include <beamimpact/scene/scene_io.hpp>
+#include <beamimpact/util/ScratchDir.hpp>
 
 namespace beamimpact::testing {
 
@@ -24,17 +25,8 @@ inline std::filesystem::path source_dir() {
 /// @brief The folder of this test process's temporary files, TempDir()/beamimpact_<pid>: made on
 /// first use, removed with everything in it when the process exits (tests leave nothing behind).
 inline const std::filesystem::path& temp_root() {
-  struct Root {
-    std::filesystem::path path =
-        std::filesystem::path(::testing::TempDir()) / ("beamimpact_" + std::to_string(getpid()));
-    Root() { std::filesystem::create_directories(path); }
-    ~Root() {
-      std::error_code ignored;
-      std::filesystem::remove_all(path, ignored);
-    }
-  };
-  static const Root root;
-  return root.path;
+  static const ScratchDir root(std::filesystem::path(::testing::TempDir()) / ("beamimpact_" + std::to_string(getpid())));
+  return root.path();
 }
 
 /// @brief A temporary path private to this test process and test: ctest runs test cases as

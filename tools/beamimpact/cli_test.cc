@@ -105,10 +105,16 @@ TEST(Cli, BadInputExitsTwoWithOneMessageAndNoResult) {
        "into at most 1e+15 steps"},
       {"1e16 steps exact", "run " + paper_scene("s1_central") + " --method exact --allow-long --set time.dt=1e-13 --set time.end=1e3",
        "into at most 1e+15 steps"},
-      // Runs that cannot finish: the estimate is printed, the flag is named (400 steps x 3e7 DOFs).
+      // Runs that cannot finish: the estimate is printed, the flag is named. 1e7 elements of 1e-6 m,
+      // axial wave speed sqrt(E / rho) = 10 m/s: transit 1e-7 s, 4e7 wave steps in 4 s; 3e7 DOFs.
       {"1e7 elements", "run " + paper_scene("s1_central") + " --set bodies[0].elements=10000000",
-       "key 'time.allow_long_run': this run is far beyond an ordinary one: 400 steps x 3e+07 DOFs"},
-      {"end 4.3e9 s", "run " + paper_scene("s1_central") + " --set time.end=4.3e9", "4.3e+11 steps x 66 DOFs"},
+       "key 'time.allow_long_run': this run is far beyond an ordinary one: 400 steps (the fastest wave needs 4e+07) x 3e+07 DOFs"},
+      {"end 4.3e9 s", "run " + paper_scene("s1_central") + " --set time.end=4.3e9", "4.3e+11 steps (the fastest wave needs 4.3e+10) x 66 DOFs"},
+      // E = 1e30 N/m^2: wave speed 1e15 m/s, transit 1e-15 s: IDA and exact ran for hours.
+      {"stiff ida", "run " + paper_scene("s1_central") + " --method ida --set bodies[0].E=1e30",
+       "400 steps (the fastest wave needs 4e+15) x 66 DOFs"},
+      {"stiff exact", "run " + paper_scene("s1_central") + " --method exact --set bodies[0].E=1e30",
+       "key 'time.allow_long_run'"},
   };
   for (const Bad& c : cases) {
     const fs::path out = fresh_dir("bad");
@@ -132,10 +138,10 @@ TEST(Cli, LongValuesAreCutInTheMessage) {
 }
 
 TEST(Cli, QuietPrintsNothingAndAllowLongRuns) {
-  // 3e6 steps x 66 DOFs = 2e8 DOF-steps is ordinary and passes with --allow-long too; it lasts
+  // 2e6 steps x 66 DOFs = 1.3e8 DOF-steps is ordinary and passes with --allow-long too; it lasts
   // over 1 s, so without --quiet a progress line appears (checked: it did before the fix).
   const Result r = run("run " + paper_scene("s1_central") + " --out " + fresh_dir("quiet").string() +
-                       " --quiet --allow-long --set time.end=30000");
+                       " --quiet --allow-long --set time.end=20000");
   EXPECT_EQ(r.code, 0) << r.output;
   EXPECT_EQ(r.output, "");
 }

@@ -14,7 +14,7 @@ INTEG = "solver/integrator/ExplicitContactIntegrator.cc"
 # The contact loop's first lines, used by the mutants that need the previous step's state.
 _OPEN_LINES = (
     "    out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};\n"
-    "    active_[c] = gbar_[c] < -tol_ && p.on_surface();\n")
+    "    active_[c] = gbar_[c] < -tol_[c] && p.on_surface();\n")
 
 
 def _scaled_force(k):
@@ -36,8 +36,8 @@ MUTANTS = [
          edits=[(CS, _OPEN_LINES,
                  "    const bool was_open = out_[c].state == ContactState::kOpen;\n"
                  "    out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};\n"
-                 "    active_[c] = gbar_[c] < -tol_ && p.on_surface() &&\n"
-                 "                 (!was_open || p.g0() + ContactPair::eval(p.normal_row(), U) < -tol_);\n")]),
+                 "    active_[c] = gbar_[c] < -tol_[c] && p.on_surface() &&\n"
+                 "                 (!was_open || p.g0() + ContactPair::eval(p.normal_row(), U) < -tol_[c]);\n")]),
     dict(name="nts_weights_swapped", ci=False,
          what="node-to-surface (both weights non-zero): the target nodes' weights xi1, xi2 swapped",
          edits=[(CP, "    if (xi1_ != 0.0) model_.append_projection(n1, d, -xi1_, out);\n"
@@ -65,11 +65,11 @@ MUTANTS = [
          edits=[(CS, _OPEN_LINES,
                  "    const bool was_open = out_[c].state == ContactState::kOpen;\n"
                  "    out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};\n"
-                 "    const double hold = was_open ? -tol_ : 1e6 * tol_;\n"
+                 "    const double hold = was_open ? -tol_[c] : 1e6 * tol_[c];\n"
                  "    active_[c] = gbar_[c] < hold && p.on_surface();\n"),
-                (CS, "      ContactForce f{0.0, 0.0, g, s, ContactState::kOpen};\n      if (g < -tol_) {",
-                 "      ContactForce f{0.0, 0.0, g, s, ContactState::kOpen};\n      if (g < -tol_ || active_[c]) {"),
-                (CS, "            if (R > 0.0) {", "            if (R > -1e6 * tol_ / Ann) {")]),
+                (CS, "      ContactForce f{0.0, 0.0, g, s, ContactState::kOpen};\n      if (g < -tol_[c]) {",
+                 "      ContactForce f{0.0, 0.0, g, s, ContactState::kOpen};\n      if (g < -tol_[c] || active_[c]) {"),
+                (CS, "            if (R > 0.0) {", "            if (R > -1e6 * tol_[c] / Ann) {")]),
     dict(name="damping_sign", ci=False,
          what="Rayleigh damping force sign flipped (C v added instead of subtracted)",
          edits=[(INTEG, "  f -= model_.rayleigh_mass() * scratch_;", "  f += model_.rayleigh_mass() * scratch_;"),

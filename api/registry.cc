@@ -23,10 +23,12 @@ const std::vector<Method>& methods() {
 #ifdef BEAMIMPACT_HAVE_exact
     Method exact;
     exact.name = "exact";
-    exact.summary = "exact and semi-analytic solutions: d'Alembert rods, rod on a simply supported beam "
-                    "(references/exact/)";
+    exact.summary =
+        "exact and semi-analytic solutions: d'Alembert rods, rod on a simply supported beam "
+        "(references/exact/)";
     exact.options_table = "exact";
-    exact.accepts = {.dt = true, .overrides = true, .mesh_factor = false, .friction = false, .rotation = false};
+    exact.accepts = {
+        .dt = true, .overrides = true, .mesh_factor = false, .friction = false, .rotation = false};
     exact.solve = exact::solve;
     t.push_back(exact);
 #endif
@@ -41,9 +43,11 @@ const std::vector<Method>& methods() {
 #endif
     Method fenicsx;
     fenicsx.name = "fenicsx";
-    fenicsx.summary = "FEniCSx 2D plane-stress continuum, dolfinx 0.5 (references/fenicsx/, external program)";
+    fenicsx.summary =
+        "FEniCSx 2D plane-stress continuum, dolfinx 0.5 (references/fenicsx/, external program)";
     fenicsx.options_table = "fenicsx";
-    fenicsx.accepts = {.dt = false, .overrides = false, .mesh_factor = false, .friction = true, .rotation = true};
+    fenicsx.accepts = {
+        .dt = false, .overrides = false, .mesh_factor = false, .friction = true, .rotation = true};
     fenicsx.slow = true;
     fenicsx.command = {"/usr/bin/python3", "references/fenicsx/run.py"};
     fenicsx.check = {"/usr/bin/python3", "-c", "import dolfinx"};
@@ -69,7 +73,8 @@ std::string method_names() {
 
 const Method& method(std::string_view name, const std::string& file, const std::string& key) {
   if (const Method* m = find_method(name)) return *m;
-  throw SceneError(file, key, "expected a method name (" + method_names() + "), got '" + std::string(name) + "'");
+  throw SceneError(file, key,
+                   "expected a method name (" + method_names() + "), got '" + std::string(name) + "'");
 }
 
 }  // namespace beamimpact

@@ -25,11 +25,11 @@ struct Method {
     bool rotation = true;     ///< large rotation (corotational kinematics)
   };
 
-  std::string name;            ///< registry key and `--method` value
-  std::string summary;         ///< one line for `beamimpact methods`
-  std::string options_table;   ///< the scene table holding its options ("paper"), "" for none
+  std::string name;           ///< registry key and `--method` value
+  std::string summary;        ///< one line for `beamimpact methods`
+  std::string options_table;  ///< the scene table holding its options ("paper"), "" for none
   Accepts accepts;
-  bool slow = false;           ///< typically seconds or more per run: scheduled first, never timed in tests
+  bool slow = false;  ///< typically seconds or more per run: scheduled first, never timed in tests
   /// @brief In-process solver; empty for an external program.
   std::function<SimulationResult(const Scene&)> solve;
   /// @brief External program: argv prefix, paths relative to the source root (or the installed

@@ -10,7 +10,8 @@ namespace beamimpact {
 
 SimulationResult run(const Scene& scene, std::string_view method_name, const RunOptions& options) {
   if (!options.set.empty())
-    throw SceneError(scene.file, "set", "expected no overrides for a loaded scene; pass them to load_scene()");
+    throw SceneError(scene.file, "set",
+                     "expected no overrides for a loaded scene; pass them to load_scene()");
   const Method& m = method(method_name, scene.file, "--method");
   if (!m.in_process())
     throw SceneError(scene.file, "--method",

@@ -34,7 +34,8 @@ struct RunOptions {
 /// @param options overrides and output directory
 /// @return the result; throws SceneError for bad input (file, key, expectation; the CLI's exit
 /// code 2) and std::runtime_error when the run fails (exit code 3).
-SimulationResult run(const std::filesystem::path& scene_file, std::string_view method, const RunOptions& options = {});
+SimulationResult run(const std::filesystem::path& scene_file, std::string_view method,
+                     const RunOptions& options = {});
 
 /// @brief Runs a scene already loaded (options.set must be empty: overrides are applied by
 /// load_scene()).

@@ -36,7 +36,9 @@ void BM_StepAxialRods(benchmark::State& s) { run_steps(s, "s1_central", {}); }
 void BM_StepFrameLumped(benchmark::State& s) { run_steps(s, "s2_transverse", {}); }
 void BM_StepFrameConsistent(benchmark::State& s) { run_steps(s, "s2_transverse", {"model.mass=consistent"}); }
 void BM_StepFrictionCorotational(benchmark::State& s) { run_steps(s, "s4_oblique_60", {}); }
-void BM_StepFrictionLinear(benchmark::State& s) { run_steps(s, "s4_oblique_60", {"model.kinematics=linear"}); }
+void BM_StepFrictionLinear(benchmark::State& s) {
+  run_steps(s, "s4_oblique_60", {"model.kinematics=linear"});
+}
 
 BENCHMARK(BM_StepAxialRods)->RangeMultiplier(10)->Range(100, 100000);
 BENCHMARK(BM_StepFrameLumped)->RangeMultiplier(10)->Range(100, 30000);
@@ -47,7 +49,8 @@ BENCHMARK(BM_StepFrictionCorotational)->Arg(1000);
 /// The critical step by Lanczos: cost per model size (O(nnz) per iteration, tens of iterations).
 void BM_CriticalStep(benchmark::State& state) {
   const std::string n = std::to_string(state.range(0));
-  const Scene s = load_scene(scene_path("s2_transverse"), {"bodies.A.elements=" + n, "bodies.B.elements=" + n});
+  const Scene s =
+      load_scene(scene_path("s2_transverse"), {"bodies.A.elements=" + n, "bodies.B.elements=" + n});
   const Model m(s, true);
   for (auto _ : state) benchmark::DoNotOptimize(critical_step(m));
   state.counters["dofs"] = m.size();

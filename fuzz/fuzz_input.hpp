@@ -18,7 +18,8 @@ namespace beamimpact::fuzz {
 
 /// @brief TMPDIR/beamimpact_fuzz_<pid>, made on first use and removed at exit.
 inline const std::filesystem::path& scratch() {
-  static const ScratchDir dir(std::filesystem::temp_directory_path() / ("beamimpact_fuzz_" + std::to_string(getpid())));
+  static const ScratchDir dir(std::filesystem::temp_directory_path() /
+                              ("beamimpact_fuzz_" + std::to_string(getpid())));
   return dir.path();
 }
 
@@ -30,7 +31,8 @@ inline std::filesystem::path write(const std::string& name, std::string_view tex
 }
 
 /// @brief Splits the input at the first `separator`: {before, after} ("" after when absent).
-inline std::pair<std::string_view, std::string_view> split(const uint8_t* data, size_t size, std::string_view separator) {
+inline std::pair<std::string_view, std::string_view> split(const uint8_t* data, size_t size,
+                                                           std::string_view separator) {
   const std::string_view all(reinterpret_cast<const char*>(data), size);
   const auto at = all.find(separator);
   if (at == std::string_view::npos) return {all, {}};

@@ -8,7 +8,11 @@
 namespace beamimpact::exact {
 
 CoaxialRods::CoaxialRods(const Rod& a, const Rod& b, double v0, double gap, double t_end)
-    : a_(a), b_(b), v0_(v0), gap0_(gap), t_end_(t_end),
+    : a_(a),
+      b_(b),
+      v0_(v0),
+      gap0_(gap),
+      t_end_(t_end),
       t0_(v0 > 0.0 ? gap / v0 : std::numeric_limits<double>::infinity()) {
   solve();
 }

@@ -12,8 +12,8 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 
-#include <beamimpact/util/Progress.hpp>
 #include <gsl/gsl_roots.h>
+#include <beamimpact/util/Progress.hpp>
 
 namespace beamimpact::exact {
 namespace {
@@ -106,7 +106,11 @@ class Integration {
   /// @param sol the solution to fill
   /// @param mem the rod's reflection memory to fill
   Integration(const RodOnBeamSetup& s, RodOnBeamSolution& sol, DelayMemory& mem)
-      : s_(s), sol_(sol), mem_(mem), d_(make_dynamics(s, mem)), N_(d_.N),
+      : s_(s),
+        sol_(sol),
+        mem_(mem),
+        d_(make_dynamics(s, mem)),
+        N_(d_.N),
         dim_(static_cast<std::size_t>(2 * N_ + 3)) {
     sol_.modes = N_;
     t0_ = s_.v0 > 0.0 ? s_.gap / s_.v0 : std::numeric_limits<double>::infinity();
@@ -176,10 +180,10 @@ class Integration {
     scale_[2 * N_ + 2] = W;
     sys_ = {rhs, nullptr, dim_, &d_};
     const double h0 = 0.1 * delta_;
-    drv_.reset(gsl_odeiv2_driver_alloc_scaled_new(&sys_, gsl_odeiv2_step_rk8pd, h0, s_.rtol,
-                                                  s_.rtol, 1.0, 0.0, scale_.data()));
-    aux_.reset(gsl_odeiv2_driver_alloc_scaled_new(&sys_, gsl_odeiv2_step_rk8pd, h0, s_.rtol,
-                                                  s_.rtol, 1.0, 0.0, scale_.data()));
+    drv_.reset(gsl_odeiv2_driver_alloc_scaled_new(&sys_, gsl_odeiv2_step_rk8pd, h0, s_.rtol, s_.rtol, 1.0,
+                                                  0.0, scale_.data()));
+    aux_.reset(gsl_odeiv2_driver_alloc_scaled_new(&sys_, gsl_odeiv2_step_rk8pd, h0, s_.rtol, s_.rtol, 1.0,
+                                                  0.0, scale_.data()));
   }
 
   /// @brief End of the piece starting at t_ (s): the earliest pending breakpoint or t_end.
@@ -226,7 +230,8 @@ class Integration {
     std::vector<std::pair<double, bool>> stops;
     for (double s = t_ + delta_; s < nb - 0.25 * delta_; s += delta_) stops.push_back({s, false});
     stops.push_back({nb, false});
-    for (std::size_t k = out_i_; k < out_t_.size() && out_t_[k] <= nb; ++k) stops.push_back({out_t_[k], true});
+    for (std::size_t k = out_i_; k < out_t_.size() && out_t_[k] <= nb; ++k)
+      stops.push_back({out_t_[k], true});
     std::stable_sort(stops.begin(), stops.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });
     return stops;
@@ -380,7 +385,8 @@ class Integration {
   /// @brief Largest |beam modal energy - work of P on the rod end| over the output rows (J).
   double energy_balance_error() const {
     double E_err = 0.0;
-    for (const auto& r : sol_.rows) E_err = std::max(E_err, std::abs(r.beam_kinetic + r.beam_strain - r.rod_work));
+    for (const auto& r : sol_.rows)
+      E_err = std::max(E_err, std::abs(r.beam_kinetic + r.beam_strain - r.rod_work));
     return E_err;
   }
 
@@ -402,8 +408,8 @@ class Integration {
   double contact_start_ = 0.0;               // s, start of the open contact interval
   bool after_event_ = false;                 // the current piece starts at a located event
   double last_event_t_ = -std::numeric_limits<double>::infinity();  // s
-  double eps_ = 0.0;                         // s, time tolerance of breakpoints
-  std::set<double> pending_;                 // s, breakpoints still ahead
+  double eps_ = 0.0;                                                // s, time tolerance of breakpoints
+  std::set<double> pending_;                                        // s, breakpoints still ahead
 };
 
 }  // namespace

@@ -32,34 +32,34 @@ struct RodOnBeamSetup {
 /// @brief One output row (rod quantities positive along the rod's velocity; w positive
 /// in the same direction, i.e. the beam pushed away from the rod).
 struct RodOnBeamRow {
-  double t = 0.0;              ///< s
-  double P = 0.0;              ///< N, contact force
-  double gap = 0.0;            ///< m
-  double u = 0.0, du = 0.0;    ///< m, m/s: rod end displacement and velocity
-  double w = 0.0, dw = 0.0;    ///< m, m/s: beam deflection and velocity at the struck point
-  double impulse = 0.0;        ///< N s, integral of P so far
-  double rod_work = 0.0;       ///< J, work of P on the rod end (the rod's energy loss)
+  double t = 0.0;                                ///< s
+  double P = 0.0;                                ///< N, contact force
+  double gap = 0.0;                              ///< m
+  double u = 0.0, du = 0.0;                      ///< m, m/s: rod end displacement and velocity
+  double w = 0.0, dw = 0.0;                      ///< m, m/s: beam deflection and velocity at the struck point
+  double impulse = 0.0;                          ///< N s, integral of P so far
+  double rod_work = 0.0;                         ///< J, work of P on the rod end (the rod's energy loss)
   double beam_kinetic = 0.0, beam_strain = 0.0;  ///< J, modal sums
-  double beam_momentum = 0.0;  ///< N s, along the rod velocity
-  RodField rod;                ///< rod kinetic/strain/momentum from its wave field (if asked)
-  bool closed = false;         ///< in contact
+  double beam_momentum = 0.0;                    ///< N s, along the rod velocity
+  RodField rod;         ///< rod kinetic/strain/momentum from its wave field (if asked)
+  bool closed = false;  ///< in contact
 };
 
 /// @brief Everything the run produced.
 struct RodOnBeamSolution {
   std::vector<RodOnBeamRow> rows;
   std::vector<std::array<double, 2>> intervals;  ///< s, contact intervals from the located events
-  double impulse = 0.0;       ///< N s, integral of P over [0, t_end]
-  double peak_P = 0.0;        ///< N
-  double first_P = 0.0;       ///< N, just after first touch (= Z_A v0)
-  double w_max = 0.0, t_w_max = 0.0;  ///< m, s: largest deflection under the struck point
-  double w_min = 0.0;         ///< m, most negative deflection (rebound side)
+  double impulse = 0.0;                          ///< N s, integral of P over [0, t_end]
+  double peak_P = 0.0;                           ///< N
+  double first_P = 0.0;                          ///< N, just after first touch (= Z_A v0)
+  double w_max = 0.0, t_w_max = 0.0;             ///< m, s: largest deflection under the struck point
+  double w_min = 0.0;                            ///< m, most negative deflection (rebound side)
   double energy_error = 0.0;  ///< J, max |beam modal energy - work of P on the beam| (should be ~rtol)
   long steps = 0;             ///< accepted + rejected rk8pd steps
   long pieces = 0;            ///< smooth pieces integrated (breakpoints and events)
   long events = 0;            ///< located onsets/separations after the first touch
   int modes = 0;
-  double sample_dt = 0.0;     ///< s, spacing of the stored reflection-memory samples
+  double sample_dt = 0.0;  ///< s, spacing of the stored reflection-memory samples
 };
 
 /// @brief Runs the semi-analytic solution for a fixed number of modes.

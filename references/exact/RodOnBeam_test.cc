@@ -47,7 +47,8 @@ TEST(RodOnBeam, EarlyForceFollowsInfiniteBeamErfcx) {
   s.dt_out = 0.05;
   s.rod_fields = false;
   const RodOnBeam r(s);
-  const double b = s.rod.impedance() / (2.0 * s.beam.rho * s.beam.area * std::sqrt(2.0 * s.beam.dispersion()));
+  const double b =
+      s.rod.impedance() / (2.0 * s.beam.rho * s.beam.area * std::sqrt(2.0 * s.beam.dispersion()));
   int checked = 0;
   for (const RodOnBeamRow& row : r.solution().rows) {
     if (row.t < 0.1) continue;
@@ -84,7 +85,8 @@ TEST(RodOnBeam, MomentumAndEnergyBalance) {
   const double m = 2.0, E0 = 0.5 * m;  // rod mass rho A L = 2 kg, v0 = 1 m/s
   for (const RodOnBeamRow& row : sol.rows) {
     EXPECT_NEAR(row.rod.momentum, m - row.impulse, 1e-7 * m) << row.t;
-    EXPECT_NEAR(row.rod.kinetic + row.rod.strain + row.beam_kinetic + row.beam_strain, E0, 1e-7 * E0) << row.t;
+    EXPECT_NEAR(row.rod.kinetic + row.rod.strain + row.beam_kinetic + row.beam_strain, E0, 1e-7 * E0)
+        << row.t;
     EXPECT_GE(row.P, 0.0);
     EXPECT_GE(row.gap, -1e-9);
   }

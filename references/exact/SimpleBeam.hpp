@@ -29,9 +29,7 @@ struct SimpleBeam {
   double shape(int n, double x) const { return std::sin(n * std::numbers::pi * x / length); }
   /// @brief Integral of the mode shape over the span, L (1 - cos n pi) / (n pi) (m): the modal
   /// coordinate's share of the beam's linear momentum per unit q_n' and rho A.
-  double shape_integral(int n) const {
-    return (n % 2 == 1) ? 2.0 * length / (n * std::numbers::pi) : 0.0;
-  }
+  double shape_integral(int n) const { return (n % 2 == 1) ? 2.0 * length / (n * std::numbers::pi) : 0.0; }
 };
 
 }  // namespace beamimpact::exact

@@ -24,8 +24,8 @@ TEST(Erfcx, FollowsTheAsymptoticSeriesForLargeArguments) {
   // 105/(16 x^8) ~ 7e-8 relative at x = 10 and 7e-16 at x = 100.
   for (double x : {10.0, 30.0, 100.0, 1e4}) {
     const double y = 1.0 / (x * x);
-    const double series = (1.0 - y / 2.0 + 3.0 * y * y / 4.0 - 15.0 * y * y * y / 8.0) /
-                          (x * std::sqrt(std::numbers::pi));
+    const double series =
+        (1.0 - y / 2.0 + 3.0 * y * y / 4.0 - 15.0 * y * y * y / 8.0) / (x * std::sqrt(std::numbers::pi));
     EXPECT_NEAR(erfcx(x), series, 1e-7 * series) << x;
   }
 }

@@ -48,19 +48,20 @@ void check_one_frictionless_undamped_contact(const Scene& scene) {
   if (c.friction != 0.0)
     refuse(scene, "contacts[0].friction",
            fmt::format("friction is not zero (mu = {}); the exact solutions are frictionless "
-                       "(compare with --set contacts[0].friction=0)", c.friction));
+                       "(compare with --set contacts[0].friction=0)",
+                       c.friction));
   if (scene.model.rayleigh_mass != 0.0 || scene.model.rayleigh_stiffness != 0.0)
     refuse(scene, "model.rayleigh_mass", "damping is not zero; the exact solutions are undamped");
 }
 
 /// @brief The striker's frame, common to both problems, and what the recognisers check against.
 struct Frame {
-  const Body& A;         ///< striker
-  const Body& B;         ///< target
-  std::string ka, kb;    ///< their scene keys, "bodies[i]"
-  Vec2 pc;               ///< m, striker's contact end
-  Vec2 eb;               ///< target axis, unit, start to end
-  double scale;          ///< m, La + Lb
+  const Body& A;            ///< striker
+  const Body& B;            ///< target
+  std::string ka, kb;       ///< their scene keys, "bodies[i]"
+  Vec2 pc;                  ///< m, striker's contact end
+  Vec2 eb;                  ///< target axis, unit, start to end
+  double scale;             ///< m, La + Lb
   double va_norm, vb_norm;  ///< m/s, speeds of striker and target
 };
 
@@ -68,8 +69,9 @@ struct Frame {
 void recognise_coaxial_rods(const Scene& scene, const Frame& f, ExactProblem& p) {
   const Body& B = f.B;
   if (std::abs(cross(f.eb, p.dir)) > kTol || std::abs(cross(sub(B.start, f.pc), p.dir)) > kTol * f.scale)
-    refuse(scene, f.kb + ".start", "the target is not coaxial with the striker (free target: the coaxial "
-                                   "rod solution needs both bodies on one line)");
+    refuse(scene, f.kb + ".start",
+           "the target is not coaxial with the striker (free target: the coaxial "
+           "rod solution needs both bodies on one line)");
   const double s1 = dot(sub(B.start, f.pc), p.dir), s2 = dot(sub(B.end, f.pc), p.dir);
   if (std::min(s1, s2) < -kTol * f.scale)
     refuse(scene, f.kb + ".start", "the target is not ahead of the striker's contact end");
@@ -87,21 +89,27 @@ void recognise_coaxial_rods(const Scene& scene, const Frame& f, ExactProblem& p)
 void recognise_rod_on_beam(const Scene& scene, const Frame& f, ExactProblem& p) {
   const Body& B = f.B;
   if (std::abs(dot(f.eb, p.dir)) > kTol)
-    refuse(scene, f.ka + ".end", "the striker is not perpendicular to the target (supported target: the "
-                                 "rod-on-beam solution needs a normal, end-on impact)");
+    refuse(scene, f.ka + ".end",
+           "the striker is not perpendicular to the target (supported target: the "
+           "rod-on-beam solution needs a normal, end-on impact)");
   const Vec2 n = {-f.eb[1], f.eb[0]};
   bool simple = B.supports.size() == 2;
   bool start_held = false, end_held = false;
   for (const Support& s : B.supports) {
-    if (s.node == 0) start_held = holds_normal(s, n);
-    else if (s.node == B.elements) end_held = holds_normal(s, n);
-    else simple = false;
+    if (s.node == 0)
+      start_held = holds_normal(s, n);
+    else if (s.node == B.elements)
+      end_held = holds_normal(s, n);
+    else
+      simple = false;
   }
   if (!(simple && start_held && end_held))
-    refuse(scene, f.kb + ".supports", "the target is not simply supported (it needs one support at each "
-                                      "end holding the transverse displacement, rotation free, no other supports)");
+    refuse(scene, f.kb + ".supports",
+           "the target is not simply supported (it needs one support at each "
+           "end holding the transverse displacement, rotation free, no other supports)");
   if (f.vb_norm != 0.0) refuse(scene, f.kb + ".velocity", "the supported target is not at rest");
-  if (!(B.inertia > 0.0)) refuse(scene, f.kb + ".inertia", "the target has no bending stiffness (inertia = 0)");
+  if (!(B.inertia > 0.0))
+    refuse(scene, f.kb + ".inertia", "the target has no bending stiffness (inertia = 0)");
   if (scene.effects.bending && !*scene.effects.bending)
     refuse(scene, "effects.bending", "bending is forced off, but the rod-on-beam solution is all bending");
   const double Lb = B.length();
@@ -118,7 +126,8 @@ void recognise_rod_on_beam(const Scene& scene, const Frame& f, ExactProblem& p) 
   p.beam = SimpleBeam{Lb, B.E, B.rho, B.area, B.inertia};
   p.x_c = x_c;
   const double le = Lb / B.elements, k = x_c / le;
-  p.contact_kind = std::abs(k - std::round(k)) < 1e-9 ? ContactKind::kNodeToNode : ContactKind::kNodeToSurface;
+  p.contact_kind =
+      std::abs(k - std::round(k)) < 1e-9 ? ContactKind::kNodeToNode : ContactKind::kNodeToSurface;
 }
 
 }  // namespace
@@ -144,8 +153,10 @@ ExactProblem recognise_scene(const Scene& scene) {
     refuse(scene, ka + ".velocity", "the striker's velocity is not along its own axis");
   p.striker_rod = as_rod(A);
   const Frame f{A, B, ka, kb, pc, unit(sub(B.end, B.start)), scale, va_norm, vb_norm};
-  if (B.supports.empty()) recognise_coaxial_rods(scene, f, p);
-  else recognise_rod_on_beam(scene, f, p);
+  if (B.supports.empty())
+    recognise_coaxial_rods(scene, f, p);
+  else
+    recognise_rod_on_beam(scene, f, p);
   return p;
 }
 

@@ -37,7 +37,8 @@ TEST(RecogniseScene, PaperScenes) {
   EXPECT_DOUBLE_EQ(s2.v0, 1.0);
   EXPECT_EQ(s2.contact_kind, ContactKind::kNodeToNode);
 
-  EXPECT_EQ(recognise_scene(load_scene(paper_scene("s3_surface_10"))).contact_kind, ContactKind::kNodeToSurface);
+  EXPECT_EQ(recognise_scene(load_scene(paper_scene("s3_surface_10"))).contact_kind,
+            ContactKind::kNodeToSurface);
   EXPECT_EQ(recognise_scene(load_scene(paper_scene("s3_surface_20"))).contact_kind, ContactKind::kNodeToNode);
   EXPECT_NEAR(recognise_scene(load_scene(paper_scene("s3_surface_10"))).x_c, 4.5, 1e-15);
 

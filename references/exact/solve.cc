@@ -25,8 +25,8 @@ Vec2 along(Vec2 d, double s) { return {d[0] * s, d[1] * s}; }
 // what the exact solution knows exactly: its event times, impulse and peak force. The
 // output-grid values are kept too (comparable with a stepping method's sampling).
 SimulationResult finish_summary(ResultRecorder& rec, std::vector<HistoryRow> rows,
-                                const std::vector<std::array<double, 2>>& intervals, double impulse, double peak,
-                                double first, ContactKind kind, nlohmann::json contact_extra) {
+                                const std::vector<std::array<double, 2>>& intervals, double impulse,
+                                double peak, double first, ContactKind kind, nlohmann::json contact_extra) {
   rec.set_merge_rule(0.0, kMergeRule);
   const double dt = rec.result().dt;
   for (HistoryRow& row : rows) {
@@ -70,8 +70,8 @@ SimulationResult solve_rods(const Scene& scene, const ExactProblem& p, ResultRec
     c.state = e.P > 0.0 ? ContactState::kClosed : ContactState::kOpen;
     row.contacts.push_back(c);
     // Back to the ground frame: KE = KE' + vt p' + m vt^2 / 2 for each rod.
-    row.kinetic = fa.kinetic + fb.kinetic + vt * (fa.momentum + fb.momentum) +
-                  0.5 * (A.mass() + B.mass()) * vt * vt;
+    row.kinetic =
+        fa.kinetic + fb.kinetic + vt * (fa.momentum + fb.momentum) + 0.5 * (A.mass() + B.mass()) * vt * vt;
     row.strain = fa.strain + fb.strain;
     row.momentum = along(d, fa.momentum + fb.momentum + (A.mass() + B.mass()) * vt);
     rows.push_back(row);
@@ -82,18 +82,20 @@ SimulationResult solve_rods(const Scene& scene, const ExactProblem& p, ResultRec
   const double first = sol.first_touch() < te ? sol.state(sol.first_touch()).P : 0.0;
   nlohmann::json extra = {{"first_touch", sol.first_touch() < te ? sol.first_touch() : -1.0},
                           {"pieces", sol.segments().size()}};
-  rec.set_final_velocity(scene.bodies[p.striker].name, along(d, sol.striker_field(te).momentum / A.mass() + vt));
-  rec.set_final_velocity(scene.bodies[p.target].name, along(d, sol.target_field(te).momentum / B.mass() + vt));
-  r.extra["exact"] = {
-      {"solution", "coaxial free rods, d'Alembert with reflection memory (references.md 1)"},
-      {"pieces", sol.segments().size()},
-      {"note", "P is piecewise constant between breakpoints (contact start, re-contacts and their "
-               "shifts by multiples of T_A, T_B); every output is exact to roundoff; energies are "
-               "integrated exactly over the piecewise-constant wave fields"},
-      {"round_trip_striker", A.round_trip()},
-      {"round_trip_target", B.round_trip()},
-      {"impedance_striker", A.impedance()},
-      {"impedance_target", B.impedance()}};
+  rec.set_final_velocity(scene.bodies[p.striker].name,
+                         along(d, sol.striker_field(te).momentum / A.mass() + vt));
+  rec.set_final_velocity(scene.bodies[p.target].name,
+                         along(d, sol.target_field(te).momentum / B.mass() + vt));
+  r.extra["exact"] = {{"solution", "coaxial free rods, d'Alembert with reflection memory (references.md 1)"},
+                      {"pieces", sol.segments().size()},
+                      {"note",
+                       "P is piecewise constant between breakpoints (contact start, re-contacts and their "
+                       "shifts by multiples of T_A, T_B); every output is exact to roundoff; energies are "
+                       "integrated exactly over the piecewise-constant wave fields"},
+                      {"round_trip_striker", A.round_trip()},
+                      {"round_trip_target", B.round_trip()},
+                      {"impedance_striker", A.impedance()},
+                      {"impedance_target", B.impedance()}};
   return finish_summary(rec, std::move(rows), sol.force_intervals(), sol.impulse(te), sol.peak_force(), first,
                         p.contact_kind, extra);
 }
@@ -104,7 +106,8 @@ struct BeamOptions {
   double tol = 1e-3, rtol = 1e-10;
 };
 
-SimulationResult solve_beam(const Scene& scene, const ExactProblem& p, const BeamOptions& o, ResultRecorder& rec) {
+SimulationResult solve_beam(const Scene& scene, const ExactProblem& p, const BeamOptions& o,
+                            ResultRecorder& rec) {
   SimulationResult& r = rec.result();
   std::vector<HistoryRow> rows;
   RodOnBeamSetup s;
@@ -152,33 +155,35 @@ SimulationResult solve_beam(const Scene& scene, const ExactProblem& p, const Bea
   r.steps = sol.steps;
   nlohmann::json table = nlohmann::json::array();
   for (const auto& e : study.table)
-    table.push_back({{"modes", e.modes}, {"impulse", e.impulse}, {"intervals", e.intervals},
-                     {"w_max", e.w_max}});
-  nlohmann::json extra = {
-      {"modes", sol.modes},
-      {"modes_converged", o.modes > 0 ? nlohmann::json("fixed by exact.modes") : nlohmann::json(study.converged)},
-      {"mode_study", table},
-      {"impulse_change_last_doubling", study.impulse_change},
-      {"time_change_last_doubling", study.time_change},
-      {"struck_point_x", p.x_c},
-      {"deflection_max", sol.w_max},
-      {"deflection_max_time", sol.t_w_max},
-      {"deflection_min", sol.w_min},
-      {"events", sol.events},
-      {"pieces", sol.pieces}};
-  r.extra["exact"] = {
-      {"solution", "rod end-on onto a simply supported Euler-Bernoulli beam: exact rod waves with "
-                   "reflection memory + modal sum, GSL rk8pd, Brent-located events (references.md 2)"},
-      {"rk8pd_steps", sol.steps},
-      {"rtol", o.rtol},
-      {"memory_sample_dt", sol.sample_dt},
-      {"energy_balance_error", sol.energy_error},
-      {"energy_columns", "beam: modal sums; rod: kinetic and strain integrated over its wave field "
-                         "(from the stored reflection memory); the beam's axial motion is not excited"},
-      {"theory", "linear, small deformation; the [model] mass/rotary_inertia/kinematics choices "
-                 "do not apply to the continuum"}};
-  return finish_summary(rec, std::move(rows), sol.intervals, sol.impulse, sol.peak_P, sol.first_P, p.contact_kind,
-                        extra);
+    table.push_back(
+        {{"modes", e.modes}, {"impulse", e.impulse}, {"intervals", e.intervals}, {"w_max", e.w_max}});
+  nlohmann::json extra = {{"modes", sol.modes},
+                          {"modes_converged", o.modes > 0 ? nlohmann::json("fixed by exact.modes")
+                                                          : nlohmann::json(study.converged)},
+                          {"mode_study", table},
+                          {"impulse_change_last_doubling", study.impulse_change},
+                          {"time_change_last_doubling", study.time_change},
+                          {"struck_point_x", p.x_c},
+                          {"deflection_max", sol.w_max},
+                          {"deflection_max_time", sol.t_w_max},
+                          {"deflection_min", sol.w_min},
+                          {"events", sol.events},
+                          {"pieces", sol.pieces}};
+  r.extra["exact"] = {{"solution",
+                       "rod end-on onto a simply supported Euler-Bernoulli beam: exact rod waves with "
+                       "reflection memory + modal sum, GSL rk8pd, Brent-located events (references.md 2)"},
+                      {"rk8pd_steps", sol.steps},
+                      {"rtol", o.rtol},
+                      {"memory_sample_dt", sol.sample_dt},
+                      {"energy_balance_error", sol.energy_error},
+                      {"energy_columns",
+                       "beam: modal sums; rod: kinetic and strain integrated over its wave field "
+                       "(from the stored reflection memory); the beam's axial motion is not excited"},
+                      {"theory",
+                       "linear, small deformation; the [model] mass/rotary_inertia/kinematics choices "
+                       "do not apply to the continuum"}};
+  return finish_summary(rec, std::move(rows), sol.intervals, sol.impulse, sol.peak_P, sol.first_P,
+                        p.contact_kind, extra);
 }
 
 }  // namespace
@@ -206,8 +211,10 @@ SimulationResult solve(const Scene& scene) {
       if (o.modes < 1) in.fail("modes", "expected a positive number of beam modes");
     } else {
       o.modes_min = in.integer_or("modes_min", o.modes_min, "the first mode count of the convergence study");
-      o.modes_max = in.integer_or("modes_max", o.modes_max, "the largest mode count of the convergence study");
-      o.tol = in.number_or("mode_tolerance", o.tol, "relative change of impulse and contact times per doubling");
+      o.modes_max =
+          in.integer_or("modes_max", o.modes_max, "the largest mode count of the convergence study");
+      o.tol =
+          in.number_or("mode_tolerance", o.tol, "relative change of impulse and contact times per doubling");
       if (o.modes_min < 1 || o.modes_max < o.modes_min)
         in.fail("modes_max", "expected 1 <= modes_min <= modes_max");
       if (!(o.tol > 0.0)) in.fail("mode_tolerance", "expected a positive tolerance");

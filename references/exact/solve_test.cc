@@ -48,7 +48,8 @@ TEST(RunExact, MovingTargetIsSolvedInItsRestFrame) {
   // S1 with B coming head-on at -1 m/s: relative speed 2 m/s, first touch at 0.5 / 2 s, force
   // Z v_rel / 2 = 4 N for 2 L / c = 2 s, impulse 8 N s; equal rods swap velocities (A -1, B +1);
   // the ground-frame energy 2 x 2 J and zero total momentum are kept exactly.
-  const SimulationResult r = exact::solve(load_scene(paper_scene("s1_central"), {"bodies[1].velocity=[-1.0, 0.0]"}));
+  const SimulationResult r =
+      exact::solve(load_scene(paper_scene("s1_central"), {"bodies[1].velocity=[-1.0, 0.0]"}));
   const ContactSummary& c = r.contacts[0];
   ASSERT_EQ(c.intervals.size(), 1u);
   EXPECT_NEAR(c.intervals[0][0], 0.25, 1e-12);
@@ -81,7 +82,7 @@ TEST(RunExact, S2TransverseHonoursContactInvariants) {
     EXPECT_GE(s.gap, -1e-9);
     EXPECT_EQ(s.R * s.gap, 0.0);
     EXPECT_NEAR(row.kinetic + row.strain, 1.0, 1e-7) << row.t;  // m_A v0^2 / 2 = 1 J
-    EXPECT_EQ(s.ub[0], 0.0);  // the beam moves only transversely
+    EXPECT_EQ(s.ub[0], 0.0);                                    // the beam moves only transversely
   }
   // Rod momentum m_A v0 - impulse: its final velocity is 1 - J / 2 (downwards is -y).
   EXPECT_NEAR(r.final_velocity.at("A")[1], -(1.0 - c.impulse_normal / 2.0), 1e-12);

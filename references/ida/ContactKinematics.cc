@@ -22,12 +22,13 @@ void append_scaled(std::vector<DofTerm>& out, const std::vector<DofTerm>& in, do
 
 }  // namespace
 
-double ContactFrame::gap(const Eigen::VectorXd& U) const { return beyond > 0.0 ? beyond : g0 + apply(n_terms, U); }
+double ContactFrame::gap(const Eigen::VectorXd& U) const {
+  return beyond > 0.0 ? beyond : g0 + apply(n_terms, U);
+}
 double ContactFrame::normal_rate(const Eigen::VectorXd& V) const { return apply(n_terms, V); }
 double ContactFrame::tangential_rate(const Eigen::VectorXd& V) const { return apply(t_terms, V); }
 
-ModelContact::ModelContact(const Model& model, const Scene& scene, int contact_index)
-    : model_(model) {
+ModelContact::ModelContact(const Model& model, const Scene& scene, int contact_index) : model_(model) {
   const Contact& c = scene.contacts[contact_index];
   const Body& striker = scene.bodies[c.striker];
   const Body& target = scene.bodies[c.target];

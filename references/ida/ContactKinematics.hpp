@@ -18,12 +18,12 @@ namespace beamimpact::ida {
 
 /// @brief The contact pair's geometry at one displacement state.
 struct ContactFrame {
-  double g0 = 0.0;              ///< m, gap at U = 0: gap = g0 + sum(n_terms . U)
-  std::vector<DofTerm> n_terms; ///< d gap / dU (striker +n, struck point -xi n)
-  std::vector<DofTerm> t_terms; ///< d(relative tangential displacement)/dU (striker +t, target -xi t)
-  int segment = 0;              ///< target element that holds the struck point (sparsity identity)
-  double xi2 = 0.0;             ///< weight of the segment's second node (0 at its first node)
-  double beyond = 0.0;          ///< m, how far the striker is past the target's end (0 over the surface)
+  double g0 = 0.0;               ///< m, gap at U = 0: gap = g0 + sum(n_terms . U)
+  std::vector<DofTerm> n_terms;  ///< d gap / dU (striker +n, struck point -xi n)
+  std::vector<DofTerm> t_terms;  ///< d(relative tangential displacement)/dU (striker +t, target -xi t)
+  int segment = 0;               ///< target element that holds the struck point (sparsity identity)
+  double xi2 = 0.0;              ///< weight of the segment's second node (0 at its first node)
+  double beyond = 0.0;           ///< m, how far the striker is past the target's end (0 over the surface)
 
   /// @brief Gap (m) = g0 + n . U over the surface; past the target's end the surface has ended
   /// and the gap is the distance beyond it (> 0: the contact opens, no phantom surface).
@@ -86,8 +86,8 @@ class ModelContact : public ContactKinematics {
   ContactKind kind_ = ContactKind::kEndToEnd;
   int striker_node_ = 0;
   int target_first_node_ = 0, target_elements_ = 0;
-  double le_ = 0.0;          ///< m, target element length
-  double s_ref_ = 0.0;       ///< m, reference coordinate of the striker node along the target
+  double le_ = 0.0;     ///< m, target element length
+  double s_ref_ = 0.0;  ///< m, reference coordinate of the striker node along the target
   double g0_ = 0.0;
   Vec2 n_{}, t_{};
   double k_elem_ = 0.0;

@@ -44,8 +44,8 @@ void error_handler(int code, const char* module, const char* function, char* msg
 
 void check(int flag, const char* call, const Messages* m = nullptr) {
   if (flag < 0)
-    throw std::runtime_error(std::string("IDA reference: ") + call + " failed: " +
-                             IDAGetReturnFlagName(flag) +
+    throw std::runtime_error(std::string("IDA reference: ") + call +
+                             " failed: " + IDAGetReturnFlagName(flag) +
                              (m && !m->last_error.empty() ? " (" + m->last_error + ")" : ""));
 }
 
@@ -193,9 +193,18 @@ struct PenaltyIda::Impl {
       const ContactFrame f = contacts[i]->evaluate(U);
       const double gap = f.gap(U), trial = laws[i].normal_force(gap, f.normal_rate(V));
       switch (phase[i]) {
-        case Phase::kOpen: g[2 * i] = gap; g[2 * i + 1] = 1.0; break;
-        case Phase::kClosed: g[2 * i] = trial; g[2 * i + 1] = 1.0; break;
-        case Phase::kOpenPenetrated: g[2 * i] = trial; g[2 * i + 1] = gap; break;
+        case Phase::kOpen:
+          g[2 * i] = gap;
+          g[2 * i + 1] = 1.0;
+          break;
+        case Phase::kClosed:
+          g[2 * i] = trial;
+          g[2 * i + 1] = 1.0;
+          break;
+        case Phase::kOpenPenetrated:
+          g[2 * i] = trial;
+          g[2 * i + 1] = gap;
+          break;
       }
     }
   }
@@ -297,13 +306,22 @@ struct PenaltyIda::Impl {
     IdaCounters c = done;
     if (!mem) return c;
     long v = 0;
-    IDAGetNumSteps(mem, &v); c.steps += v;
-    IDAGetNumResEvals(mem, &v); c.residual_evals += v;
-    IDAGetNumJacEvals(mem, &v); c.jacobian_evals += v;
-    IDAGetNumNonlinSolvIters(mem, &v); c.nonlinear_iters += v;
-    IDAGetNumErrTestFails(mem, &v); c.error_test_fails += v;
-    IDAGetNumNonlinSolvConvFails(mem, &v); c.nonlinear_conv_fails += v;
-    if (nc > 0) { IDAGetNumGEvals(mem, &v); c.root_evals += v; }
+    IDAGetNumSteps(mem, &v);
+    c.steps += v;
+    IDAGetNumResEvals(mem, &v);
+    c.residual_evals += v;
+    IDAGetNumJacEvals(mem, &v);
+    c.jacobian_evals += v;
+    IDAGetNumNonlinSolvIters(mem, &v);
+    c.nonlinear_iters += v;
+    IDAGetNumErrTestFails(mem, &v);
+    c.error_test_fails += v;
+    IDAGetNumNonlinSolvConvFails(mem, &v);
+    c.nonlinear_conv_fails += v;
+    if (nc > 0) {
+      IDAGetNumGEvals(mem, &v);
+      c.root_evals += v;
+    }
     c.warnings = messages.warnings;
     return c;
   }
@@ -329,16 +347,16 @@ int root_fn(sunrealtype, N_Vector yy, N_Vector, sunrealtype* g, void* user) {
   return 0;
 }
 
-int jac_fn(sunrealtype, sunrealtype cj, N_Vector yy, N_Vector, N_Vector, SUNMatrix J, void* user,
-           N_Vector, N_Vector, N_Vector) {
+int jac_fn(sunrealtype, sunrealtype cj, N_Vector yy, N_Vector, N_Vector, SUNMatrix J, void* user, N_Vector,
+           N_Vector, N_Vector) {
   return static_cast<PenaltyIda::Impl*>(user)->fill_jacobian(cj, N_VGetArrayPointer(yy), J);
 }
 
 }  // namespace
 
 PenaltyIda::PenaltyIda(const SparseMatrix& M, const SparseMatrix& K, const SparseMatrix& C,
-                       std::vector<const ContactKinematics*> contacts,
-                       std::vector<PenaltyLaw> laws, IdaSettings settings)
+                       std::vector<const ContactKinematics*> contacts, std::vector<PenaltyLaw> laws,
+                       IdaSettings settings)
     : impl_(std::make_unique<Impl>(M, K, C, std::move(contacts), std::move(laws), settings)) {
   if (impl_->laws.size() != impl_->contacts.size())
     throw std::invalid_argument("PenaltyIda: one law per contact");
@@ -434,8 +452,7 @@ void PenaltyIda::advance_to(double t_out, const std::function<void(double)>& on_
       }
       ++I.done.events;
       if (I.done.events > I.settings.max_events)
-        throw std::runtime_error("IDA reference: more than " +
-                                 std::to_string(I.settings.max_events) +
+        throw std::runtime_error("IDA reference: more than " + std::to_string(I.settings.max_events) +
                                  " contact events (endless chatter?)");
       I.reinit(t);
     }
@@ -450,9 +467,7 @@ Eigen::Map<const Eigen::VectorXd> PenaltyIda::U() const {
 Eigen::Map<const Eigen::VectorXd> PenaltyIda::V() const {
   return CMap(N_VGetArrayPointer(impl_->yy) + impl_->n, impl_->n);
 }
-ContactReading PenaltyIda::contact(int i) const {
-  return impl_->read(i, N_VGetArrayPointer(impl_->yy));
-}
+ContactReading PenaltyIda::contact(int i) const { return impl_->read(i, N_VGetArrayPointer(impl_->yy)); }
 
 namespace {
 double quad(const PenaltyIda::Impl& I, int k) { return N_VGetArrayPointer(I.yy)[2 * I.n + k]; }

@@ -27,8 +27,8 @@ enum class IdaLinearSolver { kDense, kKlu };
 
 /// @brief Integration settings.
 struct IdaSettings {
-  double rtol = 1e-8;        ///< relative tolerance
-  double atol = 1e-11;       ///< absolute tolerance (m, m/s, rad, rad/s alike)
+  double rtol = 1e-8;   ///< relative tolerance
+  double atol = 1e-11;  ///< absolute tolerance (m, m/s, rad, rad/s alike)
   IdaLinearSolver linear_solver = IdaLinearSolver::kDense;
   double max_step = 0.0;     ///< s, 0 = IDA's own choice
   long max_events = 100000;  ///< guard against endless chatter
@@ -52,9 +52,9 @@ struct ContactEvent {
 /// @brief The contact forces and kinematics of one pair at the current state.
 struct ContactReading {
   bool closed = false;
-  double R = 0.0, tau = 0.0;      ///< N
+  double R = 0.0, tau = 0.0;                          ///< N
   double gap = 0.0, gap_rate = 0.0, slip_rate = 0.0;  ///< m, m/s, m/s
-  double penalty_energy = 0.0;    ///< J, kn g^2 / 2 while closed
+  double penalty_energy = 0.0;                        ///< J, kn g^2 / 2 while closed
   ContactFrame frame;
 };
 

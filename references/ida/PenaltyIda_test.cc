@@ -54,9 +54,10 @@ TEST(PenaltyIda, TwoMassesElasticDurationAndVelocityExchange) {
   EXPECT_NEAR(ida->impulse_normal(0), tm.m1 * (tm.v0 - v1), 1e-8 * tm.m1 * tm.v0);
   EXPECT_NEAR(ida->dissipated(), 0.0, 1e-12);
   RecordProperty("duration_error", std::to_string(ev[1].t - ev[0].t - duration));
-  std::printf("two masses: duration error %.3e s (of %.6f), v1 error %.3e, v2 error %.3e m/s, "
-              "steps %ld\n", ev[1].t - ev[0].t - duration, duration, ida->V()(0) - v1,
-              ida->V()(1) - v2, ida->counters().steps);
+  std::printf(
+      "two masses: duration error %.3e s (of %.6f), v1 error %.3e, v2 error %.3e m/s, "
+      "steps %ld\n",
+      ev[1].t - ev[0].t - duration, duration, ida->V()(0) - v1, ida->V()(1) - v2, ida->counters().steps);
 }
 
 TEST(PenaltyIda, TwoMassesDampedRestitution) {

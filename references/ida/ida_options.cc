@@ -22,12 +22,11 @@ IdaOptions read_ida_options(const Scene& scene, double dt, double v_scale,
     if (r.has("kn_factor")) r.fail("kn", "give either kn or kn_factor, not both");
     o.kn = positive("kn", r.number("kn", "a positive penalty stiffness (N/m)"));
   } else {
-    o.kn_factor = positive("kn_factor", r.number_or("kn_factor", o.kn_factor,
-                                                   "a positive multiple of EA/le"));
+    o.kn_factor =
+        positive("kn_factor", r.number_or("kn_factor", o.kn_factor, "a positive multiple of EA/le"));
   }
   const int damping_keys = r.has("cn") + r.has("damping_ratio") + r.has("restitution");
-  if (damping_keys > 1)
-    r.fail("cn", "give at most one of cn, damping_ratio and restitution");
+  if (damping_keys > 1) r.fail("cn", "give at most one of cn, damping_ratio and restitution");
   if (r.has("cn")) {
     o.cn = r.number("cn", "a dashpot coefficient >= 0 (N s/m)");
     if (*o.cn < 0.0) r.fail("cn", "expected a number >= 0");
@@ -37,21 +36,21 @@ IdaOptions read_ida_options(const Scene& scene, double dt, double v_scale,
   } else {
     o.restitution = r.number_or("restitution", o.restitution, "a restitution in (0, 1]");
     if (!(o.restitution > 0.0 && o.restitution <= 1.0))
-      r.fail("restitution", "expected a number in (0, 1] (0 needs an infinite dashpot; use a "
-                            "small value such as 0.001)");
+      r.fail("restitution",
+             "expected a number in (0, 1] (0 needs an infinite dashpot; use a "
+             "small value such as 0.001)");
   }
   const double v_reg = 1e-3 * (v_scale > 0.0 ? v_scale : 1.0);
-  o.friction_velocity = positive("friction_velocity",
-                                 r.number_or("friction_velocity", v_reg,
-                                             "a positive regularisation velocity (m/s)"));
+  o.friction_velocity =
+      positive("friction_velocity",
+               r.number_or("friction_velocity", v_reg, "a positive regularisation velocity (m/s)"));
   o.linear_solver = r.choice_or("linear_solver", "auto", {"auto", "dense", "klu"});
   if (r.has("output_step"))
     o.output_step = positive("output_step", r.number("output_step", "a positive output step (s)"));
   o.max_step = r.number_or("max_step", 0.0, "a maximum step (s), 0 for none");
   if (o.max_step < 0.0) r.fail("max_step", "expected a number >= 0");
   // The paper's runs merge phases separated by fewer than 3 open steps: the same in seconds.
-  o.merge_gap = r.number_or("merge_gap", 3.5 * dt,
-                            "a time (s) below which two contact phases are merged");
+  o.merge_gap = r.number_or("merge_gap", 3.5 * dt, "a time (s) below which two contact phases are merged");
   if (o.merge_gap < 0.0) r.fail("merge_gap", "expected a number >= 0");
   r.finish();
   return o;

@@ -17,8 +17,8 @@
 #include <gtest/gtest.h>
 
 #include <beamimpact/ida/solve.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
 #include <beamimpact/paper/solve.hpp>
+#include <beamimpact/testing/test_scenes.hpp>
 
 namespace beamimpact::ida {
 namespace {
@@ -33,9 +33,9 @@ constexpr bool kFull = false;
 
 struct Case {
   const char* scene;
-  double quick_end;                 ///< s, end time of the quick variant
-  std::vector<std::string> extra;   ///< overrides for both methods
-  bool auto_dt;                     ///< dt = fraction x critical (S4)
+  double quick_end;                ///< s, end time of the quick variant
+  std::vector<std::string> extra;  ///< overrides for both methods
+  bool auto_dt;                    ///< dt = fraction x critical (S4)
 };
 
 void PrintTo(const Case& c, std::ostream* os) { *os << c.scene; }
@@ -69,8 +69,10 @@ using Intervals = std::vector<std::array<double, 2>>;
 Intervals merged(const Intervals& in, double gap) {
   Intervals out;
   for (const auto& iv : in)
-    if (!out.empty() && iv[0] - out.back()[1] < gap) out.back()[1] = iv[1];
-    else out.push_back(iv);
+    if (!out.empty() && iv[0] - out.back()[1] < gap)
+      out.back()[1] = iv[1];
+    else
+      out.push_back(iv);
   return out;
 }
 
@@ -116,10 +118,10 @@ TEST_P(IdaVsPaper, AgreeAndConvergeAsPaperDtFalls) {
     const double ds = std::abs(cp.intervals[0][0] - ci.intervals[0][0]);
     const double de = std::abs(cp.intervals[0][1] - ci.intervals[0][1]);
     du = displacement_difference(paper, ida);
-    std::printf("%s dt=%.4e: |dI| %.3e N s (rel %.2e), first interval start %.2e end %.2e s, "
-                "max|du| %.3e m, intervals paper/ida %zu/%zu\n",
-                c.scene, dt, dI, dI / ci.impulse_normal, ds, de, du, cp.intervals.size(),
-                ci.intervals.size());
+    std::printf(
+        "%s dt=%.4e: |dI| %.3e N s (rel %.2e), first interval start %.2e end %.2e s, "
+        "max|du| %.3e m, intervals paper/ida %zu/%zu\n",
+        c.scene, dt, dI, dI / ci.impulse_normal, ds, de, du, cp.intervals.size(), ci.intervals.size());
     // Bounds from the paper's first-order event timing: its closure is detected at the step
     // where the predicted gap turns negative (up to one dt early) and its interval ends at the
     // last step with R > 0, while its forward multiplier releases up to half a step early
@@ -154,16 +156,15 @@ TEST_P(IdaVsPaper, AgreeAndConvergeAsPaperDtFalls) {
   EXPECT_LT(du, first_du / 2);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    PaperScenes, IdaVsPaper,
-    ::testing::Values(Case{"s1_central", 4.0, {}, false},
-                      Case{"s2_transverse", 1.5, {}, false},
-                      Case{"s3_surface_10", 1.5, {}, false},
-                      Case{"s3_surface_20", 1.5, {}, false},
-                      Case{"s4_oblique_90", 0.03, {"model.kinematics=linear"}, true},
-                      Case{"s4_oblique_60", 0.03, {"model.kinematics=linear"}, true},
-                      Case{"s4_oblique_45", 0.03, {"model.kinematics=linear"}, true}),
-    [](const ::testing::TestParamInfo<Case>& i) { return std::string(i.param.scene); });
+INSTANTIATE_TEST_SUITE_P(PaperScenes, IdaVsPaper,
+                         ::testing::Values(Case{"s1_central", 4.0, {}, false},
+                                           Case{"s2_transverse", 1.5, {}, false},
+                                           Case{"s3_surface_10", 1.5, {}, false},
+                                           Case{"s3_surface_20", 1.5, {}, false},
+                                           Case{"s4_oblique_90", 0.03, {"model.kinematics=linear"}, true},
+                                           Case{"s4_oblique_60", 0.03, {"model.kinematics=linear"}, true},
+                                           Case{"s4_oblique_45", 0.03, {"model.kinematics=linear"}, true}),
+                         [](const ::testing::TestParamInfo<Case>& i) { return std::string(i.param.scene); });
 
 }  // namespace
 }  // namespace beamimpact::ida

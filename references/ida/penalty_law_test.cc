@@ -40,7 +40,7 @@ TEST(PenaltyLaw, RestitutionClosedFormMatchesDirectIntegration) {
 }
 
 TEST(PenaltyLaw, RestitutionLimits) {
-  EXPECT_DOUBLE_EQ(restitution_for_damping_ratio(0.0), 1.0);  // undamped: elastic
+  EXPECT_DOUBLE_EQ(restitution_for_damping_ratio(0.0), 1.0);               // undamped: elastic
   EXPECT_NEAR(restitution_for_damping_ratio(1.0), std::exp(-2.0), 1e-12);  // critical
   // Large zeta: q ~ 1/(4 zeta^2), e ~ q: falls like 1/(4 zeta^2).
   EXPECT_NEAR(restitution_for_damping_ratio(100.0) * 4e4, 1.0, 1e-3);

@@ -84,9 +84,13 @@ PenaltyContacts make_penalty_contacts(const Scene& scene, const Model& model, co
     if (!opt.kn) r.assumed[key + "kn"] = str(law.kn) + " N/m (kn_factor x EA/le)";
     r.assumed[key + "cn"] = str(law.cn) + " N s/m (damping ratio " + str(zeta) + ", two-mass restitution " +
                             str(restitution_for_damping_ratio(zeta)) + ", m_red " + str(m_red) + " kg)";
-    pc.extra.push_back({{"kind", to_string(geo.kind())}, {"kn", law.kn}, {"cn", law.cn},
-                        {"damping_ratio", zeta}, {"restitution", restitution_for_damping_ratio(zeta)},
-                        {"reduced_mass", m_red}, {"friction_velocity", law.v_reg},
+    pc.extra.push_back({{"kind", to_string(geo.kind())},
+                        {"kn", law.kn},
+                        {"cn", law.cn},
+                        {"damping_ratio", zeta},
+                        {"restitution", restitution_for_damping_ratio(zeta)},
+                        {"reduced_mass", m_red},
+                        {"friction_velocity", law.v_reg},
                         {"contact_period", M_PI * std::sqrt(m_red / law.kn)}});
     pc.laws.push_back(law);
   }
@@ -122,7 +126,8 @@ class Observer {
 
   ContactState state(int i, const ContactReading& r) const {
     if (!r.closed) return ContactState::kOpen;
-    if (contacts_.laws[i].mu > 0.0 && std::abs(r.slip_rate) > contacts_.laws[i].v_reg) return ContactState::kSlip;
+    if (contacts_.laws[i].mu > 0.0 && std::abs(r.slip_rate) > contacts_.laws[i].v_reg)
+      return ContactState::kSlip;
     return ContactState::kStick;
   }
 
@@ -148,7 +153,8 @@ class Observer {
     }
     row.kinetic = 0.5 * V.dot(model_.M() * V);
     row.strain = 0.5 * U.dot(model_.K() * U);  // + the penalty springs
-    for (int i = 0; i < static_cast<int>(contacts_.laws.size()); ++i) row.strain += ida_.contact(i).penalty_energy;
+    for (int i = 0; i < static_cast<int>(contacts_.laws.size()); ++i)
+      row.strain += ida_.contact(i).penalty_energy;
     row.dissipated = ida_.dissipated();
     row.momentum = momentum(V);
     return row;
@@ -192,7 +198,8 @@ double integrate(const Scene& scene, const IdaOptions& opt, double dt, PenaltyId
                  const Model& model, ResultRecorder& rec) {
   const int nc = static_cast<int>(scene.contacts.size());
   std::vector<DeformedSurface> surfaces;  // the real gap of each contact, from the deformed geometry
-  for (const Contact& c : scene.contacts) surfaces.emplace_back(model, c.target, model.node_id(c.striker, c.node));
+  for (const Contact& c : scene.contacts)
+    surfaces.emplace_back(model, c.target, model.node_id(c.striker, c.node));
   Progress progress("ida", scene.time.end);  // stderr, only on long runs
   auto on_step = [&](double t_prev) {
     progress.update(ida.t());
@@ -207,8 +214,8 @@ double integrate(const Scene& scene, const IdaOptions& opt, double dt, PenaltyId
   const double h = opt.output_step.value_or(dt);
   const long every = opt.output_step ? 1 : scene.time.output_every;
   const long N = step_count(scene, h);
-  rec.result().assumed["ida.output_step"] =
-      str(h * static_cast<double>(every)) + " s" + (opt.output_step ? "" : " (the scene's dt x output_every)");
+  rec.result().assumed["ida.output_step"] = str(h * static_cast<double>(every)) + " s" +
+                                            (opt.output_step ? "" : " (the scene's dt x output_every)");
   for (long p = 1; p <= N; ++p) {
     if (p % every != 0 && p != N) continue;
     ida.advance_to(static_cast<double>(p) * h, on_step);
@@ -264,14 +271,22 @@ SimulationResult solve(const Scene& scene) {
   }
   const IdaCounters c = ida.counters();
   r.steps = c.steps;
-  r.extra["ida"] = {{"rtol", opt.rtol}, {"atol", opt.atol},
+  r.extra["ida"] = {{"rtol", opt.rtol},
+                    {"atol", opt.atol},
                     {"linear_solver", settings.linear_solver == IdaLinearSolver::kDense ? "dense" : "klu"},
-                    {"unknowns", 2 * n}, {"steps", c.steps}, {"residual_evals", c.residual_evals},
-                    {"jacobian_evals", c.jacobian_evals}, {"nonlinear_iters", c.nonlinear_iters},
-                    {"error_test_fails", c.error_test_fails}, {"nonlinear_conv_fails", c.nonlinear_conv_fails},
-                    {"root_evals", c.root_evals}, {"events", c.events},
-                    {"klu_pattern_changes", c.klu_pattern_changes}, {"warnings", c.warnings},
-                    {"output_step", output_step}, {"dissipated", ida.dissipated()},
+                    {"unknowns", 2 * n},
+                    {"steps", c.steps},
+                    {"residual_evals", c.residual_evals},
+                    {"jacobian_evals", c.jacobian_evals},
+                    {"nonlinear_iters", c.nonlinear_iters},
+                    {"error_test_fails", c.error_test_fails},
+                    {"nonlinear_conv_fails", c.nonlinear_conv_fails},
+                    {"root_evals", c.root_evals},
+                    {"events", c.events},
+                    {"klu_pattern_changes", c.klu_pattern_changes},
+                    {"warnings", c.warnings},
+                    {"output_step", output_step},
+                    {"dissipated", ida.dissipated()},
                     {"contacts", contacts.extra}};
 
   // Intervals from the located events, impulses from the quadratures; peaks and stick/slip

@@ -5,16 +5,18 @@
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/testing/test_scenes.hpp>
 #include <beamimpact/record/output_files.hpp>
 #include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/testing/test_scenes.hpp>
 
 namespace beamimpact::ida {
 namespace {
 
 using testing::load_paper_scene;
 
-SimulationResult s1(const std::vector<std::string>& o = {}) { return ida::solve(load_paper_scene("s1_central", o)); }
+SimulationResult s1(const std::vector<std::string>& o = {}) {
+  return ida::solve(load_paper_scene("s1_central", o));
+}
 
 // S1 exact (1D waves, references.md 1): contact [0.5, 2.5] s, impulse rho c A v0/2 x 2L/c = 4 N s.
 constexpr double kExactImpulse = 4.0, kExactStart = 0.5, kExactEnd = 2.5;
@@ -56,8 +58,8 @@ TEST(RunIda, S1ConvergesAsRtolFalls) {
     const SimulationResult r = s1({std::string("ida.rtol=") + rtol});
     const double ei = std::abs(r.contacts[0].impulse_normal - I) / I;
     const double et = std::abs(r.contacts[0].intervals.back()[1] - te);
-    std::printf("S1 rtol %s: impulse %.9f (rel. err %.2e), release %.9f (err %.2e s), %ld steps\n",
-                rtol, r.contacts[0].impulse_normal, ei, r.contacts[0].intervals.back()[1], et, r.steps);
+    std::printf("S1 rtol %s: impulse %.9f (rel. err %.2e), release %.9f (err %.2e s), %ld steps\n", rtol,
+                r.contacts[0].impulse_normal, ei, r.contacts[0].intervals.back()[1], et, r.steps);
     EXPECT_LT(ei, prev_i) << rtol;
     EXPECT_LE(et, prev_t) << rtol;
     prev_i = ei;
@@ -126,7 +128,8 @@ TEST(RunIda, KluMatchesDenseOnASlidingFrictionalContact) {
 TEST(RunIda, FrictionIsBoundedAndDissipative) {
   // S4 at 60 deg: cot(60) = 0.58 > mu = 0.3, the first contact slips (scenes.md).
   const double mu = 0.3;
-  const SimulationResult r = ida::solve(load_paper_scene("s4_oblique_60", {"time.end=0.03", "model.kinematics=linear"}));
+  const SimulationResult r =
+      ida::solve(load_paper_scene("s4_oblique_60", {"time.end=0.03", "model.kinematics=linear"}));
   int closed = 0;
   for (const HistoryRow& row : r.history) {
     const ContactSample& c = row.contacts[0];
@@ -150,7 +153,8 @@ TEST(RunIda, FrictionIsBoundedAndDissipative) {
 TEST(RunIda, S4WithoutSlidingBalancesEnergy) {
   // At 90 deg the struck point does not slide: the balance holds to IDA's tolerance
   // (rtol 1e-8 on a contact dissipating ~900 J: 1e-6 E0 = 8.4e-3 J is generous).
-  const SimulationResult r = ida::solve(load_paper_scene("s4_oblique_90", {"time.end=0.03", "model.kinematics=linear"}));
+  const SimulationResult r =
+      ida::solve(load_paper_scene("s4_oblique_90", {"time.end=0.03", "model.kinematics=linear"}));
   for (const HistoryRow& row : r.history)
     EXPECT_NEAR(row.kinetic + row.strain + row.dissipated, r.energy_initial, 1e-6 * r.energy_initial)
         << row.t;
@@ -162,8 +166,9 @@ TEST(RunIda, FrictionRegularisationConverges) {
   // v_reg = 1e-5 fall with v_reg (the regularised law tends to Coulomb's).
   auto tau_impulse = [](const char* v) {
     return ida::solve(load_paper_scene("s4_oblique_60", {"time.end=0.02", "model.kinematics=linear",
-                                                 std::string("ida.friction_velocity=") + v}))
-        .contacts[0].impulse_tangential;
+                                                         std::string("ida.friction_velocity=") + v}))
+        .contacts[0]
+        .impulse_tangential;
   };
   const double ref = tau_impulse("1e-5");
   double prev = INFINITY;

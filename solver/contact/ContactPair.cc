@@ -29,7 +29,7 @@ ContactPair::ContactPair(const Model& model, const Scene& scene, int index, Surf
   const double L = tb.length();
   const Vec2 axis{(tb.end[0] - tb.start[0]) / L, (tb.end[1] - tb.start[1]) / L};
   const Vec2 rel = sub(xs, tb.start);
-  const double along = dot(rel, axis);                      // m, along the target from its start
+  const double along = dot(rel, axis);                        // m, along the target from its start
   const double across = rel[0] * axis[1] - rel[1] * axis[0];  // m, signed distance from its axis
   const double tol = 1e-9 * L;
   if (std::abs(across) <= tol && (along < -tol || along > L + tol)) {
@@ -65,8 +65,9 @@ ContactPair::ContactPair(const Model& model, const Scene& scene, int index, Surf
   const Vec2 xt{xi1_ * x1[0] + xi2_ * x2[0], xi1_ * x1[1] + xi2_ * x2[1]};
   g0_ = dot(n_, sub(xs, xt));
   if (g0_ < -tol)
-    throw SceneError(scene.file, key, "the striker node penetrates the target at t = 0 (gap " +
-                                          std::to_string(g0_) + " m); expected a gap >= 0");
+    throw SceneError(scene.file, key,
+                     "the striker node penetrates the target at t = 0 (gap " + std::to_string(g0_) +
+                         " m); expected a gap >= 0");
   // Room for the largest row (striker + two target nodes with rotations): no growth while sliding.
   gn_.reserve(8);
   gt_.reserve(8);
@@ -83,7 +84,8 @@ void ContactPair::build_rows() {
     if (xi2_ != 0.0) model_.append_projection(n1 + 1, d, -xi2_, out);
   };
   linear(t_, gt_);
-  if (surface_ == SurfaceInterpolation::kLinear || kind_ == ContactKind::kEndToEnd || model_.dofs_per_node() != 3) {
+  if (surface_ == SurfaceInterpolation::kLinear || kind_ == ContactKind::kEndToEnd ||
+      model_.dofs_per_node() != 3) {
     linear(n_, gn_);
     return;
   }
@@ -93,8 +95,8 @@ void ContactPair::build_rows() {
   const Vec2 p1 = model_.node_position(n1), p2 = model_.node_position(n1 + 1);
   const double L = std::hypot(p2[0] - p1[0], p2[1] - p1[1]);
   const double turn = t_[0] * n_[1] - t_[1] * n_[0];  // +1: n = t turned +90 deg
-  const double H[4] = {1 - 3 * s * s + 2 * s * s * s, L * (s - 2 * s * s + s * s * s), 3 * s * s - 2 * s * s * s,
-                       L * (-s * s + s * s * s)};
+  const double H[4] = {1 - 3 * s * s + 2 * s * s * s, L * (s - 2 * s * s + s * s * s),
+                       3 * s * s - 2 * s * s * s, L * (-s * s + s * s * s)};
   gn_.clear();
   model_.append_projection(striker_, n_, 1.0, gn_);
   for (int k = 0; k < 2; ++k) {
@@ -125,8 +127,14 @@ bool ContactPair::relocate(const Eigen::VectorXd& U) {
     const Vec2 a{p1[0] + u1[0], p1[1] + u1[1]}, b{p2[0] + u2[0], p2[1] + u2[1]};
     const Vec2 ab = sub(b, a);
     const double x = dot(sub(xs, a), ab) / dot(ab, ab);
-    if (x < 0.0 && e > 0) { --e; continue; }
-    if (x > 1.0 && e < target_elements_ - 1) { ++e; continue; }
+    if (x < 0.0 && e > 0) {
+      --e;
+      continue;
+    }
+    if (x > 1.0 && e < target_elements_ - 1) {
+      ++e;
+      continue;
+    }
     on_surface_ = x >= -kSnap && x <= 1.0 + kSnap;
     if (!on_surface_) return false;  // beyond the target's end: keep the end point, carry no force
     const double xi2 = std::clamp(x, 0.0, 1.0);

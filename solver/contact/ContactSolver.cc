@@ -4,12 +4,21 @@
 
 namespace beamimpact::paper {
 
-ContactSolver::ContactSolver(std::vector<ContactPair>& pairs, std::vector<double> mu, bool friction,
-                             int n, std::vector<double> gap_tol, ApplyH apply_H)
-    : pairs_(pairs), mu_(std::move(mu)), friction_(friction), tol_(std::move(gap_tol)), apply_H_(std::move(apply_H)),
-      out_(pairs.size()), hn_(pairs.size(), Eigen::VectorXd::Zero(n)),
-      ht_(friction ? pairs.size() : 0, Eigen::VectorXd::Zero(n)), fresh_(pairs.size(), 0),
-      scratch_(Eigen::VectorXd::Zero(n)), gbar_(pairs.size()), sbar_(pairs.size()), active_(pairs.size()) {}
+ContactSolver::ContactSolver(std::vector<ContactPair>& pairs, std::vector<double> mu, bool friction, int n,
+                             std::vector<double> gap_tol, ApplyH apply_H)
+    : pairs_(pairs),
+      mu_(std::move(mu)),
+      friction_(friction),
+      tol_(std::move(gap_tol)),
+      apply_H_(std::move(apply_H)),
+      out_(pairs.size()),
+      hn_(pairs.size(), Eigen::VectorXd::Zero(n)),
+      ht_(friction ? pairs.size() : 0, Eigen::VectorXd::Zero(n)),
+      fresh_(pairs.size(), 0),
+      scratch_(Eigen::VectorXd::Zero(n)),
+      gbar_(pairs.size()),
+      sbar_(pairs.size()),
+      active_(pairs.size()) {}
 
 void ContactSolver::refresh_response(int c) {
   if (fresh_[c]) return;
@@ -32,7 +41,8 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
     if (out_[c].state != ContactState::kStick && pairs_[c].relocate(Ubar)) fresh_[c] = 0;
     const ContactPair& p = pairs_[c];
     gbar_[c] = p.g0() + ContactPair::eval(p.normal_row(), Ubar);
-    sbar_[c] = friction_ ? ContactPair::eval(p.tangent_row(), Ubar) - ContactPair::eval(p.tangent_row(), U) : 0.0;
+    sbar_[c] =
+        friction_ ? ContactPair::eval(p.tangent_row(), Ubar) - ContactPair::eval(p.tangent_row(), U) : 0.0;
     out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};
     active_[c] = gbar_[c] < -tol_[c] && p.on_surface();
     if (active_[c]) refresh_response(c);

@@ -5,7 +5,9 @@
 namespace beamimpact::paper {
 
 CorotationalMass::CorotationalMass(const Model& model, const InternalForce& fint)
-    : model_(model), fint_(fint), dir_(fint.corotational_elements().size()),
+    : model_(model),
+      fint_(fint),
+      dir_(fint.corotational_elements().size()),
       rotating_body_(model.num_bodies(), 0) {
   // Pattern: the full M plus explicit zeros where rotating elements may put mass at any angle
   // (their 6x6 blocks); values: M minus the rotating elements' reference contribution.
@@ -52,7 +54,8 @@ double CorotationalMass::momentum(int b, int c, const Eigen::VectorXd& V) const 
     const int e = els[k];
     if (model_.elements()[e].body != b) continue;
     const Model::Element& el = model_.elements()[e];
-    const Mat6 Me = to_global(frame_mass_consistent_local(el.rho, el.area, el.length), dir_[k][0], dir_[k][1]);
+    const Mat6 Me =
+        to_global(frame_mass_consistent_local(el.rho, el.area, el.length), dir_[k][0], dir_[k][1]);
     Vec6 r = Vec6::Zero();
     r(c) = r(3 + c) = 1.0;
     const Vec6 mr = Me * r;

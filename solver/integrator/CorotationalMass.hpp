@@ -24,8 +24,8 @@ class CorotationalMass {
  private:
   const Model& model_;
   const InternalForce& fint_;
-  SparseMatrix M_, M_fixed_;              ///< current; non-rotating part (same pattern)
-  std::vector<Vec2> dir_;                  ///< current chord direction of each corotational element
+  SparseMatrix M_, M_fixed_;  ///< current; non-rotating part (same pattern)
+  std::vector<Vec2> dir_;     ///< current chord direction of each corotational element
   std::vector<char> rotating_body_;
 };
 

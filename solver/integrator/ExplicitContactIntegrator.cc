@@ -7,7 +7,8 @@ namespace {
 
 std::vector<ContactPair> make_pairs(const Model& model, const Scene& scene, SurfaceInterpolation surface) {
   std::vector<ContactPair> pairs;
-  for (int c = 0; c < static_cast<int>(scene.contacts.size()); ++c) pairs.emplace_back(model, scene, c, surface);
+  for (int c = 0; c < static_cast<int>(scene.contacts.size()); ++c)
+    pairs.emplace_back(model, scene, c, surface);
   return pairs;
 }
 
@@ -49,7 +50,8 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
     minv_.factorize_pattern(cmass_->M());  // M_A(t) may hold entries the model's M never stored
   }
   const int n = model.size();
-  U_prev_ = U_ = U_next_ = Ubar_ = fc_ = work_ = work2_ = du_ = scratch_ = hwork_ = c_du_ = Eigen::VectorXd::Zero(n);
+  U_prev_ = U_ = U_next_ = Ubar_ = fc_ = work_ = work2_ = du_ = scratch_ = hwork_ = c_du_ =
+      Eigen::VectorXd::Zero(n);
   Vbar_ = V_ = model.initial_velocity();  // no contact force at t = 0: Vbar^0 = V^0
   fint_U_ = fint_next_ = Eigen::VectorXd::Zero(n);
   fint_.apply(U_, fint_U_);
@@ -106,7 +108,8 @@ void ExplicitContactIntegrator::solve_contacts() {
       const double g_prev = pc.g0() + ContactPair::eval(pc.normal_row(), U_prev_);
       dissipated_ -= 0.5 * f.R * (f.gap_next - g_prev);
       if (friction_) {
-        const double s_now = ContactPair::eval(pc.tangent_row(), U_), s_prev = ContactPair::eval(pc.tangent_row(), U_prev_);
+        const double s_now = ContactPair::eval(pc.tangent_row(), U_),
+                     s_prev = ContactPair::eval(pc.tangent_row(), U_prev_);
         dissipated_ -= 0.5 * f.tau * (f.slip_next + s_now - s_prev);
       }
     }

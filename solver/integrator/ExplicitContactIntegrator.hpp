@@ -17,8 +17,8 @@
 #include <beamimpact/contact/ContactSolver.hpp>
 #include <beamimpact/integrator/CorotationalMass.hpp>
 #include <beamimpact/integrator/InternalForce.hpp>
-#include <beamimpact/model/MassSolver.hpp>
 #include <beamimpact/model/Effects.hpp>
+#include <beamimpact/model/MassSolver.hpp>
 
 namespace beamimpact::paper {
 
@@ -91,8 +91,7 @@ class ExplicitContactIntegrator {
   ContactSolver solver_;
   long p_ = 0;
   Eigen::VectorXd U_prev_, U_, U_next_,  // U^{p-1}, U^p, U^{p+1} (rotated by swaps)
-      Vbar_, V_, fint_U_, fint_next_, Ubar_, fc_, work_, work2_,
-      du_, scratch_, hwork_, c_du_;
+      Vbar_, V_, fint_U_, fint_next_, Ubar_, fc_, work_, work2_, du_, scratch_, hwork_, c_du_;
   double dissipated_ = 0.0;
 };
 

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include <beamimpact/paper/solve.hpp>
 #include <beamimpact/scene/scene_io.hpp>
@@ -40,7 +40,8 @@ TEST(S1Central, ImpulseConvergesWithTheMesh) {
   double last_err = 1e9;
   for (int n : {10, 40, 100}) {
     const std::string N = std::to_string(n), dt = std::to_string(0.1 / n);
-    const SimulationResult r = run("s1_central", {"bodies.A.elements=" + N, "bodies.B.elements=" + N, "time.dt=" + dt});
+    const SimulationResult r =
+        run("s1_central", {"bodies.A.elements=" + N, "bodies.B.elements=" + N, "time.dt=" + dt});
     const double err = std::abs(r.contacts[0].impulse_normal - 4.0);
     EXPECT_LT(err, last_err) << n << " elements";
     last_err = err;
@@ -60,7 +61,10 @@ TEST(S1Central, FinalVelocitiesMomentumAndClosureLoss) {
   // it loses 1/2 m_red v_rel^2 = 1/2 * 0.1 * 1^2 = 0.05 J, nothing else is lost at closure.
   const HistoryRow* closure = nullptr;
   for (const HistoryRow& row : r.history)
-    if (row.contacts[0].R > 0) { closure = &row; break; }
+    if (row.contacts[0].R > 0) {
+      closure = &row;
+      break;
+    }
   ASSERT_NE(closure, nullptr);
   EXPECT_NEAR(closure->dissipated, 0.05, 1e-12);
   // And the first-step force carries that impulse: R dt = m_red v_rel.
@@ -145,7 +149,8 @@ TEST(NodeToSurface, LumpedContactForceIsThePapersEq20) {
       // Eq. 20: R = (xi1 Ub_Bj,y + xi2 Ub_Bj+1,y + D0 - Ub_Ai,y) / (dt^2 (H_A + xi1^2 H_Bj + xi2^2 H_Bj+1)),
       // here with y up, A above B, D0 = -g0 and H = 1/m (lumped, undamped).
       const int a = m.equation(pair.striker_node(), 1);
-      const int j = m.equation(m.node_id(1, pair.element()), 1), j1 = m.equation(m.node_id(1, pair.element() + 1), 1);
+      const int j = m.equation(m.node_id(1, pair.element()), 1),
+                j1 = m.equation(m.node_id(1, pair.element() + 1), 1);
       const double x1 = pair.xi1(), x2 = pair.xi2();
       const Eigen::VectorXd& mm = m.lumped_mass();
       const double num = x1 * Ub(j) + x2 * Ub(j1) - pair.g0() - Ub(a);

@@ -27,8 +27,8 @@ InternalForce::InternalForce(const Model& model, const std::vector<bool>& corota
   K_ = &K_linear_;
 }
 
-InternalForce::Local InternalForce::local(int e, const Eigen::VectorXd& U,
-                                          Eigen::Matrix<int, 6, 1>& eq, double x[6]) const {
+InternalForce::Local InternalForce::local(int e, const Eigen::VectorXd& U, Eigen::Matrix<int, 6, 1>& eq,
+                                          double x[6]) const {
   const Model::Element& el = model_.elements()[e];
   eq = model_.element_equations(e);
   for (int i = 0; i < 6; ++i) x[i] = eq(i) >= 0 ? U(eq(i)) : 0.0;

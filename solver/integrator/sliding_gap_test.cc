@@ -31,7 +31,8 @@ struct Located {
 /// Largest |gap| over the steps after which a contact was closed (m), and the number of those
 /// steps in which the contact point had moved since the previous one.
 std::pair<double, int> worst_closed_gap(const std::string& file, const std::vector<std::string>& sets) {
-  const Scene s = load_scene((testing::source_dir() / "verification/scenes" / (file + ".toml")).string(), sets);
+  const Scene s =
+      load_scene((testing::source_dir() / "verification/scenes" / (file + ".toml")).string(), sets);
   const Effects fx = derive_effects(s);
   const Model model(s, fx.bending);
   const double dt = s.time.dt ? *s.time.dt : s.time.fraction * critical_step(model).dt;
@@ -78,8 +79,8 @@ class SlidingGap : public ::testing::TestWithParam<SlideCase> {};
 TEST_P(SlidingGap, ClosedContactLeavesNoGapInTheDeformedPositions) {
   const SlideCase& k = GetParam();
   const auto [worst, moved] = worst_closed_gap(k.file, k.sets);
-  std::printf("%s: worst |gap| of a closed contact %.3e m over %d closed steps with a moved point\n",
-              k.file, worst, moved);
+  std::printf("%s: worst |gap| of a closed contact %.3e m over %d closed steps with a moved point\n", k.file,
+              worst, moved);
   EXPECT_GE(moved, k.min_moved) << "the scene must slide while closed";
   // 1e-11 m: roundoff of positions of order 10 m (1e-15 relative x the ~1e3 steps' accumulation);
   // a stale response column (mutant stale_response) leaves 7.0e-6 m (grazing) / 3.8e-7 m (S4_45).
@@ -89,7 +90,8 @@ TEST_P(SlidingGap, ClosedContactLeavesNoGapInTheDeformedPositions) {
 INSTANTIATE_TEST_SUITE_P(
     Slides, SlidingGap,
     ::testing::Values(SlideCase{"hard/grazing_slide", {"paper.surface=linear"}, 50},
-                      SlideCase{"paper/s4_oblique_45", {"model.kinematics=linear", "paper.surface=linear"}, 10}),
+                      SlideCase{
+                          "paper/s4_oblique_45", {"model.kinematics=linear", "paper.surface=linear"}, 10}),
     [](const ::testing::TestParamInfo<SlideCase>& i) { return std::to_string(i.index); });
 
 }  // namespace

@@ -12,11 +12,11 @@ namespace beamimpact {
 
 /// @brief The effects of a scene after [effects] overrides.
 struct Effects {
-  bool bending = false;       ///< frame elements (3 DOF per node); false: axial rods
-  bool damping = false;       ///< Rayleigh coefficients given (and not forced off)
-  bool friction = false;      ///< some contact has mu > 0 (and not forced off)
-  bool corotational = false;  ///< kinematics = "corotational" and some body can rotate
-  std::vector<bool> rotating; ///< per body: rebuilt every step (corotational only)
+  bool bending = false;        ///< frame elements (3 DOF per node); false: axial rods
+  bool damping = false;        ///< Rayleigh coefficients given (and not forced off)
+  bool friction = false;       ///< some contact has mu > 0 (and not forced off)
+  bool corotational = false;   ///< kinematics = "corotational" and some body can rotate
+  std::vector<bool> rotating;  ///< per body: rebuilt every step (corotational only)
 
   /// @brief Names for summary.json, e.g. {"axial", "bending", "friction"}.
   std::vector<std::string> names() const;

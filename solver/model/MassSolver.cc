@@ -24,15 +24,18 @@ void MassSolver::factorize_pattern(const SparseMatrix& M) {
 
 void MassSolver::refactor(const SparseMatrix& M) {
   if (M.rows() != pattern_rows_ || M.nonZeros() != pattern_nnz_)
-    throw std::logic_error("MassSolver::refactor: the mass has another sparsity pattern than the one analysed; "
-                           "call factorize_pattern() first");
+    throw std::logic_error(
+        "MassSolver::refactor: the mass has another sparsity pattern than the one analysed; "
+        "call factorize_pattern() first");
   ldlt_->factorize(M);
   if (ldlt_->info() != Eigen::Success) throw std::runtime_error("consistent mass matrix became singular");
 }
 
 void MassSolver::apply(const Eigen::VectorXd& in, Eigen::VectorXd& out) const {
-  if (ldlt_) out = ldlt_->solve(in);
-  else out.noalias() = inv_.cwiseProduct(in);
+  if (ldlt_)
+    out = ldlt_->solve(in);
+  else
+    out.noalias() = inv_.cwiseProduct(in);
 }
 
 }  // namespace beamimpact

@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include <beamimpact/model/frame_element.hpp>
-#include <beamimpact/scene/collinear.hpp>
 #include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/scene/collinear.hpp>
 
 namespace beamimpact {
 namespace {
@@ -17,7 +17,6 @@ Vec2 unit_axis(const Body& b) {
 }
 
 }  // namespace
-
 
 Model::Model(const Scene& scene, bool bending)
     : dofs_per_node_(bending ? 3 : 1),
@@ -78,8 +77,10 @@ Model::Model(const Scene& scene, bool bending)
     for (int c = 0; c < 2; ++c) {  // rigid translation along global axis c, in element DOFs
       Eigen::VectorXd r = Eigen::VectorXd::Zero(ne);
       for (int k = 0; k < 2; ++k) {
-        if (dpn == 3) r(3 * k + c) = 1.0;
-        else r(k) = axis_[c];
+        if (dpn == 3)
+          r(3 * k + c) = 1.0;
+        else
+          r(k) = axis_[c];
       }
       const Eigen::VectorXd mr = Me * r;
       for (int i = 0; i < ne; ++i)
@@ -91,8 +92,10 @@ Model::Model(const Scene& scene, bool bending)
         if (eq(j) < 0) continue;
         if (Ke(i, j) != 0.0) kt.emplace_back(eq(i), eq(j), Ke(i, j));
         if (Me(i, j) != 0.0) {
-          if (lumped_) mdiag(eq(i)) += Me(i, j);
-          else mt.emplace_back(eq(i), eq(j), Me(i, j));
+          if (lumped_)
+            mdiag(eq(i)) += Me(i, j);
+          else
+            mt.emplace_back(eq(i), eq(j), Me(i, j));
         }
       }
     }

@@ -103,8 +103,8 @@ class Model {
   double a0_ = 0.0, a1_ = 0.0;
   std::vector<int> body_first_node_, node_body_;
   std::vector<Vec2> node_pos_;
-  std::vector<int> dof_to_eq_;          ///< node * dofs_per_node + c -> equation or -1
-  std::vector<int> free_;               ///< equation -> node * dofs_per_node + c
+  std::vector<int> dof_to_eq_;  ///< node * dofs_per_node + c -> equation or -1
+  std::vector<int> free_;       ///< equation -> node * dofs_per_node + c
   std::vector<Element> elements_;
   std::vector<Vec2> body_velocity_;
   std::vector<double> body_mass_;

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
+#include <Eigen/Eigenvalues>
 
 #include <beamimpact/scene/SceneError.hpp>
 #include <beamimpact/testing/test_scenes.hpp>
@@ -91,14 +91,15 @@ TEST(Model, HigherSimplySupportedModesConverge) {
   const Model m(single(b, MassKind::kLumped), true);
   const Eigen::VectorXd w = omegas(m);
   const double c = std::sqrt(b.E * b.inertia / (b.rho * b.area));
-  for (int k = 1; k <= 3; ++k) EXPECT_NEAR(w(k - 1), std::pow(k * M_PI / 10.0, 2) * c, 5e-3 * std::pow(k * M_PI / 10.0, 2) * c);
+  for (int k = 1; k <= 3; ++k)
+    EXPECT_NEAR(w(k - 1), std::pow(k * M_PI / 10.0, 2) * c, 5e-3 * std::pow(k * M_PI / 10.0, 2) * c);
 }
 
 TEST(Model, FreeRodAxialFrequenciesConvergeSecondOrder) {
   auto err = [](int n) {
     const Model m(single(soft_body("A", {0, 0}, {10, 0}, n), MassKind::kLumped), false);
     const Eigen::VectorXd w = omegas(m);
-    EXPECT_NEAR(w(0), 0.0, 1e-6);  // the rigid mode
+    EXPECT_NEAR(w(0), 0.0, 1e-6);             // the rigid mode
     const double exact = M_PI * 10.0 / 10.0;  // omega_1 = pi c / L, c = 10 m/s
     return std::abs(w(1) - exact) / exact;
   };

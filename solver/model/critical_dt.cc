@@ -78,9 +78,9 @@ CriticalStep critical_step(const Model& model) {
   const double lam = largest_eigenvalue(model, 400, &c.iterations);
   c.omega_max = std::sqrt(std::max(lam, 0.0));
   // Central difference with Rayleigh damping: dt <= 2/omega (sqrt(1 + xi^2) - xi).
-  const double xi = c.omega_max > 0
-                        ? model.rayleigh_mass() / (2 * c.omega_max) + model.rayleigh_stiffness() * c.omega_max / 2
-                        : 0.0;
+  const double xi = c.omega_max > 0 ? model.rayleigh_mass() / (2 * c.omega_max) +
+                                          model.rayleigh_stiffness() * c.omega_max / 2
+                                    : 0.0;
   c.dt = c.omega_max > 0 ? 2.0 / c.omega_max * (std::sqrt(1 + xi * xi) - xi) : 0.0;
   const double lam_e = element_bound(model);
   c.element_bound_dt = lam_e > 0 ? 2.0 / std::sqrt(lam_e) : 0.0;

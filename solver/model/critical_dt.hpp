@@ -12,10 +12,10 @@ namespace beamimpact {
 
 /// @brief The critical step and how it was found.
 struct CriticalStep {
-  double omega_max = 0.0;        ///< rad/s, largest undamped natural frequency (Lanczos)
-  double dt = 0.0;               ///< s, 2/omega_max, reduced by damping when present
-  double element_bound_dt = 0.0; ///< s, 2/max element omega (lumped mass: a lower bound of dt)
-  int iterations = 0;            ///< Lanczos iterations used
+  double omega_max = 0.0;         ///< rad/s, largest undamped natural frequency (Lanczos)
+  double dt = 0.0;                ///< s, 2/omega_max, reduced by damping when present
+  double element_bound_dt = 0.0;  ///< s, 2/max element omega (lumped mass: a lower bound of dt)
+  int iterations = 0;             ///< Lanczos iterations used
 };
 
 /// @brief Computes the critical step of `model`. Lanczos (M-inner product, no reorthogonalisation:

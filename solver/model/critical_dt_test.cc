@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
+#include <Eigen/Eigenvalues>
 
 #include <beamimpact/scene/scene_io.hpp>
 #include <beamimpact/testing/test_scenes.hpp>
@@ -32,7 +32,8 @@ TEST(CriticalStep, LanczosMatchesADenseEigenSolve) {
   // Tolerance 1e-10 relative: Lanczos stops when the top Ritz value is stable to 1e-12.
   for (const char* mass : {"\"lumped\"", "\"consistent\""})
     for (const char* scene : {"s2_transverse", "s3_surface_20", "s4_oblique_60"}) {
-      const Scene s = load_scene(paper_scene(scene), {std::string("model.mass=") + mass, "model.kinematics=\"linear\""});
+      const Scene s =
+          load_scene(paper_scene(scene), {std::string("model.mass=") + mass, "model.kinematics=\"linear\""});
       const Model m(s, true);
       const CriticalStep c = critical_step(m);
       EXPECT_NEAR(c.omega_max, dense_omega_max(m), 1e-10 * c.omega_max) << scene << " " << mass;

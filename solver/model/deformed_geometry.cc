@@ -93,8 +93,14 @@ RealGap DeformedSurface::gap(const Eigen::VectorXd& U) {
       xi = q - step;
       if (std::abs(step) < 1e-14) break;
     }
-    if (xi < 0.0 && k > 0) { --k; continue; }
-    if (xi > 1.0 && k < last) { ++k; continue; }
+    if (xi < 0.0 && k > 0) {
+      --k;
+      continue;
+    }
+    if (xi > 1.0 && k < last) {
+      ++k;
+      continue;
+    }
     hint_ = k;
     r.element = k;
     r.beyond_end = xi < -1e-9 || xi > 1.0 + 1e-9;

@@ -16,10 +16,11 @@ namespace beamimpact {
 
 /// @brief The real gap of one striker node against one target body.
 struct RealGap {
-  double gap = 0.0;         ///< m; > 0 apart, < 0 penetration (signed distance to the deformed centreline)
-  int element = 0;          ///< target element (0-based within the body) of the closest point
-  double xi = 0.0;          ///< position of the closest point along it, 0..1
-  bool beyond_end = false;  ///< a surface contact whose striker is past the target's end (gap = distance to the end)
+  double gap = 0.0;  ///< m; > 0 apart, < 0 penetration (signed distance to the deformed centreline)
+  int element = 0;   ///< target element (0-based within the body) of the closest point
+  double xi = 0.0;   ///< position of the closest point along it, 0..1
+  bool beyond_end =
+      false;  ///< a surface contact whose striker is past the target's end (gap = distance to the end)
 };
 
 /// @brief The deformed centreline of one body and the real gap of points against it.
@@ -40,13 +41,16 @@ class DeformedSurface {
   Vec2 point(const Eigen::VectorXd& U, int e, double xi) const;
 
  private:
-  struct Shape { Vec2 a, c, n; double L, phi1, phi2; };
+  struct Shape {
+    Vec2 a, c, n;
+    double L, phi1, phi2;
+  };
   Shape shape(const Eigen::VectorXd& U, int e) const;
   const Model& model_;
   std::vector<int> elements_;  ///< the body's element indices into model.elements(), in order
   int striker_;
-  double side_ = 1.0;          ///< +1: striker left of the target's axis (reference), -1: right
-  int end_on_ = 0;             ///< 0: surface contact; -1 / +1: end-on at the start / end
+  double side_ = 1.0;  ///< +1: striker left of the target's axis (reference), -1: right
+  int end_on_ = 0;     ///< 0: surface contact; -1 / +1: end-on at the start / end
   int hint_ = 0;
 };
 

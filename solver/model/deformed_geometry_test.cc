@@ -46,7 +46,7 @@ TEST(DeformedGeometry, RigidRotationIsExact) {
   const double a = std::numbers::pi / 6;
   for (int i = 0; i <= 10; ++i) place(m, U, m.node_id(1, i), {i * std::cos(a), i * std::sin(a)}, a);
   DeformedSurface s(m, 1, m.node_id(0, 1));
-  const Vec2 tip{4.3, 2.0};  // A is not moved
+  const Vec2 tip{4.3, 2.0};                                              // A is not moved
   const double expected = -tip[0] * std::sin(a) + tip[1] * std::cos(a);  // left of the rotated axis
   EXPECT_NEAR(s.gap(U).gap, expected, 1e-12);
 }
@@ -76,7 +76,8 @@ TEST(DeformedGeometry, ConstantCurvatureFollowsTheCubicNotTheChord) {
   // measured to the chord (linear interpolation) is off by that much, the cubic's is not.
   const Vec2 a = s.point(U, 4, 0.0), b = s.point(U, 4, 1.0);
   const Vec2 x{4.5 + U(m.equation(tip, 0)), U(m.equation(tip, 1))};
-  const double chord_gap = ((b[0] - a[0]) * (x[1] - a[1]) - (b[1] - a[1]) * (x[0] - a[0])) / std::hypot(b[0] - a[0], b[1] - a[1]);
+  const double chord_gap =
+      ((b[0] - a[0]) * (x[1] - a[1]) - (b[1] - a[1]) * (x[0] - a[0])) / std::hypot(b[0] - a[0], b[1] - a[1]);
   EXPECT_NEAR(chord_gap - h, rho * (1 - std::cos(0.5 / rho)), 1e-6);  // the sagitta
 }
 

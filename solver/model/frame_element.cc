@@ -5,8 +5,7 @@ namespace beamimpact {
 Mat6 frame_stiffness_local(double E, double A, double I, double L) {
   const double ea = E * A / L;
   const double ei = E * I;
-  const double k1 = 12.0 * ei / (L * L * L), k2 = 6.0 * ei / (L * L), k3 = 4.0 * ei / L,
-               k4 = 2.0 * ei / L;
+  const double k1 = 12.0 * ei / (L * L * L), k2 = 6.0 * ei / (L * L), k3 = 4.0 * ei / L, k4 = 2.0 * ei / L;
   Mat6 k;
   // clang-format off
   k <<  ea,   0,   0, -ea,   0,   0,

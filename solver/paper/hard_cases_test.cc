@@ -57,7 +57,6 @@ TEST(HardCases, ContactPushedIntoPenetrationByAnotherClosesInTheSameStep) {
   EXPECT_GT(r.contacts[1].impulse_normal, 0.0) << "B must be pushed into C in this scene";
 }
 
-
 // The gap tolerance belongs to each contact (1e-10 of its elements' size), not to the scene: a
 // 2 km body that takes no part in any contact must not change S4-45's contacts. dt is fixed
 // (4e-5 s, about the scene's automatic step) so that only the tolerance can differ. Before the
@@ -86,10 +85,12 @@ TEST(HardCases, AnUnrelatedBodyDoesNotChangeTheContacts) {
 // booked as du C du / dt at the half-step velocity and fell 7.7 % short (theory for one damped
 // mass: sum of x (1 - x/2)^2 r^(2p) = 0.923 of E0 with x = a0 dt = 0.5, r = 1 - x + x^2/2).
 TEST(HardCases, HeavyDampingWorkIsBookedExactly) {
-  const SimulationResult r = solve(load_scene(testing::paper_scene("s1_central"), {"model.rayleigh_mass=50.0", "time.end=0.45"}));
+  const SimulationResult r =
+      solve(load_scene(testing::paper_scene("s1_central"), {"model.rayleigh_mass=50.0", "time.end=0.45"}));
   double worst = 0.0;
   for (const HistoryRow& row : r.history)
-    worst = std::max(worst, std::abs(row.kinetic + row.strain + row.dissipated - r.energy_initial) / r.energy_initial);
+    worst = std::max(
+        worst, std::abs(row.kinetic + row.strain + row.dissipated - r.energy_initial) / r.energy_initial);
   EXPECT_LT(worst, 1e-12);
   EXPECT_LT(r.history.back().kinetic, 1e-6 * r.energy_initial);  // damped to rest: the test is not empty
 }
@@ -99,14 +100,16 @@ TEST(HardCases, HeavyDampingWorkIsBookedExactly) {
 /// The smallest real gap of contact c over the run (m), computed here at every step from the
 /// integrator's U with the target's own interpolation (model/deformed_geometry), not from the
 /// solver's contact rows.
-double worst_real_gap(const std::string& scene_file, const std::vector<std::string>& sets, std::size_t c = 0) {
+double worst_real_gap(const std::string& scene_file, const std::vector<std::string>& sets,
+                      std::size_t c = 0) {
   const Scene s = load_scene(scene_file, sets);
   const Effects fx = derive_effects(s);
   const Model model(s, fx.bending);
   const double dt = s.time.dt ? *s.time.dt : 0.5 * critical_step(model).dt;
   const Options o = Options::read(s, nullptr);
   ExplicitContactIntegrator in(model, effective_scene(s, fx), fx, dt, o.surface);
-  DeformedSurface surface(model, s.contacts[c].target, model.node_id(s.contacts[c].striker, s.contacts[c].node));
+  DeformedSurface surface(model, s.contacts[c].target,
+                          model.node_id(s.contacts[c].striker, s.contacts[c].node));
   double worst = 1e300;
   const long N = static_cast<long>(std::ceil(s.time.end / dt - 1e-9));
   for (long p = 0; p <= N; ++p) {
@@ -126,9 +129,10 @@ class RealGap : public ::testing::TestWithParam<RealGapCase> {};
 
 TEST_P(RealGap, NeverPenetratesBeyondTheGeometricBound) {
   const RealGapCase& k = GetParam();
-  const std::string file = std::string(k.scene).find('/') != std::string::npos
-                               ? (testing::source_dir() / "verification/scenes" / (std::string(k.scene) + ".toml")).string()
-                               : testing::paper_scene(k.scene);
+  const std::string file =
+      std::string(k.scene).find('/') != std::string::npos
+          ? (testing::source_dir() / "verification/scenes" / (std::string(k.scene) + ".toml")).string()
+          : testing::paper_scene(k.scene);
   const double worst = worst_real_gap(file, {});
   std::printf("%s: worst real gap %.3e m (bound %.1e m)\n", k.scene, worst, k.tol);
   EXPECT_GT(worst, -k.tol) << k.why;
@@ -142,15 +146,24 @@ TEST_P(RealGap, NeverPenetratesBeyondTheGeometricBound) {
 INSTANTIATE_TEST_SUITE_P(
     PaperScenes, RealGap,
     ::testing::Values(
-        RealGapCase{"s2_transverse", 1e-9, "node-to-node: the closed gap is the real one at the node (measured 3.5e-16 m)"},
-        RealGapCase{"s3_surface_10", 1e-9, "mid-element strike, symmetric bending: the cubic passes through the chord point (measured 3.5e-16 m)"},
-        RealGapCase{"s3_surface_20", 1e-5, "node strike, but the second impact lands after the striker slid: slope x offset (measured 2.2e-6 m of a 1.5 m deflection)"},
+        RealGapCase{"s2_transverse", 1e-9,
+                    "node-to-node: the closed gap is the real one at the node (measured 3.5e-16 m)"},
+        RealGapCase{"s3_surface_10", 1e-9,
+                    "mid-element strike, symmetric bending: the cubic passes through the chord point "
+                    "(measured 3.5e-16 m)"},
+        RealGapCase{"s3_surface_20", 1e-5,
+                    "node strike, but the second impact lands after the striker slid: slope x offset "
+                    "(measured 2.2e-6 m of a 1.5 m deflection)"},
         RealGapCase{"s4_oblique_90", 1e-9, "node-to-node, normal impact (measured 1e-18 m)"},
-        RealGapCase{"s4_oblique_45", 5e-5, "sliding with friction on a bent steel beam: slope x slide (measured 1.3e-5 m, 0.2 % of the 7 mm deflection)"},
-        RealGapCase{"hard/grazing_slide", 5e-6, "a 1.5 m slide across a node on the Hermite surface (measured 6.8e-7 m)"}),
+        RealGapCase{"s4_oblique_45", 5e-5,
+                    "sliding with friction on a bent steel beam: slope x slide (measured 1.3e-5 m, 0.2 % of "
+                    "the 7 mm deflection)"},
+        RealGapCase{"hard/grazing_slide", 5e-6,
+                    "a 1.5 m slide across a node on the Hermite surface (measured 6.8e-7 m)"}),
     [](const ::testing::TestParamInfo<RealGapCase>& i) {
       std::string n = i.param.scene;
-      for (char& ch : n) if (ch == '/') ch = '_';
+      for (char& ch : n)
+        if (ch == '/') ch = '_';
       return n;
     });
 

@@ -36,15 +36,17 @@ double choose_dt(const Scene& scene, const CriticalStep& cs, SimulationResult& r
 /// a number of open steps of this run.
 void set_merge_rule(const Options& o, double dt, ResultRecorder& rec) {
   if (o.merge_gap > 0.0) {
-    rec.set_merge_rule(o.merge_gap, fmt::format("contact phases separated by less than {:.6g} s are merged; an "
-                                                "interval runs from its first to its last step with R > 0",
-                                                o.merge_gap));
+    rec.set_merge_rule(o.merge_gap,
+                       fmt::format("contact phases separated by less than {:.6g} s are merged; an "
+                                   "interval runs from its first to its last step with R > 0",
+                                   o.merge_gap));
     return;
   }
-  rec.set_merge_rule((static_cast<double>(o.merge_steps) + 0.5) * dt,
-                     fmt::format("contact phases separated by fewer than {} open steps ({:.6g} s) are merged; "
-                                 "an interval runs from its first to its last step with R > 0",
-                                 o.merge_steps, static_cast<double>(o.merge_steps) * dt));
+  rec.set_merge_rule(
+      (static_cast<double>(o.merge_steps) + 0.5) * dt,
+      fmt::format("contact phases separated by fewer than {} open steps ({:.6g} s) are merged; "
+                  "an interval runs from its first to its last step with R > 0",
+                  o.merge_steps, static_cast<double>(o.merge_steps) * dt));
 }
 
 HistoryRow make_row(const ExplicitContactIntegrator& in) {
@@ -74,9 +76,10 @@ HistoryRow make_row(const ExplicitContactIntegrator& in) {
 }
 
 /// Records the complete step p: contact samples and real gaps every step, a row every
-/// output_every-th step and at the last one. Throws when the energy is no longer finite or has grown 1e6-fold.
-void record_step(const ExplicitContactIntegrator& integ, long p, long N, const Scene& scene, double critical_dt,
-                 std::vector<DeformedSurface>& surfaces, ResultRecorder& rec) {
+/// output_every-th step and at the last one. Throws when the energy is no longer finite or has grown
+/// 1e6-fold.
+void record_step(const ExplicitContactIntegrator& integ, long p, long N, const Scene& scene,
+                 double critical_dt, std::vector<DeformedSurface>& surfaces, ResultRecorder& rec) {
   for (std::size_t c = 0; c < integ.forces().size(); ++c) {
     const ContactForce& f = integ.forces()[c];
     rec.sample(c, integ.time(), f.R, f.tau, integ.dt(), f.state);
@@ -89,7 +92,8 @@ void record_step(const ExplicitContactIntegrator& integ, long p, long N, const S
   if (!std::isfinite(E) || E > 1e6 * E0 + 1e-300)
     throw std::runtime_error(fmt::format(
         "the run diverged at t = {:.6g} s (energy {:.3g} J from {:.3g} J) with dt = {:.6g} s, critical "
-        "step {:.6g} s", row.t, E, E0, integ.dt(), critical_dt));
+        "step {:.6g} s",
+        row.t, E, E0, integ.dt(), critical_dt));
   rec.track_momentum(row.momentum);
   rec.add_row(std::move(row));
 }
@@ -104,8 +108,9 @@ Options Options::read(const Scene& scene, std::map<std::string, std::string>* as
   if (o.merge_steps < 0) in.fail("merge_steps", "expected a whole number of steps >= 0");
   o.merge_gap = in.number_or("merge_gap", o.merge_gap, "a time >= 0 (s); 0 = use merge_steps");
   if (o.merge_gap < 0.0) in.fail("merge_gap", "expected a time >= 0 (s)");
-  o.surface = in.choice_or("surface", "linear", {"linear", "hermite"}) == "linear" ? SurfaceInterpolation::kLinear
-                                                                                  : SurfaceInterpolation::kHermite;
+  o.surface = in.choice_or("surface", "linear", {"linear", "hermite"}) == "linear"
+                  ? SurfaceInterpolation::kLinear
+                  : SurfaceInterpolation::kHermite;
   in.finish();
   return o;
 }
@@ -128,7 +133,8 @@ SimulationResult solve(const Scene& scene_in) {
 
   ExplicitContactIntegrator integ(model, scene, effects, r.dt, options.surface);
   std::vector<DeformedSurface> surfaces;  // the real gap of each contact, from the deformed geometry
-  for (const Contact& c : scene.contacts) surfaces.emplace_back(model, c.target, model.node_id(c.striker, c.node));
+  for (const Contact& c : scene.contacts)
+    surfaces.emplace_back(model, c.target, model.node_id(c.striker, c.node));
   Progress progress("paper", scene.time.end);
   for (long p = 0;; ++p) {
     record_step(integ, p, N, scene, cs.dt, surfaces, rec);
@@ -141,7 +147,8 @@ SimulationResult solve(const Scene& scene_in) {
     rec.set_final_velocity(scene.bodies[b].name, {integ.momentum(b, 0) / model.body_mass(b),
                                                   integ.momentum(b, 1) / model.body_mass(b)});
   r.extra["critical_step"] = {{"method", "Lanczos on the sparse M^-1 K (M-inner product)"},
-                              {"omega_max", cs.omega_max}, {"lanczos_iterations", cs.iterations},
+                              {"omega_max", cs.omega_max},
+                              {"lanczos_iterations", cs.iterations},
                               {"element_bound_dt", cs.element_bound_dt},
                               {"dt_over_critical", r.dt / cs.dt}};
   r.extra["dofs"] = model.size();
@@ -149,7 +156,8 @@ SimulationResult solve(const Scene& scene_in) {
   std::vector<ContactKind> kinds;
   for (const ContactPair& pair : integ.pairs()) kinds.push_back(pair.kind());
   SimulationResult result = rec.finish(kinds);
-  for (std::size_t c = 0; c < scene.contacts.size(); ++c) result.contacts[c].friction = scene.contacts[c].friction;  // as applied
+  for (std::size_t c = 0; c < scene.contacts.size(); ++c)
+    result.contacts[c].friction = scene.contacts[c].friction;  // as applied
   return result;
 }
 

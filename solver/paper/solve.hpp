@@ -12,8 +12,8 @@ namespace beamimpact::paper {
 
 /// @brief The scene's [paper] table, read and validated in one place.
 struct Options {
-  long merge_steps = 3;   ///< contact phases separated by fewer open steps than this are one interval
-  double merge_gap = 0.0; ///< s; when > 0, phases closer than this are merged instead (dt-independent)
+  long merge_steps = 3;    ///< contact phases separated by fewer open steps than this are one interval
+  double merge_gap = 0.0;  ///< s; when > 0, phases closer than this are merged instead (dt-independent)
   SurfaceInterpolation surface = SurfaceInterpolation::kLinear;  ///< "linear" (paper) or "hermite"
 
   /// @brief Reads [paper] of `scene`; defaults not given are recorded in `assumed`. Throws

@@ -16,7 +16,6 @@ namespace {
 using testing::hard_scene;
 using testing::paper_scene;
 
-
 SimulationResult s4(int angle, const std::vector<std::string>& sets = {}) {
   return paper::solve(load_scene(paper_scene("s4_oblique_" + std::to_string(angle)), sets));
 }
@@ -55,8 +54,8 @@ TEST(Intervals, MergeGapInSecondsMakesCountsIndependentOfDt) {
   // verification/compare/impact_counts_test.cc; here only the merge rule's property.
   const std::size_t seconds_coarse = impacts({"time.dt=0.01", "paper.merge_gap=0.03"});
   EXPECT_EQ(impacts({"time.dt=0.0025", "paper.merge_gap=0.03"}), seconds_coarse);
-  EXPECT_EQ(impacts({"time.dt=0.01"}), seconds_coarse);            // 3 steps = 0.03 s at dt = 0.01
-  EXPECT_EQ(impacts({"time.dt=0.0025"}), seconds_coarse + 1);      // 3 steps = 0.0075 s: the bounce counts
+  EXPECT_EQ(impacts({"time.dt=0.01"}), seconds_coarse);        // 3 steps = 0.03 s at dt = 0.01
+  EXPECT_EQ(impacts({"time.dt=0.0025"}), seconds_coarse + 1);  // 3 steps = 0.0075 s: the bounce counts
 }
 
 // ---- dt near the stability limit ------------------------------------------------------------
@@ -67,10 +66,12 @@ TEST(StabilityLimit, RunsStayStableJustBelowTheCriticalStep) {
   // conserved discrete energy by about (omega dt)^2/8 of the high-mode content, omega_max dt = 1.96
   // here, and the closures put a few % of E0 there (measured 1.5-2.8 %).
   for (const char* scene : {"s1_central", "s2_transverse", "s4_oblique_45", "s4_oblique_90"}) {
-    const SimulationResult r = paper::solve(load_scene(paper_scene(scene), {"time.dt=\"auto\"", "time.fraction=0.98"}));
+    const SimulationResult r =
+        paper::solve(load_scene(paper_scene(scene), {"time.dt=\"auto\"", "time.fraction=0.98"}));
     EXPECT_NEAR(r.history.back().t, load_scene(paper_scene(scene)).time.end, r.dt) << scene;
     for (const HistoryRow& row : r.history) {
-      ASSERT_LE(row.kinetic + row.strain + row.dissipated, 1.05 * r.energy_initial) << scene << " t=" << row.t;
+      ASSERT_LE(row.kinetic + row.strain + row.dissipated, 1.05 * r.energy_initial)
+          << scene << " t=" << row.t;
       ASSERT_GE(row.contacts[0].R, 0.0);
     }
   }
@@ -80,9 +81,10 @@ TEST(StabilityLimit, AtTheLimitTheEnergyStaysBounded) {
   // At 0.999 of the critical step (Courant 0.999 for S1's rods) the release excites the highest
   // mode and the physical-velocity energy swings (method.md), but stays bounded over 20 contact
   // durations: no exponential growth. Measured max 1.6 E0 at 4 s, 1.1 E0 at 80 s.
-  const SimulationResult r = paper::solve(load_scene(paper_scene("s1_central"),
-                                           {"time.dt=\"auto\"", "time.fraction=0.999", "time.end=80"}));
-  for (const HistoryRow& row : r.history) ASSERT_LE(row.kinetic + row.strain, 2.0 * r.energy_initial) << row.t;
+  const SimulationResult r = paper::solve(
+      load_scene(paper_scene("s1_central"), {"time.dt=\"auto\"", "time.fraction=0.999", "time.end=80"}));
+  for (const HistoryRow& row : r.history)
+    ASSERT_LE(row.kinetic + row.strain, 2.0 * r.energy_initial) << row.t;
 }
 
 // ---- Friction bounds on S4 ----------------------------------------------------------------------
@@ -206,7 +208,8 @@ TEST_P(S4Kinematics, LinearAndCorotationalAgree) {
     const SimulationResult lin = s4(a, {"model.kinematics=linear", mass}), cr = s4(a, {mass});
     EXPECT_NEAR(max_deflection(cr), max_deflection(lin), 0.01 * max_deflection(lin)) << a;
     EXPECT_NEAR(cr.contacts[0].peak_R_excluding_closure, lin.contacts[0].peak_R_excluding_closure,
-                0.01 * lin.contacts[0].peak_R_excluding_closure) << a;
+                0.01 * lin.contacts[0].peak_R_excluding_closure)
+        << a;
   }
 }
 
@@ -224,12 +227,16 @@ TEST(AxisAligned, ConsistentMassWithCorotationalStrikerAgreesWithLinear) {
     lin.push_back("model.kinematics=linear");
     cr.push_back("model.kinematics=corotational");
     if (scene == "s2_transverse") {  // 1.2 s covers S2's first impact at dt = 0.005
-      for (auto* v : {&lin, &cr}) { (*v)[1] = "time.end=1.2"; v->push_back("time.dt=0.005"); }
+      for (auto* v : {&lin, &cr}) {
+        (*v)[1] = "time.end=1.2";
+        v->push_back("time.dt=0.005");
+      }
     }
     const SimulationResult a = paper::solve(load_scene(paper_scene(scene), lin));
     const SimulationResult b = paper::solve(load_scene(paper_scene(scene), cr));
     ASSERT_GT(a.contacts[0].impulse_normal, 0.0) << scene;
-    EXPECT_NEAR(b.contacts[0].impulse_normal, a.contacts[0].impulse_normal, 0.01 * a.contacts[0].impulse_normal)
+    EXPECT_NEAR(b.contacts[0].impulse_normal, a.contacts[0].impulse_normal,
+                0.01 * a.contacts[0].impulse_normal)
         << scene;
     EXPECT_NEAR(max_deflection(b), max_deflection(a), 0.01 * max_deflection(a)) << scene;
   }
@@ -300,7 +307,8 @@ TEST(GrazingSlide, CrossingAnElementBoundaryKeepsTheForceSmooth) {
     if (row.contacts[0].R > 0) x_min = std::min(x_min, 5.3 + row.contacts[0].ua[0]);
   EXPECT_LT(x_min, 4.9);  // it did cross the node at x = 5 while in contact
   EXPECT_LT(worst_spike(r), 0.02 * r.contacts[0].peak_R);
-  const SimulationResult linear = paper::solve(load_scene(hard_scene("grazing_slide"), {"paper.surface=linear"}));
+  const SimulationResult linear =
+      paper::solve(load_scene(hard_scene("grazing_slide"), {"paper.surface=linear"}));
   EXPECT_GT(worst_spike(linear), 0.05 * linear.contacts[0].peak_R);  // the kink the option removes
   // Energy balance through the crossing (frictionless: only closures dissipate); same bound and
   // reason as for S4 (the physical-velocity energy), measured 0.25 % of E0.

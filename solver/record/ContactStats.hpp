@@ -24,7 +24,9 @@ class ContactStats {
   void fill(ContactSummary& s) const;
 
  private:
-  struct Interval { double start, end, peak_after_closure, closure_R; };
+  struct Interval {
+    double start, end, peak_after_closure, closure_R;
+  };
   double merge_gap_;
   std::string rule_;
   std::vector<Interval> intervals_;

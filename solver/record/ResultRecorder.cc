@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <tuple>
 #include <stdexcept>
+#include <tuple>
 
 namespace beamimpact {
 

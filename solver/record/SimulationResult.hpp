@@ -16,56 +16,56 @@ namespace beamimpact {
 
 /// @brief One contact's columns of one history row (SI units, global axes).
 struct ContactSample {
-  double R = 0.0;       ///< N, normal force, >= 0 compressive
-  double tau = 0.0;     ///< N, tangential force on the striker along the target tangent
-  double gap = 0.0;     ///< m, normal gap (after the step R acts on, for the paper's scheme)
-  Vec2 ua{}, va{};      ///< striker contact node displacement (m) and velocity (m/s)
-  Vec2 ub{}, vb{};      ///< struck point on the target: displacement (m) and velocity (m/s)
+  double R = 0.0;    ///< N, normal force, >= 0 compressive
+  double tau = 0.0;  ///< N, tangential force on the striker along the target tangent
+  double gap = 0.0;  ///< m, normal gap (after the step R acts on, for the paper's scheme)
+  Vec2 ua{}, va{};   ///< striker contact node displacement (m) and velocity (m/s)
+  Vec2 ub{}, vb{};   ///< struck point on the target: displacement (m) and velocity (m/s)
   ContactState state = ContactState::kOpen;
 };
 
 /// @brief One row of history.csv.
 struct HistoryRow {
-  double t = 0.0;                        ///< s
-  std::vector<ContactSample> contacts;   ///< one per scene contact, in scene order
-  double kinetic = 0.0, strain = 0.0;    ///< J, totals over all bodies
-  double dissipated = 0.0;               ///< J, cumulative: closures, friction, damping
-  Vec2 momentum{};                       ///< N s, total linear momentum
+  double t = 0.0;                       ///< s
+  std::vector<ContactSample> contacts;  ///< one per scene contact, in scene order
+  double kinetic = 0.0, strain = 0.0;   ///< J, totals over all bodies
+  double dissipated = 0.0;              ///< J, cumulative: closures, friction, damping
+  Vec2 momentum{};                      ///< N s, total linear momentum
 };
 
 /// @brief Per-contact scalars of summary.json ("contacts" array).
 struct ContactSummary {
   std::string striker, target;
   ContactKind kind = ContactKind::kEndToEnd;
-  double friction = 0.0;                    ///< Coulomb mu the method applied
+  double friction = 0.0;                         ///< Coulomb mu the method applied
   std::vector<std::array<double, 2>> intervals;  ///< s, [start, end] of each contact interval
-  std::string merge_rule;                   ///< how chatter was merged into intervals
-  double impulse_normal = 0.0;              ///< N s
-  double impulse_tangential = 0.0;          ///< N s
-  double peak_R = 0.0;                      ///< N, including closure steps
-  double peak_R_excluding_closure = 0.0;    ///< N, first step of each interval left out
-  double first_step_R = 0.0;                ///< N, the closure step of the first interval
+  std::string merge_rule;                        ///< how chatter was merged into intervals
+  double impulse_normal = 0.0;                   ///< N s
+  double impulse_tangential = 0.0;               ///< N s
+  double peak_R = 0.0;                           ///< N, including closure steps
+  double peak_R_excluding_closure = 0.0;         ///< N, first step of each interval left out
+  double first_step_R = 0.0;                     ///< N, the closure step of the first interval
   long stick_steps = 0, slip_steps = 0;
-  double real_gap_min = 0.0;                ///< m, smallest real gap (deformed geometry; < 0: penetration)
-  double real_gap_min_time = 0.0;           ///< s, when it occurred
+  double real_gap_min = 0.0;       ///< m, smallest real gap (deformed geometry; < 0: penetration)
+  double real_gap_min_time = 0.0;  ///< s, when it occurred
   nlohmann::json extra = nlohmann::json::object();  ///< method-specific keys
 };
 
 /// @brief Everything one run produced.
 struct SimulationResult {
-  std::string method;                       ///< the registry name: "paper" | "ida" | "exact"
-  std::string contact_sampling;             ///< how contacts were sampled (ResultRecorder::describe)
-  double dt = 0.0;                          ///< s, the step (nominal output step for adaptive methods)
-  double critical_dt = 0.0;                 ///< s, 0 when not applicable
-  long steps = 0;                           ///< time steps taken
+  std::string method;            ///< the registry name: "paper" | "ida" | "exact"
+  std::string contact_sampling;  ///< how contacts were sampled (ResultRecorder::describe)
+  double dt = 0.0;               ///< s, the step (nominal output step for adaptive methods)
+  double critical_dt = 0.0;      ///< s, 0 when not applicable
+  long steps = 0;                ///< time steps taken
   double wall_seconds = 0.0;
-  std::vector<std::string> effects;         ///< e.g. {"axial"} or {"axial", "bending", "friction"}
+  std::vector<std::string> effects;            ///< e.g. {"axial"} or {"axial", "bending", "friction"}
   std::map<std::string, std::string> assumed;  ///< method-level defaults (merged with the scene's)
-  std::vector<HistoryRow> history;          ///< rows to write, already thinned by output_every
+  std::vector<HistoryRow> history;             ///< rows to write, already thinned by output_every
   std::vector<ContactSummary> contacts;
-  std::map<std::string, Vec2> final_velocity;  ///< body name -> centre-of-mass velocity, m/s
+  std::map<std::string, Vec2> final_velocity;       ///< body name -> centre-of-mass velocity, m/s
   double energy_initial = 0.0, energy_final = 0.0;  ///< J, kinetic + strain
-  double momentum_drift_max = 0.0;          ///< N s, max |p(t) - p(0)| (meaningful for free bodies)
+  double momentum_drift_max = 0.0;                  ///< N s, max |p(t) - p(0)| (meaningful for free bodies)
   nlohmann::json extra = nlohmann::json::object();  ///< method-specific top-level keys
 };
 

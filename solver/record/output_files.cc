@@ -6,16 +6,18 @@
 
 #include <fmt/format.h>
 
-#include <beamimpact/version.hpp>
 #include <beamimpact/util/write_file_atomic.hpp>
+#include <beamimpact/version.hpp>
 
 namespace beamimpact {
 namespace {
 
 void append(fmt::memory_buffer& b, double v, const char* name, double t) {
   if (!std::isfinite(v))
-    throw std::runtime_error(fmt::format("non-finite value of '{}' at t = {} s: the run diverged "
-                                         "(a dt above the stability limit?)", name, t));
+    throw std::runtime_error(
+        fmt::format("non-finite value of '{}' at t = {} s: the run diverged "
+                    "(a dt above the stability limit?)",
+                    name, t));
   fmt::format_to(std::back_inserter(b), ",{}", v);
 }
 
@@ -33,39 +35,69 @@ nlohmann::json summary_json(const Scene& scene, const SimulationResult& r) {
   for (const auto& [name, v] : r.final_velocity) bodies[name]["final_velocity"] = {v[0], v[1]};
   json contacts = json::array();
   for (const ContactSummary& c : r.contacts) {
-    json j = {{"striker", c.striker}, {"target", c.target}, {"kind", to_string(c.kind)}, {"friction", c.friction},
-              {"intervals", c.intervals}, {"impacts", c.intervals.size()},
-              {"merge_rule", c.merge_rule}, {"impulse_normal", c.impulse_normal},
-              {"impulse_tangential", c.impulse_tangential}, {"peak_R", c.peak_R},
+    json j = {{"striker", c.striker},
+              {"target", c.target},
+              {"kind", to_string(c.kind)},
+              {"friction", c.friction},
+              {"intervals", c.intervals},
+              {"impacts", c.intervals.size()},
+              {"merge_rule", c.merge_rule},
+              {"impulse_normal", c.impulse_normal},
+              {"impulse_tangential", c.impulse_tangential},
+              {"peak_R", c.peak_R},
               {"peak_R_excluding_closure", c.peak_R_excluding_closure},
-              {"first_step_R", c.first_step_R}, {"stick_steps", c.stick_steps},
-              {"slip_steps", c.slip_steps}, {"real_gap_min", c.real_gap_min},
+              {"first_step_R", c.first_step_R},
+              {"stick_steps", c.stick_steps},
+              {"slip_steps", c.slip_steps},
+              {"real_gap_min", c.real_gap_min},
               {"real_gap_min_time", c.real_gap_min_time}};
     j.update(c.extra);
     contacts.push_back(j);
   }
-  json settings = {
-      {"time", {{"dt", scene.time.dt ? json(*scene.time.dt) : json("auto")},
-                {"fraction", scene.time.fraction}, {"end", scene.time.end},
-                {"output_every", scene.time.output_every},
-                {"allow_above_critical", scene.time.allow_above_critical},
-                {"allow_long_run", scene.time.allow_long_run}}},
-      {"model", {{"mass", to_string(scene.model.mass)},
-                 {"rotary_inertia", to_string(scene.model.rotary_inertia)},
-                 {"kinematics", to_string(scene.model.kinematics)},
-                 {"rayleigh_mass", scene.model.rayleigh_mass},
-                 {"rayleigh_stiffness", scene.model.rayleigh_stiffness}}}};
-  json s = {{"scene", scene.name}, {"scene_file", scene.file}, {"scene_sha256", scene.sha256},
-            {"description", scene.description}, {"method", r.method},
-            {"contact_sampling", r.contact_sampling}, {"version", kVersion},
-            {"dt", r.dt}, {"steps", r.steps}, {"end_time", scene.time.end},
-            {"wall_seconds", r.wall_seconds}, {"critical_dt", r.critical_dt},
-            {"effects", r.effects}, {"assumed", assumed}, {"overrides", scene.overrides},
-            {"settings", settings}, {"energy_initial", r.energy_initial},
-            {"energy_final", r.energy_final}, {"momentum_drift_max", r.momentum_drift_max},
-            {"bodies", bodies}, {"contacts", contacts},
-            {"units", {{"t", "s"}, {"R", "N"}, {"tau", "N"}, {"gap", "m"}, {"u", "m"}, {"v", "m/s"},
-                       {"energy", "J"}, {"momentum", "N s"}, {"impulse", "N s"}}},
+  json settings = {{"time",
+                    {{"dt", scene.time.dt ? json(*scene.time.dt) : json("auto")},
+                     {"fraction", scene.time.fraction},
+                     {"end", scene.time.end},
+                     {"output_every", scene.time.output_every},
+                     {"allow_above_critical", scene.time.allow_above_critical},
+                     {"allow_long_run", scene.time.allow_long_run}}},
+                   {"model",
+                    {{"mass", to_string(scene.model.mass)},
+                     {"rotary_inertia", to_string(scene.model.rotary_inertia)},
+                     {"kinematics", to_string(scene.model.kinematics)},
+                     {"rayleigh_mass", scene.model.rayleigh_mass},
+                     {"rayleigh_stiffness", scene.model.rayleigh_stiffness}}}};
+  json s = {{"scene", scene.name},
+            {"scene_file", scene.file},
+            {"scene_sha256", scene.sha256},
+            {"description", scene.description},
+            {"method", r.method},
+            {"contact_sampling", r.contact_sampling},
+            {"version", kVersion},
+            {"dt", r.dt},
+            {"steps", r.steps},
+            {"end_time", scene.time.end},
+            {"wall_seconds", r.wall_seconds},
+            {"critical_dt", r.critical_dt},
+            {"effects", r.effects},
+            {"assumed", assumed},
+            {"overrides", scene.overrides},
+            {"settings", settings},
+            {"energy_initial", r.energy_initial},
+            {"energy_final", r.energy_final},
+            {"momentum_drift_max", r.momentum_drift_max},
+            {"bodies", bodies},
+            {"contacts", contacts},
+            {"units",
+             {{"t", "s"},
+              {"R", "N"},
+              {"tau", "N"},
+              {"gap", "m"},
+              {"u", "m"},
+              {"v", "m/s"},
+              {"energy", "J"},
+              {"momentum", "N s"},
+              {"impulse", "N s"}}},
             {"complete", true}};
   s.update(r.extra);
   return s;
@@ -79,7 +111,8 @@ void write_outputs(const Scene& scene, const SimulationResult& r, const std::fil
     for (double v : {r.energy_initial, r.energy_final, r.momentum_drift_max, r.critical_dt})
       check_finite(v, "summary value");
     for (const ContactSummary& c : r.contacts)
-      for (double v : {c.impulse_normal, c.impulse_tangential, c.peak_R, c.peak_R_excluding_closure, c.real_gap_min})
+      for (double v :
+           {c.impulse_normal, c.impulse_tangential, c.peak_R, c.peak_R_excluding_closure, c.real_gap_min})
         check_finite(v, "contact summary value");
     const int nc = static_cast<int>(scene.contacts.size());
     fmt::memory_buffer b;
@@ -88,8 +121,8 @@ void write_outputs(const Scene& scene, const SimulationResult& r, const std::fil
     for (const HistoryRow& row : r.history) {
       fmt::format_to(std::back_inserter(b), "{}", row.t);
       for (const ContactSample& c : row.contacts) {
-        for (double v : {c.R, c.tau, c.gap, c.ua[0], c.ua[1], c.va[0], c.va[1], c.ub[0], c.ub[1],
-                         c.vb[0], c.vb[1]})
+        for (double v :
+             {c.R, c.tau, c.gap, c.ua[0], c.ua[1], c.va[0], c.va[1], c.ub[0], c.ub[1], c.vb[0], c.vb[1]})
           append(b, v, "contact column", row.t);
         fmt::format_to(std::back_inserter(b), ",{}", static_cast<int>(c.state));
       }

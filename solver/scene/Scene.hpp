@@ -15,12 +15,12 @@ using Vec2 = std::array<double, 2>;
 
 /// @brief Time stepping: [time] table.
 struct TimeSettings {
-  std::optional<double> dt;       ///< s; empty means "auto" (fraction x critical step)
-  double fraction = 0.5;          ///< of the critical step, used when dt is "auto"
-  double end = 0.0;               ///< s, end time
-  int output_every = 1;           ///< write every n-th step to history.csv
+  std::optional<double> dt;           ///< s; empty means "auto" (fraction x critical step)
+  double fraction = 0.5;              ///< of the critical step, used when dt is "auto"
+  double end = 0.0;                   ///< s, end time
+  int output_every = 1;               ///< write every n-th step to history.csv
   bool allow_above_critical = false;  ///< accept dt above the stability limit
-  bool allow_long_run = false;  ///< accept a run beyond the ordinary cost (run_cost.hpp)
+  bool allow_long_run = false;        ///< accept a run beyond the ordinary cost (run_cost.hpp)
 };
 
 /// @brief Mass lumping choice for the element mass matrix.
@@ -47,20 +47,20 @@ struct ModelSettings {
 
 /// @brief A support at one node of a body: the listed global DOFs are held at zero.
 struct Support {
-  int node = 0;                     ///< node index in the body (0 = start)
+  int node = 0;  ///< node index in the body (0 = start)
   bool fix_x = false, fix_y = false, fix_theta = false;
 };
 
 /// @brief One straight beam, uniformly meshed from start to end.
 struct Body {
   std::string name;
-  Vec2 start{}, end{};              ///< m, first and last node
+  Vec2 start{}, end{};  ///< m, first and last node
   int elements = 1;
-  double E = 0.0;                   ///< N/m^2
-  double rho = 0.0;                 ///< kg/m^3
-  double area = 0.0;                ///< m^2
-  double inertia = 0.0;             ///< m^4 (0 when not given: only valid for axial scenes)
-  Vec2 velocity{};                  ///< m/s, initial rigid velocity
+  double E = 0.0;        ///< N/m^2
+  double rho = 0.0;      ///< kg/m^3
+  double area = 0.0;     ///< m^2
+  double inertia = 0.0;  ///< m^4 (0 when not given: only valid for axial scenes)
+  Vec2 velocity{};       ///< m/s, initial rigid velocity
   std::vector<Support> supports;
 
   /// @brief Length (m).
@@ -73,10 +73,10 @@ struct Body {
 
 /// @brief One contact pair: a node of the striker against the surface (or end) of the target.
 struct Contact {
-  int striker = 0;                  ///< index into Scene::bodies
-  int node = 0;                     ///< striker node index (resolved from "start"/"end"/index)
-  int target = 0;                   ///< index into Scene::bodies
-  double friction = 0.0;            ///< Coulomb mu
+  int striker = 0;        ///< index into Scene::bodies
+  int node = 0;           ///< striker node index (resolved from "start"/"end"/index)
+  int target = 0;         ///< index into Scene::bodies
+  double friction = 0.0;  ///< Coulomb mu
 };
 
 /// @brief Forced effects from the optional [effects] table (empty = derived from the scene).
@@ -87,8 +87,8 @@ struct EffectOverrides {
 /// @brief A whole scene, validated. Method-specific tables ([ida], [exact], ...) are kept as
 /// TOML text so that each method validates its own keys (see TableReader).
 struct Scene {
-  std::string file;                 ///< path it was read from
-  std::string sha256;               ///< of the file's bytes (before --set overrides)
+  std::string file;    ///< path it was read from
+  std::string sha256;  ///< of the file's bytes (before --set overrides)
   std::string name, description;
   TimeSettings time;
   ModelSettings model;

@@ -32,8 +32,10 @@ class SceneError : public std::runtime_error {
     std::size_t run = 0;
     for (char c : text) {
       run = (c == ' ' || c == '\n') ? 0 : run + 1;
-      if (run <= kLongest - 3) out += c;
-      else if (run == kLongest - 2) out += "...";
+      if (run <= kLongest - 3)
+        out += c;
+      else if (run == kLongest - 2)
+        out += "...";
     }
     return out;
   }

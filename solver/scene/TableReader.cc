@@ -56,9 +56,12 @@ double TableReader::number(const std::string& key, const std::string& what) {
   const toml::node* n = find(key);
   if (!n) fail(key, "missing; expected " + what);
   double v;
-  if (auto i = n->as_integer()) v = static_cast<double>(i->get());
-  else if (auto f = n->as_floating_point()) v = f->get();
-  else fail(key, "expected " + what + ", got " + type_name(*n));
+  if (auto i = n->as_integer())
+    v = static_cast<double>(i->get());
+  else if (auto f = n->as_floating_point())
+    v = f->get();
+  else
+    fail(key, "expected " + what + ", got " + type_name(*n));
   if (!std::isfinite(v)) fail(key, "expected " + what + ", got a non-finite value");
   return v;
 }
@@ -134,10 +137,13 @@ Vec2 TableReader::vec2(const std::string& key, const std::string& what) {
   Vec2 v{};
   for (std::size_t i = 0; i < 2; ++i) {
     const toml::node& e = *a->get(i);
-    if (auto x = e.as_integer()) v[i] = static_cast<double>(x->get());
-    else if (auto f = e.as_floating_point()) v[i] = f->get();
-    else fail(key, "expected " + what + " (an array of two numbers), element " + std::to_string(i) +
-                       " is " + type_name(e));
+    if (auto x = e.as_integer())
+      v[i] = static_cast<double>(x->get());
+    else if (auto f = e.as_floating_point())
+      v[i] = f->get();
+    else
+      fail(key, "expected " + what + " (an array of two numbers), element " + std::to_string(i) + " is " +
+                    type_name(e));
     if (!std::isfinite(v[i])) fail(key, "expected " + what + ", got a non-finite value");
   }
   return v;

@@ -70,8 +70,7 @@ class TableReader {
 class MethodOptions {
  public:
   /// @brief Parses scene.method_tables[method]; assumed defaults go to `assumed`.
-  MethodOptions(const Scene& scene, const std::string& method,
-                std::map<std::string, std::string>* assumed);
+  MethodOptions(const Scene& scene, const std::string& method, std::map<std::string, std::string>* assumed);
   /// @brief The reader; call finish() on it after the last read.
   TableReader& reader() { return reader_; }
 

@@ -22,8 +22,10 @@ constexpr double kBytesPerRowAndContact = 200.0;
 }  // namespace
 
 std::string RunCost::to_string() const {
-  return fmt::format("{:.3g} steps (the fastest wave needs {:.3g}) x {:.3g} DOFs = {:.3g} DOF-steps, about {:.3g} GB "
-                     "of memory", steps, wave_steps, dofs, work, bytes / 1e9);
+  return fmt::format(
+      "{:.3g} steps (the fastest wave needs {:.3g}) x {:.3g} DOFs = {:.3g} DOF-steps, about {:.3g} GB "
+      "of memory",
+      steps, wave_steps, dofs, work, bytes / 1e9);
 }
 
 RunCost estimate_run_cost(const Scene& scene, double dt) {
@@ -34,15 +36,14 @@ RunCost estimate_run_cost(const Scene& scene, double dt) {
   c.wave_steps = scene.time.end / (estimate_auto_dt(scene) / scene.time.fraction);
   c.work = std::max(c.steps, c.wave_steps) * c.dofs;
   const double rows = c.steps / std::max(1, scene.time.output_every);
-  c.bytes = c.dofs * kBytesPerDof +
-            rows * kBytesPerRowAndContact * static_cast<double>(std::max<std::size_t>(1, scene.contacts.size()));
+  c.bytes = c.dofs * kBytesPerDof + rows * kBytesPerRowAndContact *
+                                        static_cast<double>(std::max<std::size_t>(1, scene.contacts.size()));
   return c;
 }
 
 double estimate_auto_dt(const Scene& scene) {
   double dt = std::numeric_limits<double>::infinity();
-  for (const Body& b : scene.bodies)
-    dt = std::min(dt, b.length() / b.elements * std::sqrt(b.rho / b.E));
+  for (const Body& b : scene.bodies) dt = std::min(dt, b.length() / b.elements * std::sqrt(b.rho / b.E));
   return scene.time.fraction * dt;
 }
 
@@ -54,10 +55,11 @@ void check_run_cost(const Scene& scene, double dt) {
                                  "got dt = {:g} s ({:.3g} steps)",
                                  scene.time.end, kMostSteps, dt, c.steps));
   if ((c.work > kOrdinaryWork || c.bytes > kOrdinaryBytes) && !scene.time.allow_long_run)
-    throw SceneError(scene.file, "time.allow_long_run",
-                     fmt::format("this run is far beyond an ordinary one: {} (ordinary: at most {:g} DOF-steps "
-                                 "and {:g} GB); set time.allow_long_run = true (or --allow-long) to run it",
-                                 c.to_string(), kOrdinaryWork, kOrdinaryBytes / 1e9));
+    throw SceneError(
+        scene.file, "time.allow_long_run",
+        fmt::format("this run is far beyond an ordinary one: {} (ordinary: at most {:g} DOF-steps "
+                    "and {:g} GB); set time.allow_long_run = true (or --allow-long) to run it",
+                    c.to_string(), kOrdinaryWork, kOrdinaryBytes / 1e9));
 }
 
 long step_count(const Scene& scene, double dt) {

@@ -13,12 +13,12 @@ namespace beamimpact {
 
 /// @brief The estimate for one scene and step.
 struct RunCost {
-  double steps = 0.0;   ///< ceil(end / dt)
+  double steps = 0.0;       ///< ceil(end / dt)
   double wave_steps = 0.0;  ///< end / (smallest axial element transit time): what resolving the
                             ///< fastest wave takes (IDA's and the exact method's own steps)
-  double dofs = 0.0;    ///< 3 per node (u_x, u_y, theta), all bodies
-  double work = 0.0;    ///< max(steps, wave_steps) x dofs (DOF-steps)
-  double bytes = 0.0;   ///< model + recorded history, estimated
+  double dofs = 0.0;        ///< 3 per node (u_x, u_y, theta), all bodies
+  double work = 0.0;        ///< max(steps, wave_steps) x dofs (DOF-steps)
+  double bytes = 0.0;       ///< model + recorded history, estimated
   /// @brief "4e+05 steps x 66 DOFs = 2.6e+07 DOF-steps, about 0.01 GB".
   std::string to_string() const;
 };
@@ -26,8 +26,8 @@ struct RunCost {
 /// @brief Limits of an ordinary run: 1e11 DOF-steps is 8-18 minutes of one core at the measured
 /// 0.9-2.2e8 DOF-steps/s (README, Benchmarks), far more with contact search or IDA; 4 GB is what
 /// a CI machine or a laptop has. Above either, time.allow_long_run = true is needed.
-inline constexpr double kOrdinaryWork = 1e11;       ///< DOF-steps
-inline constexpr double kOrdinaryBytes = 4e9;       ///< bytes
+inline constexpr double kOrdinaryWork = 1e11;  ///< DOF-steps
+inline constexpr double kOrdinaryBytes = 4e9;  ///< bytes
 /// @brief Above this many steps a run is refused outright: t + dt == t in double precision near
 /// t = end once end / dt exceeds 2^52 (4.5e15), and the step counter must not overflow.
 inline constexpr double kMostSteps = 1e15;

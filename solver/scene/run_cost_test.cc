@@ -33,14 +33,18 @@ TEST(RunCost, RefusesBeyondOrdinaryUnlessAllowed) {
   // history is not; end 4e9 s: 4e11 x 66 = 2.6e13 DOF-steps.
   const Scene big = load_paper_scene("s1_central", {"time.end=1e7"});
   EXPECT_THROW(check_run_cost(big, 0.01), SceneError);
-  EXPECT_NO_THROW(check_run_cost(load_paper_scene("s1_central", {"time.end=1e7", "time.allow_long_run=true"}), 0.01));
+  EXPECT_NO_THROW(
+      check_run_cost(load_paper_scene("s1_central", {"time.end=1e7", "time.allow_long_run=true"}), 0.01));
   EXPECT_NO_THROW(check_run_cost(load_paper_scene("s1_central"), 0.01));
   try {
     check_run_cost(load_paper_scene("s1_central", {"time.end=4e9"}), 0.01);
     FAIL() << "expected a refusal";
   } catch (const SceneError& e) {
     EXPECT_EQ(e.key(), "time.allow_long_run");
-    EXPECT_NE(std::string(e.what()).find("4e+11 steps (the fastest wave needs 4e+10) x 66 DOFs = 2.64e+13 DOF-steps"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(
+                  "4e+11 steps (the fastest wave needs 4e+10) x 66 DOFs = 2.64e+13 DOF-steps"),
+              std::string::npos)
+        << e.what();
   }
 }
 

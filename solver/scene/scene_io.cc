@@ -7,10 +7,10 @@
 
 #include <fmt/format.h>
 
-#include <beamimpact/util/sha256.hpp>
-#include <beamimpact/scene/collinear.hpp>
 #include <beamimpact/scene/SceneError.hpp>
 #include <beamimpact/scene/TableReader.hpp>
+#include <beamimpact/scene/collinear.hpp>
+#include <beamimpact/util/sha256.hpp>
 
 namespace beamimpact {
 namespace {
@@ -68,10 +68,10 @@ void apply_override(toml::table& root, const std::string& file, const std::strin
             found = tb;
       }
       if (!found)
-        throw SceneError(file, key, "--set: no entry '" + sel + "' in '" + seg[i - 1] +
-                                        "' (use an index from 0 or a body name)");
-      if (i + 1 == seg.size())
-        throw SceneError(file, key, "--set: expected a key after '" + sel + "'");
+        throw SceneError(
+            file, key,
+            "--set: no entry '" + sel + "' in '" + seg[i - 1] + "' (use an index from 0 or a body name)");
+      if (i + 1 == seg.size()) throw SceneError(file, key, "--set: expected a key after '" + sel + "'");
       t = found;
       continue;
     }
@@ -170,14 +170,17 @@ void read_time(TableReader& r, TimeSettings& t) {
   const toml::node* dt = r.raw("dt");
   if (!dt) r.fail("dt", "missing; expected a positive number (s) or \"auto\"");
   if (auto s = dt->as_string()) {
-    if (s->get() != "auto") r.fail("dt", "expected a positive number (s) or \"auto\", got \"" + s->get() + "\"");
+    if (s->get() != "auto")
+      r.fail("dt", "expected a positive number (s) or \"auto\", got \"" + s->get() + "\"");
     t.dt.reset();
     t.fraction = r.number_or("fraction", 0.5, "a fraction of the critical step in (0, 1]");
     if (!(t.fraction > 0.0 && t.fraction <= 1.0))
-      r.fail("fraction", "expected a fraction of the critical step in (0, 1], got " + std::to_string(t.fraction));
+      r.fail("fraction",
+             "expected a fraction of the critical step in (0, 1], got " + std::to_string(t.fraction));
   } else {
     t.dt = positive(r, "dt", "s");
-    if (r.has("fraction")) r.fail("fraction", "is used only with dt = \"auto\"; remove it or set dt = \"auto\"");
+    if (r.has("fraction"))
+      r.fail("fraction", "is used only with dt = \"auto\"; remove it or set dt = \"auto\"");
   }
   t.end = positive(r, "end", "s");
   t.output_every = static_cast<int>(r.integer_or("output_every", 1, "a whole number of steps >= 1"));
@@ -219,7 +222,9 @@ void read_supports(TableReader& r, Body& b, std::map<std::string, std::string>* 
     return;
   }
   const toml::array* arr = n->as_array();
-  if (!arr) r.fail("supports", "expected an array of { at = \"start\"|\"end\"|index, fix = [\"x\", \"y\", \"theta\"] }");
+  if (!arr)
+    r.fail("supports",
+           "expected an array of { at = \"start\"|\"end\"|index, fix = [\"x\", \"y\", \"theta\"] }");
   for (std::size_t i = 0; i < arr->size(); ++i) {
     const toml::table* st = arr->get(i)->as_table();
     const std::string key = "supports[" + std::to_string(i) + "]";
@@ -232,10 +237,14 @@ void read_supports(TableReader& r, Body& b, std::map<std::string, std::string>* 
       sr.fail("fix", "expected a non-empty array of \"x\", \"y\", \"theta\"");
     for (const toml::node& c : *fx->as_array()) {
       const std::string v = c.value<std::string>().value_or("?");
-      if (v == "x") s.fix_x = true;
-      else if (v == "y") s.fix_y = true;
-      else if (v == "theta") s.fix_theta = true;
-      else sr.fail("fix", "expected \"x\", \"y\" or \"theta\", got " + v);
+      if (v == "x")
+        s.fix_x = true;
+      else if (v == "y")
+        s.fix_y = true;
+      else if (v == "theta")
+        s.fix_theta = true;
+      else
+        sr.fail("fix", "expected \"x\", \"y\" or \"theta\", got " + v);
     }
     sr.finish();
     b.supports.push_back(s);
@@ -261,8 +270,8 @@ toml::table parse_scene_text(const std::string& text, const Scene& sc) {
     return toml::parse(text, sc.file);
   } catch (const toml::parse_error& e) {
     std::ostringstream msg;
-    msg << "TOML syntax error at line " << e.source().begin.line << ", column "
-        << e.source().begin.column << ": " << e.description();
+    msg << "TOML syntax error at line " << e.source().begin.line << ", column " << e.source().begin.column
+        << ": " << e.description();
     throw SceneError(sc.file, "", msg.str());
   }
 }
@@ -299,7 +308,8 @@ Body read_body(TableReader& r, Scene& sc) {
   if (sc.body_index(b.name) >= 0) r.fail("name", "body name '" + b.name + "' is used twice");
   b.start = bounded(r, "start", r.vec2("start", "[x, y] of the first node (m)"), "coordinates (m)");
   b.end = bounded(r, "end", r.vec2("end", "[x, y] of the last node (m)"), "coordinates (m)");
-  if (!(b.length() > 0.0)) r.fail("end", "expected a point different from start: the length must be positive (m)");
+  if (!(b.length() > 0.0))
+    r.fail("end", "expected a point different from start: the length must be positive (m)");
   const long ne = r.integer("elements", "a whole number of elements >= 1");
   if (ne < 1 || ne > 10'000'000) r.fail("elements", "expected a whole number of elements >= 1");
   b.elements = static_cast<int>(ne);
@@ -307,8 +317,10 @@ Body read_body(TableReader& r, Scene& sc) {
   b.rho = positive(r, "rho", "kg/m^3");
   b.area = positive(r, "area", "m^2");
   if (r.has("inertia")) b.inertia = positive(r, "inertia", "m^4");
-  if (r.has("velocity")) b.velocity = bounded(r, "velocity", r.vec2("velocity", "[vx, vy] (m/s)"), "velocities (m/s)");
-  else (*assumed)[r.path("velocity")] = "[0, 0]";
+  if (r.has("velocity"))
+    b.velocity = bounded(r, "velocity", r.vec2("velocity", "[vx, vy] (m/s)"), "velocities (m/s)");
+  else
+    (*assumed)[r.path("velocity")] = "[0, 0]";
   read_supports(r, b, assumed);
   r.finish();
   return b;
@@ -402,11 +414,12 @@ void check_initial_gaps(const Scene& sc) {
     const Body& target = sc.bodies[c.target];
     const Vec2 x = striker.node_position(c.node);
     if (distance_to_body(x, target) <= 1e-9 * scale)
-      throw SceneError(sc.file, "contacts[" + std::to_string(i) + "].node",
-                       fmt::format("the striker node of '{}' at ({:.6g}, {:.6g}) m touches target '{}' at t = 0 "
-                                   "(zero initial gap); expected a positive gap: move '{}' away from '{}' "
-                                   "(a contact must close during the run)",
-                                   striker.name, x[0], x[1], target.name, striker.name, target.name));
+      throw SceneError(
+          sc.file, "contacts[" + std::to_string(i) + "].node",
+          fmt::format("the striker node of '{}' at ({:.6g}, {:.6g}) m touches target '{}' at t = 0 "
+                      "(zero initial gap); expected a positive gap: move '{}' away from '{}' "
+                      "(a contact must close during the run)",
+                      striker.name, x[0], x[1], target.name, striker.name, target.name));
   }
 }
 

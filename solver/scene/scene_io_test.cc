@@ -37,9 +37,9 @@ TEST(SceneIo, RecordsAssumedDefaults) {
 }
 
 TEST(SceneIo, SetOverridesByPathIndexAndName) {
-  const Scene s = load_scene(paper_scene("s1_central"),
-                             {"time.dt=0.005", "bodies[1].elements=20", "bodies.A.E=200", "contacts.0.friction=0.1",
-                              "model.mass=consistent"});
+  const Scene s =
+      load_scene(paper_scene("s1_central"), {"time.dt=0.005", "bodies[1].elements=20", "bodies.A.E=200",
+                                             "contacts.0.friction=0.1", "model.mass=consistent"});
   EXPECT_DOUBLE_EQ(*s.time.dt, 0.005);
   EXPECT_EQ(s.bodies[1].elements, 20);
   EXPECT_DOUBLE_EQ(s.bodies[0].E, 200.0);
@@ -83,18 +83,24 @@ TEST(SceneIo, BadInputNamesFileKeyAndExpectation) {
   const std::string g = good();
   const std::vector<BadCase> cases = {
       {"missing key", replace(g, "end = 3.0", ""), "time.end", "missing"},
-      {"unknown key", replace(g, "output_every = 1", "output_every = 1\nsteps = 3"), "time.steps", "unknown key"},
-      {"wrong type", replace(g, "elements = 5", "elements = \"five\""), "bodies[0].elements", "expected a whole number"},
+      {"unknown key", replace(g, "output_every = 1", "output_every = 1\nsteps = 3"), "time.steps",
+       "unknown key"},
+      {"wrong type", replace(g, "elements = 5", "elements = \"five\""), "bodies[0].elements",
+       "expected a whole number"},
       {"negative area", replace(g, "area = 0.4", "area = -0.4"), "bodies[0].area", "positive"},
       {"zero modulus", replace(g, "E = 100.0", "E = 0.0"), "bodies[0].E", "positive"},
       {"zero density", replace(g, "rho = 1.0", "rho = 0"), "bodies[0].rho", "positive"},
-      {"zero length", replace(g, "end = [5.0, 0.1]", "end = [5.0, 5.1]"), "bodies[0].end", "length must be positive"},
+      {"zero length", replace(g, "end = [5.0, 0.1]", "end = [5.0, 5.1]"), "bodies[0].end",
+       "length must be positive"},
       {"missing support node", replace(g, "{ at = \"end\", fix = [\"y\"] }", "{ at = 11, fix = [\"y\"] }"),
        "bodies[1].supports[1].at", "node index 0..10"},
-      {"missing contact node", replace(g, "node = \"end\"", "node = 6"), "contacts[0].node", "node index 0..5"},
-      {"unknown body", replace(g, "target = \"B\"", "target = \"C\""), "contacts[0].target", "name of a body"},
+      {"missing contact node", replace(g, "node = \"end\"", "node = 6"), "contacts[0].node",
+       "node index 0..5"},
+      {"unknown body", replace(g, "target = \"B\"", "target = \"C\""), "contacts[0].target",
+       "name of a body"},
       {"overlap", replace(g, "end = [5.0, 0.1]", "end = [5.0, -0.1]"), "bodies[1].start", "overlap at t = 0"},
-      {"bad choice", replace(g, "mass = \"lumped\"", "mass = \"heavy\""), "model.mass", "one of \"lumped\" \"consistent\""},
+      {"bad choice", replace(g, "mass = \"lumped\"", "mass = \"heavy\""), "model.mass",
+       "one of \"lumped\" \"consistent\""},
       {"syntax", replace(g, "[time]", "[time"), "", "TOML syntax error at line"},
       {"bad dt", replace(g, "dt = 0.01", "dt = \"fast\""), "time.dt", "\"auto\""},
   };

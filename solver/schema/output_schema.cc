@@ -45,42 +45,84 @@ std::vector<std::string> history_columns(int n_contacts) {
 }
 
 const std::vector<std::string>& summary_keys() {
-  static const std::vector<std::string> k = {
-      "scene",          "scene_file",     "scene_sha256",       "description", "method",   "version",
-      "contact_sampling", "dt",           "steps",              "end_time",    "wall_seconds", "critical_dt",
-      "effects",        "assumed",        "overrides",          "energy_initial", "energy_final",
-      "momentum_drift_max", "bodies",     "contacts",           "units",       "complete"};
+  static const std::vector<std::string> k = {"scene",
+                                             "scene_file",
+                                             "scene_sha256",
+                                             "description",
+                                             "method",
+                                             "version",
+                                             "contact_sampling",
+                                             "dt",
+                                             "steps",
+                                             "end_time",
+                                             "wall_seconds",
+                                             "critical_dt",
+                                             "effects",
+                                             "assumed",
+                                             "overrides",
+                                             "energy_initial",
+                                             "energy_final",
+                                             "momentum_drift_max",
+                                             "bodies",
+                                             "contacts",
+                                             "units",
+                                             "complete"};
   return k;
 }
 
 const std::vector<std::string>& contact_summary_keys() {
-  static const std::vector<std::string> k = {
-      "striker",        "target",          "kind",   "friction",   "intervals",  "impacts",
-      "merge_rule",     "impulse_normal",  "impulse_tangential", "peak_R", "peak_R_excluding_closure",
-      "first_step_R",   "stick_steps",     "slip_steps", "real_gap_min", "real_gap_min_time"};
+  static const std::vector<std::string> k = {"striker",
+                                             "target",
+                                             "kind",
+                                             "friction",
+                                             "intervals",
+                                             "impacts",
+                                             "merge_rule",
+                                             "impulse_normal",
+                                             "impulse_tangential",
+                                             "peak_R",
+                                             "peak_R_excluding_closure",
+                                             "first_step_R",
+                                             "stick_steps",
+                                             "slip_steps",
+                                             "real_gap_min",
+                                             "real_gap_min_time"};
   return k;
 }
 
 nlohmann::json schema_json() {
   using nlohmann::json;
   json states = json::object();
-  for (ContactState s : {ContactState::kOpen, ContactState::kStick, ContactState::kSlip, ContactState::kClosed})
+  for (ContactState s :
+       {ContactState::kOpen, ContactState::kStick, ContactState::kSlip, ContactState::kClosed})
     states[std::to_string(static_cast<int>(s))] = to_string(s);
   json kinds = json::array();
   for (ContactKind k : {ContactKind::kEndToEnd, ContactKind::kNodeToNode, ContactKind::kNodeToSurface})
     kinds.push_back(to_string(k));
-  return {{"time_column", "t"},
-          {"contact_columns", contact_columns()},
-          {"model_columns", model_columns()},
-          {"contact_suffix_rule", "contact 1: no suffix; contact k >= 2: '_k' appended (R_2, vb_y_3)"},
-          {"state_values", states},
-          {"contact_kinds", kinds},
-          {"summary_keys", summary_keys()},
-          {"contact_summary_keys", contact_summary_keys()},
-          {"units", {{"t", "s"}, {"R", "N"}, {"tau", "N"}, {"gap", "m"}, {"ua", "m"}, {"ub", "m"},
-                     {"va", "m/s"}, {"vb", "m/s"}, {"kinetic", "J"}, {"strain", "J"},
-                     {"dissipated", "J"}, {"px", "N s"}, {"py", "N s"}}},
-          {"optional_columns", {{"impulse", "N s, cumulative normal impulse per contact (adaptive methods)"}}}};
+  return {
+      {"time_column", "t"},
+      {"contact_columns", contact_columns()},
+      {"model_columns", model_columns()},
+      {"contact_suffix_rule", "contact 1: no suffix; contact k >= 2: '_k' appended (R_2, vb_y_3)"},
+      {"state_values", states},
+      {"contact_kinds", kinds},
+      {"summary_keys", summary_keys()},
+      {"contact_summary_keys", contact_summary_keys()},
+      {"units",
+       {{"t", "s"},
+        {"R", "N"},
+        {"tau", "N"},
+        {"gap", "m"},
+        {"ua", "m"},
+        {"ub", "m"},
+        {"va", "m/s"},
+        {"vb", "m/s"},
+        {"kinetic", "J"},
+        {"strain", "J"},
+        {"dissipated", "J"},
+        {"px", "N s"},
+        {"py", "N s"}}},
+      {"optional_columns", {{"impulse", "N s, cumulative normal impulse per contact (adaptive methods)"}}}};
 }
 
 }  // namespace beamimpact

@@ -10,9 +10,9 @@ namespace {
 // The contract of interface.md: t, then 12 columns per contact (suffix _k from the second
 // contact on), then 5 model columns. Written out here by hand, not derived from the code.
 TEST(OutputSchema, ColumnsFollowInterfaceMd) {
-  const std::vector<std::string> one = {"t",    "R",    "tau",  "gap",  "ua_x",    "ua_y",   "va_x",
-                                        "va_y", "ub_x", "ub_y", "vb_x", "vb_y",    "state",  "kinetic",
-                                        "strain", "dissipated", "px", "py"};
+  const std::vector<std::string> one = {"t",     "R",       "tau",    "gap",        "ua_x", "ua_y",
+                                        "va_x",  "va_y",    "ub_x",   "ub_y",       "vb_x", "vb_y",
+                                        "state", "kinetic", "strain", "dissipated", "px",   "py"};
   EXPECT_EQ(history_columns(1), one);
   const auto two = history_columns(2);
   EXPECT_EQ(two.size(), 1u + 2u * 12u + 5u);

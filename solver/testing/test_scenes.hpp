@@ -25,7 +25,8 @@ inline std::filesystem::path source_dir() {
 /// @brief The folder of this test process's temporary files, TempDir()/beamimpact_<pid>: made on
 /// first use, removed with everything in it when the process exits (tests leave nothing behind).
 inline const std::filesystem::path& temp_root() {
-  static const ScratchDir root(std::filesystem::path(::testing::TempDir()) / ("beamimpact_" + std::to_string(getpid())));
+  static const ScratchDir root(std::filesystem::path(::testing::TempDir()) /
+                               ("beamimpact_" + std::to_string(getpid())));
   return root.path();
 }
 

@@ -1,7 +1,7 @@
 #include <beamimpact/util/Progress.hpp>
 
-#include <cstdio>
 #include <unistd.h>
+#include <cstdio>
 
 namespace beamimpact {
 namespace {
@@ -21,8 +21,8 @@ void Progress::report(double value) {
   const double pct = total_ > 0 ? 100.0 * value / total_ : 0.0;
   // On a terminal, one line rewritten in place; in a log, one line per update.
   const bool tty = isatty(fileno(stderr));
-  std::fprintf(stderr, "%s%s: %3.0f%% (%.4g of %.4g)%s", tty ? "\r" : "", label_.c_str(), pct,
-               value, total_, tty ? "" : "\n");
+  std::fprintf(stderr, "%s%s: %3.0f%% (%.4g of %.4g)%s", tty ? "\r" : "", label_.c_str(), pct, value, total_,
+               tty ? "" : "\n");
   std::fflush(stderr);
   printed_ = tty;
 }

@@ -6,8 +6,8 @@
 #include <string>
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <sys/wait.h>
+#include <nlohmann/json.hpp>
 
 #include <beamimpact/testing/test_scenes.hpp>
 
@@ -42,7 +42,8 @@ std::string bad_scene(const std::string& from, const std::string& to) {
   std::string s(std::istreambuf_iterator<char>(in), {});
   s.replace(s.find(from), from.size(), to);
   static int count = 0;  // one file per case: all cases are built before any runs
-  const std::string path = beamimpact::testing::temp_path("cli_bad_" + std::to_string(++count) + ".toml").string();
+  const std::string path =
+      beamimpact::testing::temp_path("cli_bad_" + std::to_string(++count) + ".toml").string();
   std::ofstream(path) << s;
   return path;
 }
@@ -74,16 +75,19 @@ TEST(Cli, BadInputExitsTwoWithOneMessageAndNoResult) {
   const std::vector<Bad> cases = {
       {"missing file", "run /nonexistent/scene.toml", "cannot open the scene file"},
       {"malformed", "run " + bad_scene("[time]", "[time"), "TOML syntax error"},
-      {"unknown key", "run " + bad_scene("output_every = 1", "output_evry = 1"), "key 'time.output_evry': unknown key"},
-      {"negative length area", "run " + bad_scene("area = 0.4", "area = -1"), "key 'bodies[0].area': expected a positive number (m^2)"},
+      {"unknown key", "run " + bad_scene("output_every = 1", "output_evry = 1"),
+       "key 'time.output_evry': unknown key"},
+      {"negative length area", "run " + bad_scene("area = 0.4", "area = -1"),
+       "key 'bodies[0].area': expected a positive number (m^2)"},
       {"contact node", "run " + bad_scene("node = \"end\"", "node = 9"), "key 'contacts[0].node'"},
       {"overlap", "run " + bad_scene("end = [5.0, 0.1]", "end = [5.0, -0.5]"), "overlap at t = 0"},
       {"zero initial gap", "run " + bad_scene("end = [5.0, 0.1]", "end = [5.0, 0.0]"),
-       "key 'contacts[0].node': the striker node of 'A' at (5, 0) m touches target 'B' at t = 0 (zero initial gap)"},
+       "key 'contacts[0].node': the striker node of 'A' at (5, 0) m touches target 'B' at t = 0 (zero "
+       "initial gap)"},
       {"zero initial gap, ida", "run " + bad_scene("end = [5.0, 0.1]", "end = [5.0, 0.0]") + " --method ida",
        "(zero initial gap)"},
-      {"zero initial gap, exact", "run " + bad_scene("end = [5.0, 0.1]", "end = [5.0, 0.0]") + " --method exact",
-       "(zero initial gap)"},
+      {"zero initial gap, exact",
+       "run " + bad_scene("end = [5.0, 0.1]", "end = [5.0, 0.0]") + " --method exact", "(zero initial gap)"},
       {"dt above critical", "run " + paper_scene("s2_transverse") + " --set time.dt=0.1",
        "key 'time.dt': expected at most the critical step"},
       {"unknown method", "run " + paper_scene("s1_central") + " --method magic", "key '--method'"},
@@ -97,19 +101,28 @@ TEST(Cli, BadInputExitsTwoWithOneMessageAndNoResult) {
        "key 'model.rayleigh_mass'"},
       // Step counts that overflowed a long (paper, IDA: -9223372036854775808 steps, exit 0) or hung (exact).
       {"dt 1e-300 paper", "run " + paper_scene("s1_central") + " --set time.dt=1e-300", "key 'time.dt'"},
-      {"dt 1e-300 ida", "run " + paper_scene("s1_central") + " --method ida --set time.dt=1e-300", "key 'time.dt'"},
-      {"dt 1e-300 exact", "run " + paper_scene("s1_central") + " --method exact --set time.dt=1e-300", "key 'time.dt'"},
-      {"1e16 steps paper", "run " + paper_scene("s1_central") + " --allow-long --set time.dt=1e-13 --set time.end=1e3",
+      {"dt 1e-300 ida", "run " + paper_scene("s1_central") + " --method ida --set time.dt=1e-300",
+       "key 'time.dt'"},
+      {"dt 1e-300 exact", "run " + paper_scene("s1_central") + " --method exact --set time.dt=1e-300",
+       "key 'time.dt'"},
+      {"1e16 steps paper",
+       "run " + paper_scene("s1_central") + " --allow-long --set time.dt=1e-13 --set time.end=1e3",
        "key 'time.dt': expected a step that divides time.end = 1000 s into at most 1e+15 steps"},
-      {"1e16 steps ida", "run " + paper_scene("s1_central") + " --method ida --allow-long --set time.dt=1e-13 --set time.end=1e3",
+      {"1e16 steps ida",
+       "run " + paper_scene("s1_central") +
+           " --method ida --allow-long --set time.dt=1e-13 --set time.end=1e3",
        "into at most 1e+15 steps"},
-      {"1e16 steps exact", "run " + paper_scene("s1_central") + " --method exact --allow-long --set time.dt=1e-13 --set time.end=1e3",
+      {"1e16 steps exact",
+       "run " + paper_scene("s1_central") +
+           " --method exact --allow-long --set time.dt=1e-13 --set time.end=1e3",
        "into at most 1e+15 steps"},
       // Runs that cannot finish: the estimate is printed, the flag is named. 1e7 elements of 1e-6 m,
       // axial wave speed sqrt(E / rho) = 10 m/s: transit 1e-7 s, 4e7 wave steps in 4 s; 3e7 DOFs.
       {"1e7 elements", "run " + paper_scene("s1_central") + " --set bodies[0].elements=10000000",
-       "key 'time.allow_long_run': this run is far beyond an ordinary one: 400 steps (the fastest wave needs 4e+07) x 3e+07 DOFs"},
-      {"end 4.3e9 s", "run " + paper_scene("s1_central") + " --set time.end=4.3e9", "4.3e+11 steps (the fastest wave needs 4.3e+10) x 66 DOFs"},
+       "key 'time.allow_long_run': this run is far beyond an ordinary one: 400 steps (the fastest wave needs "
+       "4e+07) x 3e+07 DOFs"},
+      {"end 4.3e9 s", "run " + paper_scene("s1_central") + " --set time.end=4.3e9",
+       "4.3e+11 steps (the fastest wave needs 4.3e+10) x 66 DOFs"},
       // E = 1e30 N/m^2: wave speed 1e15 m/s, transit 1e-15 s: IDA and exact ran for hours.
       {"stiff ida", "run " + paper_scene("s1_central") + " --method ida --set bodies[0].E=1e30",
        "400 steps (the fastest wave needs 4e+15) x 66 DOFs"},

@@ -20,14 +20,13 @@ struct RunArgs {
 };
 
 void print_result(const SimulationResult& r, const std::string& out) {
-  fmt::print("{} run: {} steps, dt = {:.6g} s (critical {:.6g} s), {:.3f} s wall\n", r.method,
-             r.steps, r.dt, r.critical_dt, r.wall_seconds);
+  fmt::print("{} run: {} steps, dt = {:.6g} s (critical {:.6g} s), {:.3f} s wall\n", r.method, r.steps, r.dt,
+             r.critical_dt, r.wall_seconds);
   fmt::print("  effects: {}\n", fmt::join(r.effects, ", "));
   for (const ContactSummary& c : r.contacts) {
     fmt::print("  contact {} -> {} ({}): {} impact(s), impulse {:.6g} N s", c.striker, c.target,
                to_string(c.kind), c.intervals.size(), c.impulse_normal);
-    if (!c.intervals.empty())
-      fmt::print(", first [{:.6g}, {:.6g}] s", c.intervals[0][0], c.intervals[0][1]);
+    if (!c.intervals.empty()) fmt::print(", first [{:.6g}, {:.6g}] s", c.intervals[0][0], c.intervals[0][1]);
     fmt::print("\n");
   }
   fmt::print("  energy {:.6g} -> {:.6g} J\n", r.energy_initial, r.energy_final);
@@ -43,21 +42,24 @@ void simulate(const RunArgs& a) {
 }
 
 void print_methods() {
-  fmt::print("{:<9} {:<10} {:<8} {:<8} {:<8} {}\n", "method", "kind", "dt", "friction", "rotation", "summary");
+  fmt::print("{:<9} {:<10} {:<8} {:<8} {:<8} {}\n", "method", "kind", "dt", "friction", "rotation",
+             "summary");
   for (const Method& m : methods())
     fmt::print("{:<9} {:<10} {:<8} {:<8} {:<8} {}\n", m.name, m.in_process() ? "in-process" : "program",
-               m.accepts.dt ? "yes" : "own", m.accepts.friction ? "yes" : "no", m.accepts.rotation ? "yes" : "no",
-               m.summary);
+               m.accepts.dt ? "yes" : "own", m.accepts.friction ? "yes" : "no",
+               m.accepts.rotation ? "yes" : "no", m.summary);
 }
 
 }  // namespace
 
 void add_command_run(CLI::App& app) {
   auto args = std::make_shared<RunArgs>();
-  CLI::App* sub = app.add_subcommand("run", "Run one scene with one method; writes DIR/history.csv and DIR/summary.json");
+  CLI::App* sub =
+      app.add_subcommand("run", "Run one scene with one method; writes DIR/history.csv and DIR/summary.json");
   sub->add_option("scene", args->scene, "Scene file (TOML, see shared/spec/interface.md)")->required();
   sub->add_option("--out", args->out, "Output directory")->required();
-  sub->add_option("--method", args->method, "A method of the registry (`beamimpact methods`): " + method_names())
+  sub->add_option("--method", args->method,
+                  "A method of the registry (`beamimpact methods`): " + method_names())
       ->capture_default_str();
   sub->add_option("--set", args->sets, "Override a scene key, e.g. --set time.dt=0.005 (repeatable)");
   sub->add_flag("--quiet", args->quiet, "Print nothing on success (no progress either)");
@@ -67,7 +69,8 @@ void add_command_run(CLI::App& app) {
 }
 
 void add_command_methods(CLI::App& app) {
-  app.add_subcommand("methods", "List the methods of the registry and what each accepts")->callback(print_methods);
+  app.add_subcommand("methods", "List the methods of the registry and what each accepts")
+      ->callback(print_methods);
   app.add_subcommand("schema", "Print the output schema (history.csv columns, enums, units) as JSON")
       ->callback([] { fmt::print("{}\n", schema_json().dump(2)); });
 }

@@ -10,16 +10,16 @@
 #include <fmt/format.h>
 
 #include <beamimpact/api/registry.hpp>
-#include <beamimpact/version.hpp>
-#include "CommandExit.hpp"
 #include <beamimpact/scene/SceneError.hpp>
 #include <beamimpact/verification/compare/compare_runs.hpp>
 #include <beamimpact/verification/matrix/VerificationMatrix.hpp>
 #include <beamimpact/verification/matrix/evaluate.hpp>
-#include <beamimpact/verification/matrix/reports.hpp>
 #include <beamimpact/verification/matrix/execute_jobs.hpp>
-#include <beamimpact/verification/matrix/sweep.hpp>
 #include <beamimpact/verification/matrix/interruption.hpp>
+#include <beamimpact/verification/matrix/reports.hpp>
+#include <beamimpact/verification/matrix/sweep.hpp>
+#include <beamimpact/version.hpp>
+#include "CommandExit.hpp"
 
 namespace beamimpact {
 namespace {
@@ -76,7 +76,9 @@ void verify(const VerifyArgs& a) {
   std::vector<const Case*> cases;
   std::vector<const Convergence*> ladders;
   std::vector<const RunCheck*> checks;
-  auto selected = [&](const std::string& name) { return a.only.empty() || name.find(a.only) != std::string::npos; };
+  auto selected = [&](const std::string& name) {
+    return a.only.empty() || name.find(a.only) != std::string::npos;
+  };
   for (const auto& c : m.cases)
     if (VerificationMatrix::in_tier(c.tier, a.tier) && selected(c.name())) cases.push_back(&c);
   for (const auto& v : m.convergence)
@@ -86,14 +88,21 @@ void verify(const VerifyArgs& a) {
   if (!a.only.empty()) {  // only the runs the selected items need
     specs.clear();
     std::set<std::string> seen;
-    auto add = [&](const JobSpec& s) { if (seen.insert(s.key()).second) specs.push_back(s); };
-    for (const auto* c : cases) { add(c->run); add(c->reference); }
-    for (const auto* v : ladders) for (const auto& s : v->runs) add(s);
+    auto add = [&](const JobSpec& s) {
+      if (seen.insert(s.key()).second) specs.push_back(s);
+    };
+    for (const auto* c : cases) {
+      add(c->run);
+      add(c->reference);
+    }
+    for (const auto* v : ladders)
+      for (const auto& s : v->runs) add(s);
     for (const auto* c : checks) add(c->run);
   }
   const fs::path out = a.out;
   fs::create_directories(out);
-  fmt::print(stderr, "verify: {} case(s), {} convergence ladder(s), {} check(s), {} run(s), tier {}, {} job(s)\n",
+  fmt::print(stderr,
+             "verify: {} case(s), {} convergence ladder(s), {} check(s), {} run(s), tier {}, {} job(s)\n",
              cases.size(), ladders.size(), checks.size(), specs.size(), a.tier, a.jobs);
   const auto runs = execute_jobs(specs, out / "runs", launcher(m.root), a.jobs, m.timeout);
 
@@ -103,15 +112,17 @@ void verify(const VerifyArgs& a) {
   for (const auto* c : checks) items.push_back(evaluate_check(*c, runs));
 
   ReportContext ctx;
-  ctx.command = fmt::format("beamimpact verify {} --tier {} --out {} --jobs {}{}", a.matrix, a.tier, a.out, a.jobs,
-                            a.only.empty() ? "" : " --only '" + a.only + "'");
+  ctx.command = fmt::format("beamimpact verify {} --tier {} --out {} --jobs {}{}", a.matrix, a.tier, a.out,
+                            a.jobs, a.only.empty() ? "" : " --only '" + a.only + "'");
   ctx.matrix = a.matrix;
   ctx.tier = a.tier;
   ctx.version = kVersion;
   ctx.started = started;
   ctx.jobs = a.jobs;
   ctx.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (interruption()) ctx.incomplete = fmt::format("interrupted by signal {}; runs not finished are failed or skipped", interruption());
+  if (interruption())
+    ctx.incomplete =
+        fmt::format("interrupted by signal {}; runs not finished are failed or skipped", interruption());
   write_junit(out / "junit.xml", ctx, items);
   write_json(out / "norms.json", ctx, items);
   write_markdown(out / "report.md", ctx, items);
@@ -144,18 +155,22 @@ void sweep(SweepArgs& a) {
   forward_interruptions();
   const SweepResult r = execute_sweep(a.o, launcher(find_source_root(a.scene)));
   std::string dts, meshes;
-  for (double d : a.o.fractions.empty() ? a.o.dts : a.o.fractions) dts += fmt::format("{}{:g}", dts.empty() ? "" : ",", d);
+  for (double d : a.o.fractions.empty() ? a.o.dts : a.o.fractions)
+    dts += fmt::format("{}{:g}", dts.empty() ? "" : ",", d);
   for (const auto& m : a.o.meshes) meshes += (meshes.empty() ? "" : ",") + m;
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string header = fmt::format(
-      "- command: `beamimpact sweep {} --method {} {} {}{} --reference {} --out {} --jobs {}`\n- version: `{}`\n"
+      "- command: `beamimpact sweep {} --method {} {} {}{} --reference {} --out {} --jobs {}`\n- version: "
+      "`{}`\n"
       "- made {} (UTC), wall time {:.1f} s\n{}",
-      a.scene, a.o.method, a.o.fractions.empty() ? "--dt" : "--fraction", dts, meshes.empty() ? "" : " --mesh " + meshes, a.o.reference, a.out, a.o.jobs, kVersion,
-      utc_now(), wall, interruption() ? fmt::format("- **INCOMPLETE: interrupted by signal {}**\n", interruption()) : "");
+      a.scene, a.o.method, a.o.fractions.empty() ? "--dt" : "--fraction", dts,
+      meshes.empty() ? "" : " --mesh " + meshes, a.o.reference, a.out, a.o.jobs, kVersion, utc_now(), wall,
+      interruption() ? fmt::format("- **INCOMPLETE: interrupted by signal {}**\n", interruption()) : "");
   write_sweep(a.o, r, header);
   for (const auto& p : r.points) {
     const auto& s = p.outcome.spec;
-    fmt::print("{:<28} {:>8} steps {:>9.4f} s", s.settings_label(), p.outcome.steps, p.outcome.solver_seconds);
+    fmt::print("{:<28} {:>8} steps {:>9.4f} s", s.settings_label(), p.outcome.steps,
+               p.outcome.solver_seconds);
     if (p.comparison) {
       for (const char* n : {"impulse", "I.rel_linf", "ua.rel_l2"}) {
         const Norm* x = p.comparison->find(n);
@@ -177,7 +192,8 @@ void sweep(SweepArgs& a) {
 
 void add_verification_commands(CLI::App& app) {
   auto ca = std::make_shared<CompareArgs>();
-  CLI::App* c = app.add_subcommand("compare", "Error norms of run DIR_1 against reference run DIR_2 (each norm's definition is printed)");
+  CLI::App* c = app.add_subcommand(
+      "compare", "Error norms of run DIR_1 against reference run DIR_2 (each norm's definition is printed)");
   c->add_option("DIR_1", ca->a, "Run directory (history.csv, summary.json)")->required();
   c->add_option("DIR_2", ca->b, "Reference run directory")->required();
   c->add_option("--json", ca->json, "Write the norms as JSON here (default DIR_1/compare.json)");
@@ -193,7 +209,8 @@ void add_verification_commands(CLI::App& app) {
       ->check(positive_time);
   c->add_option("--grid", ca->options.grid_step, "s, common grid step (default the finer output step)")
       ->check(positive_time);
-  c->add_option("--merge", ca->options.merge_gap, "s, contact samples closer than this are one impact (default 3.5 coarser output steps)")
+  c->add_option("--merge", ca->options.merge_gap,
+                "s, contact samples closer than this are one impact (default 3.5 coarser output steps)")
       ->check(positive_time);
   c->callback([ca] { compare(*ca); });
 
@@ -202,23 +219,28 @@ void add_verification_commands(CLI::App& app) {
   v->add_option("MATRIX", va->matrix, "VerificationMatrix file")->capture_default_str();
   v->add_option("--out", va->out, "Output directory (runs/, junit.xml, norms.json, report.md)")->required();
   v->add_option("--tier", va->tier,
-                 "quick (CI), stability (health checks of the hard cases) or full (everything, plus fine meshes and small dt)")
-      ->check(CLI::IsMember(VerificationMatrix::tier_names()))->capture_default_str();
+                "quick (CI), stability (health checks of the hard cases) or full (everything, plus fine "
+                "meshes and small dt)")
+      ->check(CLI::IsMember(VerificationMatrix::tier_names()))
+      ->capture_default_str();
   v->add_option("--jobs", va->jobs, "Runs in parallel")->capture_default_str();
   v->add_option("--only", va->only, "Only cases whose name contains this text (e.g. s1_central)");
   v->callback([va] { verify(*va); });
 
   auto sa = std::make_shared<SweepArgs>();
-  CLI::App* s = app.add_subcommand("sweep", "Error norms and wall time of one scene at several dt (and meshes)");
+  CLI::App* s =
+      app.add_subcommand("sweep", "Error norms and wall time of one scene at several dt (and meshes)");
   s->add_option("SCENE", sa->scene, "Scene file")->required();
   auto* dt = s->add_option("--dt", sa->o.dts, "s, time steps, e.g. 0.01,0.005,0.0025")->delimiter(',');
   auto* fr = s->add_option("--fraction", sa->o.fractions,
-                           "fractions of the critical step, for scenes with dt = \"auto\" (e.g. 0.5,0.25)")->delimiter(',');
+                           "fractions of the critical step, for scenes with dt = \"auto\" (e.g. 0.5,0.25)")
+                 ->delimiter(',');
   dt->excludes(fr);
   s->add_option("--mesh", sa->o.meshes, "Element multipliers (beam methods), e.g. 1,2,4")->delimiter(',');
   s->add_option("--method", sa->o.method, "Method under test")->capture_default_str();
   s->add_option("--reference", sa->o.reference,
-                "self (the method at the finest dt/4 on the finest mesh), a method name (" + method_names() + "), or a run directory")
+                "self (the method at the finest dt/4 on the finest mesh), a method name (" + method_names() +
+                    "), or a run directory")
       ->capture_default_str();
   s->add_option("--out", sa->out, "Output directory (runs/, sweep.md, sweep.csv, sweep.json)")->required();
   s->add_option("--jobs", sa->o.jobs, "Runs in parallel")->capture_default_str();

@@ -31,8 +31,9 @@ class Commands : public ::testing::Test {
 
   Result run(const std::string& args) {
     const fs::path log = tmp_ / "out.txt";
-    const int rc = std::system(fmt::format("cd '{}' && '{}' {} > '{}' 2>&1", src_.string(), exe_.string(), args,
-                                           log.string()).c_str());
+    const int rc = std::system(
+        fmt::format("cd '{}' && '{}' {} > '{}' 2>&1", src_.string(), exe_.string(), args, log.string())
+            .c_str());
     std::ifstream in(log);
     std::stringstream ss;
     ss << in.rdbuf();
@@ -48,9 +49,11 @@ class Commands : public ::testing::Test {
 
   fs::path matrix(const std::string& body) {
     const fs::path p = tmp_ / "m.toml";
-    std::ofstream(p) << fmt::format("[settings]\nroot = \"{}\"\n[scenes]\ns1 = \"verification/scenes/paper/s1_central.toml\"\n",
-                                    src_.string())
-                     << body;
+    std::ofstream(p)
+        << fmt::format(
+               "[settings]\nroot = \"{}\"\n[scenes]\ns1 = \"verification/scenes/paper/s1_central.toml\"\n",
+               src_.string())
+        << body;
     return p;
   }
 
@@ -59,8 +62,9 @@ class Commands : public ::testing::Test {
 
 // The S1 paper rows of the real matrix pass, and the JUnit file names scene, method and dt.
 TEST_F(Commands, VerifyNamesCasesBySceneMethodAndDt) {
-  const Result r = run(fmt::format("verify verification/matrix.toml --only 's1_central paper dt=0.01 vs' --out '{}' --jobs 2",
-                                   (tmp_ / "v").string()));
+  const Result r = run(
+      fmt::format("verify verification/matrix.toml --only 's1_central paper dt=0.01 vs' --out '{}' --jobs 2",
+                  (tmp_ / "v").string()));
   EXPECT_EQ(r.code, 0) << r.out;
   const std::string junit = read(tmp_ / "v" / "junit.xml");
   EXPECT_NE(junit.find("<testsuite name=\"s1_central\""), std::string::npos) << junit;
@@ -76,7 +80,8 @@ TEST_F(Commands, VerifyNamesCasesBySceneMethodAndDt) {
 TEST_F(Commands, SkippedRunFailsOnlyWhenRequired) {
   const fs::path root = tmp_ / "root";
   fs::create_directories(root / "verification/scenes/paper");
-  fs::copy_file(src_ / "verification/scenes/paper/s1_central.toml", root / "verification/scenes/paper/s1_central.toml");
+  fs::copy_file(src_ / "verification/scenes/paper/s1_central.toml",
+                root / "verification/scenes/paper/s1_central.toml");
   const std::string body = R"(
 [[case]]
 scene = "s1"
@@ -89,9 +94,11 @@ gates = [{ metric = "impulse", tol = 0.01, why = "a method whose program is miss
     std::string b = body;
     b.replace(b.find("%s"), 2, required ? "true" : "false");
     const fs::path m = tmp_ / "m_root.toml";
-    std::ofstream(m) << fmt::format("[settings]\nroot = \"{}\"\n[scenes]\ns1 = \"verification/scenes/paper/s1_central.toml\"\n",
-                                    root.string())
-                     << b;
+    std::ofstream(m)
+        << fmt::format(
+               "[settings]\nroot = \"{}\"\n[scenes]\ns1 = \"verification/scenes/paper/s1_central.toml\"\n",
+               root.string())
+        << b;
     const Result r = run(fmt::format("verify '{}' --out '{}'", m.string(), (tmp_ / "v").string()));
     EXPECT_EQ(r.code, required ? 1 : 0) << r.out;
     const std::string junit = read(tmp_ / "v" / "junit.xml");
@@ -135,9 +142,10 @@ gates = [{ metric = "impluse", tol = 0.01, why = "misspelt metric name" }]
 TEST_F(Commands, CompareRunsAndRejectsNonRuns) {
   const std::string s1 = "verification/scenes/paper/s1_central.toml";
   ASSERT_EQ(run(fmt::format("run {} --out '{}' --quiet", s1, (tmp_ / "a").string())).code, 0);
-  ASSERT_EQ(run(fmt::format("run {} --out '{}' --quiet --set time.dt=0.005", s1, (tmp_ / "b").string())).code, 0);
-  const Result r = run(fmt::format("compare '{}' '{}' --json '{}'", (tmp_ / "a").string(), (tmp_ / "b").string(),
-                                   (tmp_ / "c.json").string()));
+  ASSERT_EQ(run(fmt::format("run {} --out '{}' --quiet --set time.dt=0.005", s1, (tmp_ / "b").string())).code,
+            0);
+  const Result r = run(fmt::format("compare '{}' '{}' --json '{}'", (tmp_ / "a").string(),
+                                   (tmp_ / "b").string(), (tmp_ / "c.json").string()));
   EXPECT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("I.rel_linf: max_t |a-b| / max_t |b|"), std::string::npos) << r.out;
   EXPECT_TRUE(fs::exists(tmp_ / "c.json"));
@@ -165,11 +173,14 @@ TEST_F(Commands, SweepTabulatesEachStep) {
 // or nan fell back to the default, --grid 1e-9 died of std::bad_alloc, --mesh 0 and an unknown
 // reference exited 3 after starting runs.
 TEST_F(Commands, BadCompareAndSweepOptionsExitTwo) {
-  const std::string s1 = "verification/scenes/paper/s1_central.toml", s2 = "verification/scenes/paper/s2_transverse.toml";
+  const std::string s1 = "verification/scenes/paper/s1_central.toml",
+                    s2 = "verification/scenes/paper/s2_transverse.toml";
   const std::string a = (tmp_ / "a").string(), b = (tmp_ / "b").string();
   ASSERT_EQ(run(fmt::format("run {} --out '{}' --quiet", s1, a)).code, 0);
   ASSERT_EQ(run(fmt::format("run {} --out '{}' --quiet", s2, b)).code, 0);
-  struct Bad { std::string args, says; };
+  struct Bad {
+    std::string args, says;
+  };
   const std::vector<Bad> cases = {
       {"--grid 0", "--grid: expected a positive finite time (s), got '0'"},
       {"--grid nan", "--grid: expected a positive finite time (s), got 'nan'"},
@@ -185,17 +196,22 @@ TEST_F(Commands, BadCompareAndSweepOptionsExitTwo) {
   }
   // Runs of different scene files compare, with a warning.
   const Result diff = run(fmt::format("compare '{}' '{}' --json '{}'", a, b, (tmp_ / "c.json").string()));
-  EXPECT_NE(diff.out.find("warning: the runs are of different scene files (scene_sha256 differs"), std::string::npos)
+  EXPECT_NE(diff.out.find("warning: the runs are of different scene files (scene_sha256 differs"),
+            std::string::npos)
       << diff.out;
-  EXPECT_EQ(run(fmt::format("compare '{}' '{}' --json '{}'", a, a, (tmp_ / "c.json").string())).out.find("warning"),
-            std::string::npos);
+  EXPECT_EQ(
+      run(fmt::format("compare '{}' '{}' --json '{}'", a, a, (tmp_ / "c.json").string())).out.find("warning"),
+      std::string::npos);
   const Result mesh = run(fmt::format("sweep {} --dt 0.01 --mesh 0 --out '{}'", s1, (tmp_ / "sw").string()));
   EXPECT_EQ(mesh.code, 2) << mesh.out;
   EXPECT_NE(mesh.out.find("key 'mesh': expected an element multiplier 1..64"), std::string::npos) << mesh.out;
   EXPECT_FALSE(fs::exists(tmp_ / "sw" / "runs")) << "nothing runs before the input is checked";
-  const Result ref = run(fmt::format("sweep {} --dt 0.01 --reference bogus --out '{}'", s1, (tmp_ / "sw").string()));
+  const Result ref =
+      run(fmt::format("sweep {} --dt 0.01 --reference bogus --out '{}'", s1, (tmp_ / "sw").string()));
   EXPECT_EQ(ref.code, 2) << ref.out;
-  EXPECT_NE(ref.out.find("expected a method name (paper, exact, ida, fenicsx), got 'bogus'"), std::string::npos) << ref.out;
+  EXPECT_NE(ref.out.find("expected a method name (paper, exact, ida, fenicsx), got 'bogus'"),
+            std::string::npos)
+      << ref.out;
 }
 
 }  // namespace

@@ -40,17 +40,20 @@ void expect_same_run(const fs::path& a, const fs::path& b) {
 }
 
 int beamimpact(const std::string& args) {
-  return std::system(fmt::format("cd '{}' && '{}' {} > /dev/null 2>&1", BEAMIMPACT_SOURCE, BEAMIMPACT_EXE, args).c_str());
+  return std::system(
+      fmt::format("cd '{}' && '{}' {} > /dev/null 2>&1", BEAMIMPACT_SOURCE, BEAMIMPACT_EXE, args).c_str());
 }
 
 TEST(Determinism, RerunsGiveIdenticalFiles) {
   const fs::path dir = beamimpact::testing::temp_path("rerun");
-  for (const auto& [scene, method] : {std::pair{"s2_transverse", "paper"}, std::pair{"s2_transverse", "ida"},
-                                      std::pair{"s1_central", "exact"}, std::pair{"s4_oblique_45", "paper"}}) {
-    const fs::path a = dir / (std::string(scene) + method + "_a"), b = dir / (std::string(scene) + method + "_b");
+  for (const auto& [scene, method] :
+       {std::pair{"s2_transverse", "paper"}, std::pair{"s2_transverse", "ida"},
+        std::pair{"s1_central", "exact"}, std::pair{"s4_oblique_45", "paper"}}) {
+    const fs::path a = dir / (std::string(scene) + method + "_a"),
+                   b = dir / (std::string(scene) + method + "_b");
     for (const fs::path& out : {a, b})
-      ASSERT_EQ(beamimpact(fmt::format("run verification/scenes/paper/{}.toml --method {} --out '{}' --quiet", scene,
-                                       method, out.string())),
+      ASSERT_EQ(beamimpact(fmt::format("run verification/scenes/paper/{}.toml --method {} --out '{}' --quiet",
+                                       scene, method, out.string())),
                 0);
     expect_same_run(a, b);
   }

@@ -7,9 +7,9 @@
 #include <sstream>
 #include <thread>
 
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
-#include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
 
@@ -50,9 +50,10 @@ set = ["time.end=50000"]
 reference = {{ method = "paper", set = ["time.end=50000", "time.dt=0.005"] }}
 gates = [{{ metric = "impulse", tol = 0.1, why = "never evaluated: interrupted" }}]
 )",
-                                                BEAMIMPACT_SOURCE);
+                                               BEAMIMPACT_SOURCE);
   const std::string out = (dir / "v").string();
-  std::vector<std::string> args = {BEAMIMPACT_EXE, "verify", (dir / "m.toml").string(), "--out", out, "--jobs", "2"};
+  std::vector<std::string> args = {BEAMIMPACT_EXE, "verify", (dir / "m.toml").string(), "--out", out,
+                                   "--jobs",       "2"};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

@@ -34,10 +34,11 @@ nlohmann::json Comparison::to_json() const {
 
 std::string Comparison::to_text() const {
   std::string s = fmt::format("run:       {}\nreference: {}\n", run, reference);
-  s += fmt::format("compared on [{:.6g}, {:.6g}] s, common grid step {:.6g} s (linear interpolation, "
-                   "trapezoid integrals)\nforce window W = {:.6g} s, contact: R > {:.3g} N, samples closer "
-                   "than {:.6g} s merged into one interval\n\n",
-                   t0, t1, grid_step, window, force_threshold, merge_gap);
+  s += fmt::format(
+      "compared on [{:.6g}, {:.6g}] s, common grid step {:.6g} s (linear interpolation, "
+      "trapezoid integrals)\nforce window W = {:.6g} s, contact: R > {:.3g} N, samples closer "
+      "than {:.6g} s merged into one interval\n\n",
+      t0, t1, grid_step, window, force_threshold, merge_gap);
   s += fmt::format("{:<26} {:>13} {:>6} {:>13} {:>13}\n", "norm", "error", "unit", "run", "reference");
   for (const auto& n : norms) {
     const std::string v = n.value ? fmt::format("{:.4e}", *n.value) : "n/a";

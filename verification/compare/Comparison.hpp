@@ -13,24 +13,24 @@ namespace beamimpact::verification {
 
 /// @brief One error measure between a run (a) and its reference (b).
 struct Norm {
-  std::string name;                 ///< e.g. "R.rel_l2", "impulse", "contact_start"
-  std::optional<double> value;      ///< the error (>= 0); empty when it could not be computed
-  std::string unit;                 ///< "1" (relative), "s", "count", ...
-  std::string definition;           ///< how it is computed, in words and symbols
-  std::optional<double> a, b;       ///< the compared scalars (scalar errors only)
-  std::string unavailable;          ///< why value is empty
+  std::string name;             ///< e.g. "R.rel_l2", "impulse", "contact_start"
+  std::optional<double> value;  ///< the error (>= 0); empty when it could not be computed
+  std::string unit;             ///< "1" (relative), "s", "count", ...
+  std::string definition;       ///< how it is computed, in words and symbols
+  std::optional<double> a, b;   ///< the compared scalars (scalar errors only)
+  std::string unavailable;      ///< why value is empty
 };
 
 /// @brief All norms of one comparison and how they were computed.
 struct Comparison {
-  std::string run, reference;       ///< directories (or labels)
-  double t0 = 0.0, t1 = 0.0;        ///< s, the overlap of both histories compared
-  double grid_step = 0.0;           ///< s, spacing of the common grid
-  double window = 0.0;              ///< s, width of the force averaging window
-  double merge_gap = 0.0;           ///< s, contact samples closer than this form one interval
-  double force_threshold = 0.0;     ///< N, R above this counts as contact
+  std::string run, reference;    ///< directories (or labels)
+  double t0 = 0.0, t1 = 0.0;     ///< s, the overlap of both histories compared
+  double grid_step = 0.0;        ///< s, spacing of the common grid
+  double window = 0.0;           ///< s, width of the force averaging window
+  double merge_gap = 0.0;        ///< s, contact samples closer than this form one interval
+  double force_threshold = 0.0;  ///< N, R above this counts as contact
   std::vector<Norm> norms;
-  std::vector<std::string> notes;   ///< warnings (short overlap, missing columns, ...)
+  std::vector<std::string> notes;  ///< warnings (short overlap, missing columns, ...)
 
   /// @brief The norm of this name, or nullptr.
   const Norm* find(const std::string& name) const;

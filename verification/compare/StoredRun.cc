@@ -30,9 +30,9 @@ void check_times(const std::vector<double>& t, const std::string& file) {
   if (t.empty()) throw SceneError(file, "", "expected at least one data row after the header");
   for (std::size_t i = 1; i < t.size(); ++i) {
     if (!(t[i] > t[i - 1])) {
-      throw SceneError(file, "t", "expected strictly increasing times, row " + std::to_string(i + 2) +
-                                      " has t = " + std::to_string(t[i]) + " after " +
-                                      std::to_string(t[i - 1]));
+      throw SceneError(file, "t",
+                       "expected strictly increasing times, row " + std::to_string(i + 2) +
+                           " has t = " + std::to_string(t[i]) + " after " + std::to_string(t[i - 1]));
     }
   }
 }
@@ -51,7 +51,9 @@ void check_no_null(const nlohmann::json& j, const std::string& file, const std::
 void check_summary(const nlohmann::json& s, const std::string& file) {
   if (!s.is_object()) throw SceneError(file, "", "expected a JSON object");
   check_no_null(s, file, "");
-  auto fail = [&](const std::string& key, const std::string& what) { throw SceneError(file, key, "expected " + what); };
+  auto fail = [&](const std::string& key, const std::string& what) {
+    throw SceneError(file, key, "expected " + what);
+  };
   auto pair_of_numbers = [](const nlohmann::json& v) {
     return v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number();
   };
@@ -62,7 +64,8 @@ void check_summary(const nlohmann::json& s, const std::string& file) {
       const auto& c = s["contacts"][k];
       const std::string key = "contacts/" + std::to_string(k);
       if (!c.is_object()) fail(key, "a contact object");
-      if (c.contains("impulse_normal") && !c["impulse_normal"].is_number()) fail(key + "/impulse_normal", "a number (N s)");
+      if (c.contains("impulse_normal") && !c["impulse_normal"].is_number())
+        fail(key + "/impulse_normal", "a number (N s)");
       if (c.contains("intervals")) {
         if (!c["intervals"].is_array()) fail(key + "/intervals", "an array of [start, end] times (s)");
         for (const auto& iv : c["intervals"])
@@ -118,15 +121,17 @@ StoredRun StoredRun::read(const std::filesystem::path& dir) {
     if (line.empty() || line == "\r") continue;
     const auto cells = split_csv(line);
     if (cells.size() != names.size()) {
-      throw SceneError(csv, "", "row " + std::to_string(row) + " has " + std::to_string(cells.size()) +
-                                    " cells, expected " + std::to_string(names.size()));
+      throw SceneError(csv, "",
+                       "row " + std::to_string(row) + " has " + std::to_string(cells.size()) +
+                           " cells, expected " + std::to_string(names.size()));
     }
     for (std::size_t c = 0; c < cells.size(); ++c) {
       char* end = nullptr;
       const double v = std::strtod(cells[c].c_str(), &end);
       if (cells[c].empty() || end != cells[c].c_str() + cells[c].size() || !std::isfinite(v)) {
-        throw SceneError(csv, names[c], "row " + std::to_string(row) + ": expected a finite number, found '" +
-                                            cells[c] + "'");
+        throw SceneError(
+            csv, names[c],
+            "row " + std::to_string(row) + ": expected a finite number, found '" + cells[c] + "'");
       }
       cols[c]->push_back(v);
     }
@@ -135,8 +140,8 @@ StoredRun StoredRun::read(const std::filesystem::path& dir) {
   return h;
 }
 
-StoredRun StoredRun::from_columns(std::map<std::string, std::vector<double>> columns,
-                                    nlohmann::json summary, std::string label) {
+StoredRun StoredRun::from_columns(std::map<std::string, std::vector<double>> columns, nlohmann::json summary,
+                                  std::string label) {
   StoredRun h;
   h.label_ = std::move(label);
   if (!columns.count("t")) throw SceneError(h.label_, "t", "expected a time column");

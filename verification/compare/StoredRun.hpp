@@ -25,8 +25,8 @@ class StoredRun {
 
   /// @brief Builds a history from columns in memory (tests, perturbations); `t` must be present.
   static StoredRun from_columns(std::map<std::string, std::vector<double>> columns,
-                                 nlohmann::json summary = nlohmann::json::object(),
-                                 std::string label = "memory");
+                                nlohmann::json summary = nlohmann::json::object(),
+                                std::string label = "memory");
 
   /// @brief Times of the rows (s), strictly increasing.
   const std::vector<double>& t() const { return columns_.at("t"); }

@@ -44,7 +44,11 @@ TEST(StoredRun, ReadsColumnsAndContacts) {
 }
 
 TEST(StoredRun, BadInputNamesFileAndColumn) {
-  struct Case { std::string name, csv; bool summary; std::string expect; };
+  struct Case {
+    std::string name, csv;
+    bool summary;
+    std::string expect;
+  };
   const std::vector<Case> cases = {
       {"noR", "t,gap\n0,1\n", true, "key 'R'"},
       {"nan", "t,R\n0,0\n0.01,nan\n", true, "row 3"},
@@ -64,12 +68,17 @@ TEST(StoredRun, BadInputNamesFileAndColumn) {
 
 TEST(StoredRun, BadSummaryNamesTheKey) {
   // Each was read (null as 0) or ended in a raw JSON library error (type_error.304, exit 3).
-  struct Case { std::string name, summary, expect; };
+  struct Case {
+    std::string name, summary, expect;
+  };
   const std::vector<Case> cases = {
-      {"null", R"({"method": "paper", "energy_final": null})", "key '/energy_final': expected a value, found null"},
-      {"intervals", R"({"contacts": [{"intervals": "x"}]})", "key 'contacts/0/intervals': expected an array of [start, end]"},
+      {"null", R"({"method": "paper", "energy_final": null})",
+       "key '/energy_final': expected a value, found null"},
+      {"intervals", R"({"contacts": [{"intervals": "x"}]})",
+       "key 'contacts/0/intervals': expected an array of [start, end]"},
       {"interval3", R"({"contacts": [{"intervals": [[0, 1, 2]]}]})", "key 'contacts/0/intervals'"},
-      {"impulse", R"({"contacts": [{"impulse_normal": "4"}]})", "key 'contacts/0/impulse_normal': expected a number"},
+      {"impulse", R"({"contacts": [{"impulse_normal": "4"}]})",
+       "key 'contacts/0/impulse_normal': expected a number"},
       {"bodies", R"({"bodies": []})", "key 'bodies': expected an object"},
       {"velocity", R"({"bodies": {"A": {"final_velocity": [1, 2, 3]}}})", "key 'bodies/A/final_velocity'"},
       {"array", "[1]", "expected a JSON object"},

@@ -43,20 +43,25 @@ void add_series_norms(Comparison& cmp, const std::string& name, const Series& a,
   const double nd2 = l2_norm(g.t, d), ndi = linf_norm(d);
   if (want_l2) {
     const std::string def = "sqrt(int |a-b|^2 dt) / sqrt(int |b|^2 dt) of " + what;
-    if (nb2 > 0.0) cmp.norms.push_back({name + ".rel_l2", nd2 / nb2, "1", def, {}, {}, {}});
-    else cmp.norms.push_back(unavailable(name + ".rel_l2", "1", def,
-                                         fmt::format("reference is identically zero (absolute L2 = {:.3e})", nd2)));
+    if (nb2 > 0.0)
+      cmp.norms.push_back({name + ".rel_l2", nd2 / nb2, "1", def, {}, {}, {}});
+    else
+      cmp.norms.push_back(
+          unavailable(name + ".rel_l2", "1", def,
+                      fmt::format("reference is identically zero (absolute L2 = {:.3e})", nd2)));
   }
   const std::string def = "max_t |a-b| / max_t |b| of " + what;
-  if (nbi > 0.0) cmp.norms.push_back({name + ".rel_linf", ndi / nbi, "1", def, {}, {}, {}});
-  else cmp.norms.push_back(unavailable(name + ".rel_linf", "1", def,
-                                       fmt::format("reference is identically zero (absolute max = {:.3e})", ndi)));
+  if (nbi > 0.0)
+    cmp.norms.push_back({name + ".rel_linf", ndi / nbi, "1", def, {}, {}, {}});
+  else
+    cmp.norms.push_back(
+        unavailable(name + ".rel_linf", "1", def,
+                    fmt::format("reference is identically zero (absolute max = {:.3e})", ndi)));
 }
 
 void add_vector_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, const Grid& g,
                       const std::string& base, int k, const std::string& what) {
-  const std::vector<std::string> cols = {contact_column(base + "_x", k),
-                                         contact_column(base + "_y", k)};
+  const std::vector<std::string> cols = {contact_column(base + "_x", k), contact_column(base + "_y", k)};
   const std::string name = contact_column(base, k);
   for (const StoredRun* h : {&a, &b}) {
     if (auto m = missing_column(*h, cols)) {
@@ -67,13 +72,15 @@ void add_vector_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, c
       return;
     }
   }
-  add_series_norms(cmp, name, resample(a, cols, g), resample(b, cols, g), g, what + " (Euclidean norm of x, y)");
+  add_series_norms(cmp, name, resample(a, cols, g), resample(b, cols, g), g,
+                   what + " (Euclidean norm of x, y)");
 }
 
 /// The summary.json entry of contact k (1-based), or nullptr.
 const nlohmann::json* summary_contact(const StoredRun& h, int k) {
   const auto& s = h.summary();
-  if (!s.contains("contacts") || !s.at("contacts").is_array() || s.at("contacts").size() < static_cast<std::size_t>(k))
+  if (!s.contains("contacts") || !s.at("contacts").is_array() ||
+      s.at("contacts").size() < static_cast<std::size_t>(k))
     return nullptr;
   return &s.at("contacts").at(static_cast<std::size_t>(k - 1));
 }
@@ -87,8 +94,10 @@ std::vector<Interval> intervals_of(const StoredRun& h, const nlohmann::json* sc,
     std::vector<Interval> out;
     for (const auto& iv : sc->at("intervals")) {
       const double t0 = iv.at(0).get<double>(), t1 = iv.at(1).get<double>();
-      if (!out.empty() && t0 - out.back().end < merge_gap) out.back().end = t1;
-      else out.push_back({t0, t1, 0, 0});
+      if (!out.empty() && t0 - out.back().end < merge_gap)
+        out.back().end = t1;
+      else
+        out.push_back({t0, t1, 0, 0});
     }
     return out;
   }
@@ -106,8 +115,10 @@ double peak_excluding_closure(const std::vector<double>& R, double threshold) {
 
 Norm relative_scalar(std::string name, double a, double b, std::string definition, std::string unit = "1") {
   Norm n{std::move(name), std::nullopt, std::move(unit), std::move(definition), a, b, {}};
-  if (b != 0.0) n.value = std::abs(a - b) / std::abs(b);
-  else n.unavailable = "reference value is zero";
+  if (b != 0.0)
+    n.value = std::abs(a - b) / std::abs(b);
+  else
+    n.unavailable = "reference value is zero";
   return n;
 }
 
@@ -131,9 +142,10 @@ void add_contact_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, 
                    "the running impulse I(t) = int_0^t " + R + " dt (column " + J +
                        " when a run has it, else the trapezoid rule on its rows)",
                    /*want_l2=*/false);
-  add_series_norms(cmp, "Rw" + sfx, {window_average(a.t(), Ia, cmp.window, g.t)},
-                   {window_average(b.t(), Ib, cmp.window, g.t)}, g,
-                   fmt::format("the window-averaged force (I(t+W/2) - I(t-W/2))/W, W = {:.6g} s", cmp.window));
+  add_series_norms(
+      cmp, "Rw" + sfx, {window_average(a.t(), Ia, cmp.window, g.t)},
+      {window_average(b.t(), Ib, cmp.window, g.t)}, g,
+      fmt::format("the window-averaged force (I(t+W/2) - I(t-W/2))/W, W = {:.6g} s", cmp.window));
 
   // Scalars. Impulse and contact intervals come from summary.json when the method wrote them
   // (its own integral and event times: exact for adaptive and analytic methods, whose sampled
@@ -152,16 +164,22 @@ void add_contact_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, 
   const auto ivb = intervals_of(b, sb, Rb, thr, cmp.merge_gap);
   const std::string rule = fmt::format(
       "(intervals: summary.json contacts[].intervals, else rows with R > {:.3g} N; intervals closer than "
-      "{:.6g} s merged)", thr, cmp.merge_gap);
-  cmp.norms.push_back({"impacts" + sfx, std::abs(static_cast<double>(iva.size()) - static_cast<double>(ivb.size())),
-                       "count", "|n_a - n_b|, n = number of contact intervals " + rule,
-                       static_cast<double>(iva.size()), static_cast<double>(ivb.size()), {}});
+      "{:.6g} s merged)",
+      thr, cmp.merge_gap);
+  cmp.norms.push_back({"impacts" + sfx,
+                       std::abs(static_cast<double>(iva.size()) - static_cast<double>(ivb.size())),
+                       "count",
+                       "|n_a - n_b|, n = number of contact intervals " + rule,
+                       static_cast<double>(iva.size()),
+                       static_cast<double>(ivb.size()),
+                       {}});
   for (const bool start : {true, false}) {
     const std::string name = (start ? "contact_start" : "contact_end") + sfx;
     const std::string def = std::string("|t_a - t_b| (s), t = ") + (start ? "start" : "end") +
                             " of the first contact interval " + rule;
     if (iva.empty() || ivb.empty()) {
-      cmp.norms.push_back(unavailable(name, "s", def, iva.empty() ? "no contact in the run" : "no contact in the reference"));
+      cmp.norms.push_back(
+          unavailable(name, "s", def, iva.empty() ? "no contact in the run" : "no contact in the reference"));
       continue;
     }
     const double ta = start ? iva[0].start : iva[0].end, tb = start ? ivb[0].start : ivb[0].end;
@@ -169,7 +187,8 @@ void add_contact_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, 
   }
   cmp.norms.push_back(relative_scalar(
       "peak_R" + sfx, peak_excluding_closure(Ra, thr), peak_excluding_closure(Rb, thr),
-      "|P_a - P_b| / P_b, P = max R over the rows, every closure row (in contact after an open one) left out (N); "
+      "|P_a - P_b| / P_b, P = max R over the rows, every closure row (in contact after an open one) left out "
+      "(N); "
       "from the rows, not summary.json, so that penalty methods' sub-step closure spikes do not count"));
 
   add_vector_norms(cmp, a, b, g, "ua", k, "the striker contact node displacement ua (m)");
@@ -202,20 +221,25 @@ void add_final_velocity(Comparison& cmp, const StoredRun& a, const StoredRun& b)
       den = std::max(den, std::hypot(vb[0], vb[1]));
     }
   } catch (const std::exception& e) {
-    cmp.norms.push_back(unavailable("final_velocity", "1", def, std::string("bad summary.json: ") + e.what()));
+    cmp.norms.push_back(
+        unavailable("final_velocity", "1", def, std::string("bad summary.json: ") + e.what()));
     return;
   }
   Norm n{"final_velocity", std::nullopt, "1", def, num, den, {}};
-  if (den > 0.0) n.value = num / den;
-  else n.unavailable = "reference bodies all at rest at the end";
+  if (den > 0.0)
+    n.value = num / den;
+  else
+    n.unavailable = "reference bodies all at rest at the end";
   cmp.norms.push_back(n);
 }
 
 void add_energy(Comparison& cmp, const StoredRun& a, const StoredRun& b) {
-  const std::string def = "|E_a(t1) - E_b(t1)| / E_b(first row), E = kinetic + strain (J), t1 = end of the overlap";
+  const std::string def =
+      "|E_a(t1) - E_b(t1)| / E_b(first row), E = kinetic + strain (J), t1 = end of the overlap";
   for (const StoredRun* h : {&a, &b}) {
     if (auto m = missing_column(*h, {"kinetic", "strain"})) {
-      cmp.norms.push_back(unavailable("energy_final", "1", def, h->label() + "/history.csv has no column '" + *m + "'"));
+      cmp.norms.push_back(
+          unavailable("energy_final", "1", def, h->label() + "/history.csv has no column '" + *m + "'"));
       return;
     }
   }
@@ -226,8 +250,10 @@ void add_energy(Comparison& cmp, const StoredRun& a, const StoredRun& b) {
   };
   const double e0 = b.column("kinetic").front() + b.column("strain").front();
   Norm n{"energy_final", std::nullopt, "1", def, energy_at(a, cmp.t1), energy_at(b, cmp.t1), {}};
-  if (e0 > 0.0) n.value = std::abs(*n.a - *n.b) / e0;
-  else n.unavailable = "reference starts with zero energy";
+  if (e0 > 0.0)
+    n.value = std::abs(*n.a - *n.b) / e0;
+  else
+    n.unavailable = "reference starts with zero energy";
   cmp.norms.push_back(n);
 }
 
@@ -248,9 +274,11 @@ bool known_norm(const std::string& name) {
     if (std::stoi(base.substr(us + 1)) < 2) return false;
     base = base.substr(0, us);  // "R_2" -> "R"
   }
-  if (kind.empty()) return std::find(per_contact_scalar.begin(), per_contact_scalar.end(), base) != per_contact_scalar.end();
+  if (kind.empty())
+    return std::find(per_contact_scalar.begin(), per_contact_scalar.end(), base) != per_contact_scalar.end();
   if (base == "I") return kind == "rel_linf";
-  const bool series = std::find(per_contact_series.begin(), per_contact_series.end(), base) != per_contact_series.end();
+  const bool series =
+      std::find(per_contact_series.begin(), per_contact_series.end(), base) != per_contact_series.end();
   return series && (kind == "rel_l2" || kind == "rel_linf");
 }
 
@@ -261,21 +289,24 @@ Comparison compare_runs(const StoredRun& a, const StoredRun& b, const CompareOpt
   cmp.t0 = std::max(a.t().front(), b.t().front());
   cmp.t1 = std::min(a.t().back(), b.t().back());
   if (!(cmp.t1 > cmp.t0)) {
-    throw SceneError(a.label(), "t", fmt::format("expected a time span overlapping the reference's [{}, {}] s, "
-                                                 "found [{}, {}] s", b.t().front(), b.t().back(),
-                                                 a.t().front(), a.t().back()));
+    throw SceneError(a.label(), "t",
+                     fmt::format("expected a time span overlapping the reference's [{}, {}] s, "
+                                 "found [{}, {}] s",
+                                 b.t().front(), b.t().back(), a.t().front(), a.t().back()));
   }
   const double ha = a.output_step(), hb = b.output_step();
   for (const StoredRun* h : {&a, &b})
-    if (!(h->output_step() > 0.0)) throw SceneError(h->label(), "t", "expected at least two rows in history.csv");
+    if (!(h->output_step() > 0.0))
+      throw SceneError(h->label(), "t", "expected at least two rows in history.csv");
   const double fine = std::min(ha, hb), coarse = std::max(ha, hb);
   cmp.grid_step = options.grid_step != 0.0 ? options.grid_step : fine;
   cmp.window = options.window != 0.0 ? options.window : 10.0 * coarse;
   cmp.merge_gap = options.merge_gap != 0.0 ? options.merge_gap : 3.5 * coarse;
   const double span_b = b.t().back() - b.t().front();
   if (cmp.t1 - cmp.t0 < 0.99 * span_b) {
-    cmp.notes.push_back(fmt::format("the runs overlap on [{:.6g}, {:.6g}] s only, the reference spans [{:.6g}, {:.6g}] s",
-                                    cmp.t0, cmp.t1, b.t().front(), b.t().back()));
+    cmp.notes.push_back(
+        fmt::format("the runs overlap on [{:.6g}, {:.6g}] s only, the reference spans [{:.6g}, {:.6g}] s",
+                    cmp.t0, cmp.t1, b.t().front(), b.t().back()));
   }
   // Bad options are bad input (CLI: compare --grid/--window/--merge), not a silent default.
   for (const auto& [key, v] : {std::pair{"--grid", options.grid_step}, std::pair{"--window", options.window},
@@ -284,17 +315,20 @@ Comparison compare_runs(const StoredRun& a, const StoredRun& b, const CompareOpt
       throw SceneError(a.label(), key, fmt::format("expected a positive finite time (s), got {}", v));
   constexpr double kMostGridPoints = 1e8;  // 0.8 GB per resampled series: beyond any output
   if ((cmp.t1 - cmp.t0) / cmp.grid_step > kMostGridPoints)
-    throw SceneError(a.label(), "--grid", fmt::format("expected a step giving at most {:g} grid points on [{:g}, {:g}] s, "
-                                                      "got {:g} s", kMostGridPoints, cmp.t0, cmp.t1, cmp.grid_step));
+    throw SceneError(a.label(), "--grid",
+                     fmt::format("expected a step giving at most {:g} grid points on [{:g}, {:g}] s, "
+                                 "got {:g} s",
+                                 kMostGridPoints, cmp.t0, cmp.t1, cmp.grid_step));
   const auto sha = [](const StoredRun& h) { return h.summary().value("scene_sha256", std::string()); };
   if (!sha(a).empty() && !sha(b).empty() && sha(a) != sha(b))
-    cmp.notes.push_back("warning: the runs are of different scene files (scene_sha256 differs: " + sha(a).substr(0, 12) +
-                        " vs " + sha(b).substr(0, 12) + ")");
+    cmp.notes.push_back("warning: the runs are of different scene files (scene_sha256 differs: " +
+                        sha(a).substr(0, 12) + " vs " + sha(b).substr(0, 12) + ")");
   const Grid g{uniform_grid(cmp.t0, cmp.t1, cmp.grid_step)};
 
   const int na = a.contacts(), nb = b.contacts();
-  if (na != nb) cmp.notes.push_back(fmt::format("the run has {} contact(s), the reference {}: compared the first {}",
-                                                na, nb, std::min(na, nb)));
+  if (na != nb)
+    cmp.notes.push_back(fmt::format("the run has {} contact(s), the reference {}: compared the first {}", na,
+                                    nb, std::min(na, nb)));
   for (int k = 1; k <= std::min(na, nb); ++k) add_contact_norms(cmp, a, b, g, k, options.threshold);
   add_final_velocity(cmp, a, b);
   add_energy(cmp, a, b);

@@ -9,10 +9,10 @@ namespace beamimpact::verification {
 
 /// @brief Settings of a comparison; zero means "derive from the histories" (written in the output).
 struct CompareOptions {
-  double grid_step = 0.0;     ///< s; default: the finer of the two output steps
-  double window = 0.0;        ///< s; default: 10 x the coarser output step
-  double merge_gap = 0.0;     ///< s; default: 3.5 x the coarser output step (up to 2 open samples)
-  double threshold = 1e-6;    ///< R > threshold x max R of the reference counts as contact
+  double grid_step = 0.0;   ///< s; default: the finer of the two output steps
+  double window = 0.0;      ///< s; default: 10 x the coarser output step
+  double merge_gap = 0.0;   ///< s; default: 3.5 x the coarser output step (up to 2 open samples)
+  double threshold = 1e-6;  ///< R > threshold x max R of the reference counts as contact
 };
 
 /// @brief Compares run `a` with reference `b`: relative L2 and L-infinity norms over time of the

@@ -30,7 +30,7 @@ TEST(CompareRuns, ShiftedStep) {
   const auto a = synthetic(h, T, [&](double t) { return t >= ts - h / 2 ? P : 0.0; });
   const auto b = synthetic(h, T, [&](double t) { return t >= ts + d - h / 2 ? P : 0.0; });
   const Comparison c = compare_runs(a, b);
-  EXPECT_NEAR(c.grid_step, h, 1e-12);  // rows are i h: spacings carry round-off
+  EXPECT_NEAR(c.grid_step, h, 1e-12);    // rows are i h: spacings carry round-off
   EXPECT_NEAR(c.window, 10 * h, 1e-12);  // default: 10 output steps
   // The sampled step is a one-row ramp in both runs, the same shape shifted by d: the impulse
   // difference is exactly P d; its reference maximum is P (T - t_s - d) + P h / 2 (half-row ramp).
@@ -56,7 +56,8 @@ TEST(CompareRuns, ScaledForce) {
   const auto b = synthetic(0.01, 4.0, pulse);
   const auto a = synthetic(0.01, 4.0, [&](double t) { return (1 + s) * pulse(t); });
   const Comparison c = compare_runs(a, b);
-  for (const char* n : {"R.rel_l2", "R.rel_linf", "I.rel_linf", "Rw.rel_l2", "Rw.rel_linf", "impulse", "peak_R"})
+  for (const char* n :
+       {"R.rel_l2", "R.rel_linf", "I.rel_linf", "Rw.rel_l2", "Rw.rel_linf", "impulse", "peak_R"})
     EXPECT_NEAR(value(c, n), s, 1e-12) << n;
   EXPECT_EQ(value(c, "contact_start"), 0.0);
   EXPECT_EQ(value(c, "impacts"), 0.0);
@@ -76,7 +77,7 @@ TEST(CompareRuns, ResampledSineOnDifferentGrids) {
   EXPECT_NEAR(c.grid_step, hb, 1e-12);  // the finer of the two output steps
   const double bound = (ha * ha + hb * hb) / 8 * w * w;
   const double e = value(c, "ua.rel_linf");
-  EXPECT_GT(e, 0.0);  // the grids really differ
+  EXPECT_GT(e, 0.0);           // the grids really differ
   EXPECT_LT(e, bound * 1.01);  // bound relative to max|b| = 1 (+1% for max|b| sampled below 1)
 
   const double delta = 0.01;
@@ -149,7 +150,8 @@ TEST(CompareRuns, KnownNormMatchesProducedNames) {
   const Comparison c = compare_runs(h, h);
   for (const auto& n : c.norms) EXPECT_TRUE(known_norm(n.name)) << n.name;
   EXPECT_NE(c.find("impulse_2"), nullptr);
-  for (const char* bad : {"R.rel_l1", "impulse_1", "I.rel_l2", "Impulse", "ua", "R_x.rel_l2"}) EXPECT_FALSE(known_norm(bad)) << bad;
+  for (const char* bad : {"R.rel_l1", "impulse_1", "I.rel_l2", "Impulse", "ua", "R_x.rel_l2"})
+    EXPECT_FALSE(known_norm(bad)) << bad;
 }
 
 }  // namespace
@@ -164,9 +166,11 @@ TEST(CompareRuns, SummaryScalarsTakePrecedence) {
   auto f = [](double t) { return t > 0.5 && t < 1.5 ? 1.0 : 0.0; };
   auto a = testing::synthetic(0.01, 2.0, f);
   auto b = testing::synthetic(0.01, 2.0, f);
-  const nlohmann::json sb = {{"contacts", {{{"impulse_normal", 1.0}, {"intervals", {{0.5, 1.0}, {1.2, 1.5}}}}}}};
+  const nlohmann::json sb = {
+      {"contacts", {{{"impulse_normal", 1.0}, {"intervals", {{0.5, 1.0}, {1.2, 1.5}}}}}}};
   const nlohmann::json sa = {{"contacts", {{{"impulse_normal", 1.1}, {"intervals", {{0.503, 1.5}}}}}}};
-  const Comparison c = compare_runs(StoredRun::from_columns(a.columns(), sa), StoredRun::from_columns(b.columns(), sb));
+  const Comparison c =
+      compare_runs(StoredRun::from_columns(a.columns(), sa), StoredRun::from_columns(b.columns(), sb));
   EXPECT_NEAR(*c.find("impulse")->value, 0.1, 1e-12);
   EXPECT_NEAR(*c.find("contact_start")->value, 0.003, 1e-12);
   EXPECT_NEAR(*c.find("contact_end")->value, 0.5, 1e-12);

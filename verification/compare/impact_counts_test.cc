@@ -61,12 +61,14 @@ TEST_P(ImpactCounts, PaperCountsTheExactSolutionsCollisions) {
   std::printf("%s dt=%g: paper %s| exact %s\n", k.scene, k.dt, list(ip).c_str(), list(ie).c_str());
   ASSERT_FALSE(ie.empty());
   EXPECT_EQ(merged_count(ip, kMergeGap), merged_count(ie, kMergeGap))
-      << k.scene << " dt=" << k.dt << " (merge gap " << kMergeGap << " s): paper " << list(ip) << ", exact " << list(ie);
+      << k.scene << " dt=" << k.dt << " (merge gap " << kMergeGap << " s): paper " << list(ip) << ", exact "
+      << list(ie);
 }
 
 INSTANTIATE_TEST_SUITE_P(PaperScenes, ImpactCounts,
                          ::testing::Values(CountCase{"s1_central", 0.01}, CountCase{"s1_central", 0.0025},
-                                           CountCase{"s2_transverse", 0.01}, CountCase{"s2_transverse", 0.0025}),
+                                           CountCase{"s2_transverse", 0.01},
+                                           CountCase{"s2_transverse", 0.0025}),
                          [](const ::testing::TestParamInfo<CountCase>& i) {
                            return std::string(i.param.scene) + "_" + std::to_string(i.index);
                          });

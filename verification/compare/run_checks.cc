@@ -25,7 +25,8 @@ double max_over_rows(std::size_t rows, F f) {
 }
 
 void energy(const StoredRun& run, Comparison& c) {
-  Norm band = make("energy_band", "1", "max_t |K + S + D - E0| / E0: kinetic + strain + dissipated against the initial energy");
+  Norm band = make("energy_band", "1",
+                   "max_t |K + S + D - E0| / E0: kinetic + strain + dissipated against the initial energy");
   Norm growth = make("energy_growth", "1", "max_t max(0, K + S + D - E0) / E0: energy created (instability)");
   for (const char* col : {"kinetic", "strain", "dissipated"})
     if (!run.has(col)) band.unavailable = growth.unavailable = std::string("no column ") + col;
@@ -35,8 +36,10 @@ void energy(const StoredRun& run, Comparison& c) {
     const auto& D = run.column("dissipated");
     const double E0 = K[0] + S[0];
     if (E0 > 0.0) {
-      band.value = max_over_rows(K.size(), [&](std::size_t i) { return std::abs(K[i] + S[i] + D[i] - E0) / E0; });
-      growth.value = max_over_rows(K.size(), [&](std::size_t i) { return std::max(0.0, K[i] + S[i] + D[i] - E0) / E0; });
+      band.value =
+          max_over_rows(K.size(), [&](std::size_t i) { return std::abs(K[i] + S[i] + D[i] - E0) / E0; });
+      growth.value =
+          max_over_rows(K.size(), [&](std::size_t i) { return std::max(0.0, K[i] + S[i] + D[i] - E0) / E0; });
     } else {
       band.unavailable = growth.unavailable = "initial energy is zero";
     }
@@ -46,8 +49,10 @@ void energy(const StoredRun& run, Comparison& c) {
 }
 
 void contact_forces(const StoredRun& run, Comparison& c) {
-  Norm tension = make("tension", "1", "max over contacts and rows of max(0, -R) / peak R: a contact never pulls");
-  Norm cone = make("friction_cone", "1", "max over contacts and rows of max(0, |tau| - mu R) / peak R: Coulomb's cone");
+  Norm tension =
+      make("tension", "1", "max over contacts and rows of max(0, -R) / peak R: a contact never pulls");
+  Norm cone = make("friction_cone", "1",
+                   "max over contacts and rows of max(0, |tau| - mu R) / peak R: Coulomb's cone");
   const nlohmann::json& contacts = run.summary().value("contacts", nlohmann::json::array());
   double t = 0.0, f = 0.0;
   for (int k = 1; k <= run.contacts(); ++k) {
@@ -74,7 +79,8 @@ void contact_forces(const StoredRun& run, Comparison& c) {
 }
 
 void geometry_and_momentum(const StoredRun& run, Comparison& c) {
-  Norm pen = make("penetration", "m", "max over contacts of max(0, -real_gap_min): real penetration, from the deformed geometry");
+  Norm pen = make("penetration", "m",
+                  "max over contacts of max(0, -real_gap_min): real penetration, from the deformed geometry");
   const nlohmann::json& contacts = run.summary().value("contacts", nlohmann::json::array());
   double p = 0.0;
   for (const auto& k : contacts) {
@@ -87,13 +93,16 @@ void geometry_and_momentum(const StoredRun& run, Comparison& c) {
   if (pen.unavailable.empty()) pen.value = p;
   c.norms.push_back(pen);
 
-  Norm mom = make("momentum_drift", "1", "momentum_drift_max / |p(0)|: total momentum change (no support acting)");
+  Norm mom =
+      make("momentum_drift", "1", "momentum_drift_max / |p(0)|: total momentum change (no support acting)");
   if (!run.has("px") || !run.has("py") || !run.summary().contains("momentum_drift_max")) {
     mom.unavailable = "no px/py columns or momentum_drift_max";
   } else {
     const double p0 = std::hypot(run.column("px")[0], run.column("py")[0]);
-    if (p0 > 0.0) mom.value = run.summary()["momentum_drift_max"].get<double>() / p0;
-    else mom.unavailable = "zero initial momentum";
+    if (p0 > 0.0)
+      mom.value = run.summary()["momentum_drift_max"].get<double>() / p0;
+    else
+      mom.unavailable = "zero initial momentum";
   }
   c.norms.push_back(mom);
 }
@@ -101,8 +110,8 @@ void geometry_and_momentum(const StoredRun& run, Comparison& c) {
 }  // namespace
 
 const std::vector<std::string>& check_names() {
-  static const std::vector<std::string> n = {"energy_band", "energy_growth", "tension", "friction_cone",
-                                             "penetration", "momentum_drift"};
+  static const std::vector<std::string> n = {"energy_band",   "energy_growth", "tension",
+                                             "friction_cone", "penetration",   "momentum_drift"};
   return n;
 }
 

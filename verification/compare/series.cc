@@ -11,7 +11,8 @@ std::vector<double> uniform_grid(double t0, double t1, double h) {
   // Round up so that the spacing never exceeds h; guard against round-off adding a point.
   const auto n = static_cast<std::size_t>(std::max(1.0, std::ceil((t1 - t0) / h - 1e-9)));
   std::vector<double> g(n + 1);
-  for (std::size_t i = 0; i <= n; ++i) g[i] = t0 + (t1 - t0) * static_cast<double>(i) / static_cast<double>(n);
+  for (std::size_t i = 0; i <= n; ++i)
+    g[i] = t0 + (t1 - t0) * static_cast<double>(i) / static_cast<double>(n);
   return g;
 }
 
@@ -22,8 +23,14 @@ std::vector<double> interpolate(const std::vector<double>& t, const std::vector<
   std::size_t j = 0;  // `at` is increasing in all uses; keep a moving bracket, fall back to search
   for (std::size_t i = 0; i < at.size(); ++i) {
     const double x = at[i];
-    if (x <= t.front()) { out[i] = y.front(); continue; }
-    if (x >= t.back()) { out[i] = y.back(); continue; }
+    if (x <= t.front()) {
+      out[i] = y.front();
+      continue;
+    }
+    if (x >= t.back()) {
+      out[i] = y.back();
+      continue;
+    }
     if (j >= t.size() - 1 || t[j] > x) j = 0;
     if (t[j + 1] < x) j = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), x) - t.begin()) - 1;
     const double w = (x - t[j]) / (t[j + 1] - t[j]);
@@ -67,8 +74,8 @@ Series difference(const Series& a, const Series& b) {
   return d;
 }
 
-std::vector<double> window_average(const std::vector<double>& t, const std::vector<double>& I,
-                                   double W, const std::vector<double>& at) {
+std::vector<double> window_average(const std::vector<double>& t, const std::vector<double>& I, double W,
+                                   const std::vector<double>& at) {
   std::vector<double> lo(at.size()), hi(at.size());
   for (std::size_t i = 0; i < at.size(); ++i) {
     lo[i] = at[i] - 0.5 * W;

@@ -36,8 +36,8 @@ Series difference(const Series& a, const Series& b);
 /// @brief Window average (1/W) int_{t-W/2}^{t+W/2} y dt at the times of `at`, from the running
 /// integral I of y on its own grid t: (I(t+W/2) - I(t-W/2)) / W, with I held constant beyond the
 /// ends of the record (y treated as zero outside).
-std::vector<double> window_average(const std::vector<double>& t, const std::vector<double>& I,
-                                   double W, const std::vector<double>& at);
+std::vector<double> window_average(const std::vector<double>& t, const std::vector<double>& I, double W,
+                                   const std::vector<double>& at);
 
 /// @brief One contact interval [start, end] (s) and the row index of its first sample.
 struct Interval {

@@ -24,7 +24,10 @@ TEST(Series, InterpolationIsExactForLines) {
 
 TEST(Series, RunningIntegralOfLineIsExact) {
   std::vector<double> t, y;
-  for (int i = 0; i <= 10; ++i) { t.push_back(0.1 * i); y.push_back(3.0 * 0.1 * i); }
+  for (int i = 0; i <= 10; ++i) {
+    t.push_back(0.1 * i);
+    y.push_back(3.0 * 0.1 * i);
+  }
   const auto I = running_integral(t, y);  // trapezoid is exact for linear integrands: 1.5 t^2
   EXPECT_NEAR(I.back(), 1.5, 1e-14);
   EXPECT_NEAR(I[5], 1.5 * 0.25, 1e-14);
@@ -39,7 +42,10 @@ TEST(Series, L2NormOfConstantVector) {
 
 TEST(Series, WindowAverageOfConstantIsConstantInside) {
   std::vector<double> t, y;
-  for (int i = 0; i <= 100; ++i) { t.push_back(0.01 * i); y.push_back(2.0); }
+  for (int i = 0; i <= 100; ++i) {
+    t.push_back(0.01 * i);
+    y.push_back(2.0);
+  }
   const auto w = window_average(t, running_integral(t, y), 0.1, {0.5, 0.0});
   EXPECT_NEAR(w[0], 2.0, 1e-12);
   EXPECT_NEAR(w[1], 1.0, 1e-12);  // half the window lies before the record: y = 0 there

@@ -13,8 +13,9 @@ using verification::StoredRun;
 
 /// @brief A one-contact history on t = 0, h, ..., T: R(t) from `force`, ua_x from `ua`, every
 /// other column of interface.md zero except the energies (kinetic = 1 J constant).
-inline StoredRun synthetic(double h, double T, const std::function<double(double)>& force,
-                            const std::function<double(double)>& ua = [](double) { return 0.0; }) {
+inline StoredRun synthetic(
+    double h, double T, const std::function<double(double)>& force,
+    const std::function<double(double)>& ua = [](double) { return 0.0; }) {
   std::map<std::string, std::vector<double>> c;
   const auto n = static_cast<std::size_t>(std::llround(T / h));
   for (std::size_t i = 0; i <= n; ++i) {

@@ -5,10 +5,10 @@
 
 #include <fmt/format.h>
 
+#include <beamimpact/api/registry.hpp>
 #include <beamimpact/scene/SceneError.hpp>
 #include <beamimpact/scene/scene_io.hpp>
 #include <beamimpact/verification/matrix/child_process.hpp>
-#include <beamimpact/api/registry.hpp>
 
 namespace beamimpact::verification {
 namespace {
@@ -23,8 +23,9 @@ int mesh_factor(const JobSpec& s) {
   char* end = nullptr;
   const long m = std::strtol(s.mesh.c_str(), &end, 10);
   if (end == s.mesh.c_str() || *end != '\0' || m < 1 || m > 64) {
-    throw SceneError(s.scene.string(), "mesh", "expected an element multiplier 1..64 for method '" + s.method +
-                                                   "', got '" + s.mesh + "'");
+    throw SceneError(
+        s.scene.string(), "mesh",
+        "expected an element multiplier 1..64 for method '" + s.method + "', got '" + s.mesh + "'");
   }
   return static_cast<int>(m);
 }
@@ -77,7 +78,8 @@ std::string Launcher::unavailable(const JobSpec& spec) const {
   if (why.empty() && !m->check.empty()) {
     const auto check = resolve(m->check);
     const auto r = spawn_and_wait(check, "/dev/null", 120.0);
-    if (r.exit_code != 0) why = m->name + ": '" + fmt::format("{}", fmt::join(check, " ")) + "' failed (not installed?)";
+    if (r.exit_code != 0)
+      why = m->name + ": '" + fmt::format("{}", fmt::join(check, " ")) + "' failed (not installed?)";
   }
   return why;
 }
@@ -96,7 +98,8 @@ std::vector<std::string> Launcher::argv(const JobSpec& spec, const std::filesyst
     a.insert(a.end(), spec.args.begin(), spec.args.end());
     return a;
   }
-  a = {exe.string(), "run", spec.scene.string(), "--out", out_dir.string(), "--method", spec.method, "--quiet"};
+  a = {exe.string(),     "run",      spec.scene.string(), "--out",
+       out_dir.string(), "--method", spec.method,         "--quiet"};
   std::vector<std::string> sets = spec.set;
   if (spec.dt) sets.push_back(fmt::format("time.dt={:.17g}", *spec.dt));
   if (!spec.mesh.empty()) {

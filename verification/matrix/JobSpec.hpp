@@ -13,12 +13,12 @@ namespace beamimpact::verification {
 
 /// @brief What to run. Two specs with the same key() are the same run (run once, shared).
 struct JobSpec {
-  std::filesystem::path scene;      ///< scene file (absolute or relative to the working directory)
-  std::string method = "paper";     ///< a registry name (api/registry.hpp)
-  std::optional<double> dt;         ///< s, sets time.dt (methods that accept a dt)
-  std::string mesh;                 ///< element multiplier ("2"), or a method's named preset ("coarse")
-  std::vector<std::string> set;     ///< extra --set key=value overrides (methods that accept them)
-  std::vector<std::string> args;    ///< extra arguments passed verbatim (external programs' options)
+  std::filesystem::path scene;    ///< scene file (absolute or relative to the working directory)
+  std::string method = "paper";   ///< a registry name (api/registry.hpp)
+  std::optional<double> dt;       ///< s, sets time.dt (methods that accept a dt)
+  std::string mesh;               ///< element multiplier ("2"), or a method's named preset ("coarse")
+  std::vector<std::string> set;   ///< extra --set key=value overrides (methods that accept them)
+  std::vector<std::string> args;  ///< extra arguments passed verbatim (external programs' options)
 
   /// @brief Scene name: the file stem ("s1_central").
   std::string scene_name() const;

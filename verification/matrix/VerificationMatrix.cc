@@ -69,7 +69,8 @@ class Loader {
     if (const toml::node* s = top.raw("settings")) {
       if (!s->as_table()) top.fail("settings", "expected a table");
       TableReader st(*s->as_table(), file_, "settings", nullptr);
-      if (st.has("root")) m.root = m.file.parent_path() / st.string("root", "a directory relative to the matrix file");
+      if (st.has("root"))
+        m.root = m.file.parent_path() / st.string("root", "a directory relative to the matrix file");
       m.timeout = st.number_or("timeout", m.timeout, "a positive number of seconds per run");
       st.finish();
     }
@@ -84,7 +85,8 @@ class Loader {
       }
     }
     each(top, "case", [&](TableReader& r, const std::string& p) { m.cases.push_back(read_case(r, p)); });
-    each(top, "convergence", [&](TableReader& r, const std::string& p) { m.convergence.push_back(read_ladder(r, p)); });
+    each(top, "convergence",
+         [&](TableReader& r, const std::string& p) { m.convergence.push_back(read_ladder(r, p)); });
     each(top, "check", [&](TableReader& r, const std::string& p) { m.checks.push_back(read_check(r, p)); });
     top.finish();
     if (m.cases.empty() && m.convergence.empty() && m.checks.empty())
@@ -129,9 +131,12 @@ class Loader {
       if (!(*s.dt > 0.0)) r.fail("dt", "expected a positive time step (s)");
     }
     if (const toml::node* n = r.raw("mesh")) {
-      if (auto i = n->value<long>()) s.mesh = std::to_string(*i);
-      else if (auto str = n->value<std::string>()) s.mesh = *str;
-      else r.fail("mesh", "expected an element multiplier or a method's mesh preset name");
+      if (auto i = n->value<long>())
+        s.mesh = std::to_string(*i);
+      else if (auto str = n->value<std::string>())
+        s.mesh = *str;
+      else
+        r.fail("mesh", "expected an element multiplier or a method's mesh preset name");
     }
     s.set = strings(r, "set");
     s.args = strings(r, "args");
@@ -155,14 +160,18 @@ class Loader {
       if (!t) throw SceneError(file_, p, "expected { metric = ..., tol = ..., why = ... }");
       TableReader g(*t, file_, p, nullptr);
       Gate gate;
-      gate.metric = g.string("metric", "a norm name of `beamimpact compare` (e.g. \"impulse\", \"R.rel_l2\")");
+      gate.metric =
+          g.string("metric", "a norm name of `beamimpact compare` (e.g. \"impulse\", \"R.rel_l2\")");
       if (kind == GateKind::kCheck && !known_check(gate.metric))
-        g.fail("metric", "unknown check '" + gate.metric + "'; expected one of: " + fmt::format("{}", fmt::join(check_names(), ", ")));
+        g.fail("metric", "unknown check '" + gate.metric +
+                             "'; expected one of: " + fmt::format("{}", fmt::join(check_names(), ", ")));
       if (kind != GateKind::kCheck && !known_norm(gate.metric))
         g.fail("metric", "unknown norm '" + gate.metric + "' (see `beamimpact compare` output)");
       if (g.has("tol")) gate.tol = g.number("tol", "a non-negative tolerance in the norm's unit");
-      if (ladder && g.has("min_order")) gate.min_order = g.number("min_order", "the least acceptable observed order");
-      if (!gate.tol && !gate.min_order) g.fail("tol", ladder ? "expected tol and/or min_order" : "expected a tolerance");
+      if (ladder && g.has("min_order"))
+        gate.min_order = g.number("min_order", "the least acceptable observed order");
+      if (!gate.tol && !gate.min_order)
+        g.fail("tol", ladder ? "expected tol and/or min_order" : "expected a tolerance");
       if (gate.tol && !(*gate.tol >= 0.0)) g.fail("tol", "expected a non-negative tolerance");
       gate.why = g.string("why", "the justification of the tolerance (theory, mesh error, measured spread)");
       if (gate.why.size() < 10) g.fail("why", "expected a real justification");
@@ -172,7 +181,8 @@ class Loader {
     return gates;
   }
 
-  void common(TableReader& r, std::string& tier, bool& required, std::string& note, const char* default_tier = "quick") {
+  void common(TableReader& r, std::string& tier, bool& required, std::string& note,
+              const char* default_tier = "quick") {
     tier = r.choice_or("tier", default_tier, VerificationMatrix::tier_names());
     required = r.boolean_or("required", true);
     if (r.has("note")) note = r.string("note", "text");
@@ -189,7 +199,8 @@ class Loader {
     rr.finish();
     common(r, c.tier, c.required, c.note);
     c.gates = read_gates(r, prefix, GateKind::kCase);
-    if (c.run.key() == c.reference.key()) r.fail("reference", "expected a run different from the case's own run");
+    if (c.run.key() == c.reference.key())
+      r.fail("reference", "expected a run different from the case's own run");
     return c;
   }
 
@@ -201,11 +212,14 @@ class Loader {
     if (by_dt == r.has("fraction")) r.fail("dt", "expected exactly one of dt = [...] or fraction = [...]");
     v.steps = numbers(r, by_dt ? "dt" : "fraction");
     for (std::size_t i = 0; i + 1 < v.steps.size(); ++i)
-      if (!(v.steps[i + 1] < v.steps[i])) r.fail(by_dt ? "dt" : "fraction", "expected decreasing values (coarse to fine)");
+      if (!(v.steps[i + 1] < v.steps[i]))
+        r.fail(by_dt ? "dt" : "fraction", "expected decreasing values (coarse to fine)");
     for (double s : v.steps) {
       JobSpec spec = base;
-      if (by_dt) spec.dt = s;
-      else spec.set.push_back(fmt::format("time.fraction={:g}", s));
+      if (by_dt)
+        spec.dt = s;
+      else
+        spec.set.push_back(fmt::format("time.fraction={:g}", s));
       v.runs.push_back(spec);
     }
     common(r, v.tier, v.required, v.note);
@@ -229,12 +243,13 @@ class Loader {
 }  // namespace
 
 std::string Case::name() const {
-  return run.label() + " vs " + (reference.scene == run.scene ? reference.settings_label() : reference.label());
+  return run.label() + " vs " +
+         (reference.scene == run.scene ? reference.settings_label() : reference.label());
 }
 
 std::string Convergence::name() const {
-  std::string s = runs.front().scene_name() + " " + runs.front().method + " " +
-                  (runs.front().dt ? "dt=" : "fraction=");
+  std::string s =
+      runs.front().scene_name() + " " + runs.front().method + " " + (runs.front().dt ? "dt=" : "fraction=");
   for (std::size_t i = 0; i < steps.size(); ++i) s += fmt::format("{}{:g}", i ? "/" : "", steps[i]);
   if (!runs.front().mesh.empty()) s += " mesh=" + runs.front().mesh;
   return s;
@@ -256,7 +271,10 @@ std::vector<JobSpec> VerificationMatrix::runs(const std::string& tier) const {
     if (seen.insert(s.key()).second) out.push_back(s);
   };
   for (const auto& c : cases)
-    if (in_tier(c.tier, tier)) { add(c.run); add(c.reference); }
+    if (in_tier(c.tier, tier)) {
+      add(c.run);
+      add(c.reference);
+    }
   for (const auto& v : convergence)
     if (in_tier(v.tier, tier))
       for (const auto& s : v.runs) add(s);

@@ -23,10 +23,10 @@ struct Gate {
 /// @brief A run compared with a reference run.
 struct Case {
   JobSpec run, reference;
-  std::string tier = "quick";       ///< "quick" (CI) or "full"
-  bool required = true;             ///< a skipped run fails the gate when required
+  std::string tier = "quick";  ///< "quick" (CI) or "full"
+  bool required = true;        ///< a skipped run fails the gate when required
   std::vector<Gate> gates;
-  std::string note;                 ///< free text shown in the report
+  std::string note;  ///< free text shown in the report
   /// @brief "s1_central paper dt=0.01 vs exact".
   std::string name() const;
 };
@@ -34,11 +34,11 @@ struct Case {
 /// @brief Self-convergence: the same method at successively refined steps; consecutive pairs
 /// are compared and the observed order of each norm is p = log(e_i / e_{i+1}) / log(r).
 struct Convergence {
-  std::vector<JobSpec> runs;        ///< coarse to fine
-  std::vector<double> steps;        ///< the refined quantity (dt or fraction) of each run
+  std::vector<JobSpec> runs;  ///< coarse to fine
+  std::vector<double> steps;  ///< the refined quantity (dt or fraction) of each run
   std::string tier = "quick";
   bool required = true;
-  std::vector<Gate> gates;          ///< min_order (and optionally tol on the finest pair)
+  std::vector<Gate> gates;  ///< min_order (and optionally tol on the finest pair)
   std::string note;
   /// @brief "s1_central paper dt=0.01/0.005/0.0025".
   std::string name() const;
@@ -59,8 +59,8 @@ struct RunCheck {
 /// @brief The whole matrix file.
 struct VerificationMatrix {
   std::filesystem::path file;
-  std::filesystem::path root;       ///< repository root: scene paths and the FEniCSx script are relative to it
-  double timeout = 900.0;           ///< s, per run
+  std::filesystem::path root;  ///< repository root: scene paths and the FEniCSx script are relative to it
+  double timeout = 900.0;      ///< s, per run
   std::vector<Case> cases;
   std::vector<Convergence> convergence;
   std::vector<RunCheck> checks;
@@ -74,7 +74,9 @@ struct VerificationMatrix {
   /// plus fine meshes and small steps).
   static const std::vector<std::string>& tier_names();
   /// @brief True when an item of tier `item` belongs to a run of tier `tier` ("full" runs all).
-  static bool in_tier(const std::string& item, const std::string& tier) { return tier == "full" || item == tier; }
+  static bool in_tier(const std::string& item, const std::string& tier) {
+    return tier == "full" || item == tier;
+  }
 };
 
 }  // namespace beamimpact::verification

@@ -15,7 +15,7 @@ extern char** environ;
 namespace beamimpact::verification {
 
 ProcessResult spawn_and_wait(const std::vector<std::string>& argv, const std::filesystem::path& log,
-                          double timeout_seconds) {
+                             double timeout_seconds) {
   ProcessResult r;
   const auto start = std::chrono::steady_clock::now();
   std::vector<char*> cargv;
@@ -70,8 +70,10 @@ ProcessResult spawn_and_wait(const std::vector<std::string>& argv, const std::fi
   }
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!r.timed_out) {
-    if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
-    else if (WIFSIGNALED(status)) r.error = std::string("ended by signal ") + strsignal(WTERMSIG(status));
+    if (WIFEXITED(status))
+      r.exit_code = WEXITSTATUS(status);
+    else if (WIFSIGNALED(status))
+      r.error = std::string("ended by signal ") + strsignal(WTERMSIG(status));
   }
   return r;
 }

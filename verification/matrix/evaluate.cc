@@ -22,8 +22,9 @@ namespace {
 void not_evaluated(ItemResult& r, const std::vector<Gate>& gates, const std::string& why, bool skipped) {
   const bool fail = !skipped || r.required;
   for (const auto& g : gates) {
-    r.gates.push_back({g, std::nullopt, fail ? GateStatus::kFail : GateStatus::kSkipped,
-                       skipped ? (r.required ? "skipped, and the case is required: " + why : "skipped: " + why) : why});
+    r.gates.push_back(
+        {g, std::nullopt, fail ? GateStatus::kFail : GateStatus::kSkipped,
+         skipped ? (r.required ? "skipped, and the case is required: " + why : "skipped: " + why) : why});
   }
 }
 
@@ -212,14 +213,24 @@ ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, Job
 }
 
 nlohmann::json to_json(const ItemResult& r) {
-  nlohmann::json j{{"kind", r.kind}, {"scene", r.scene}, {"name", r.name}, {"settings", r.settings},
-                   {"reference", r.reference}, {"tier", r.tier}, {"required", r.required},
-                   {"wall_seconds", r.wall_seconds}, {"solver_seconds", r.solver_seconds},
-                   {"passed", r.passed()}, {"note", r.note}};
+  nlohmann::json j{{"kind", r.kind},
+                   {"scene", r.scene},
+                   {"name", r.name},
+                   {"settings", r.settings},
+                   {"reference", r.reference},
+                   {"tier", r.tier},
+                   {"required", r.required},
+                   {"wall_seconds", r.wall_seconds},
+                   {"solver_seconds", r.solver_seconds},
+                   {"passed", r.passed()},
+                   {"note", r.note}};
   auto& gates = j["gates"] = nlohmann::json::array();
   for (const auto& g : r.gates) {
-    nlohmann::json e{{"metric", g.gate.metric}, {"limit", g.limit()}, {"why", g.gate.why},
-                     {"status", to_string(g.status)}, {"message", g.message}};
+    nlohmann::json e{{"metric", g.gate.metric},
+                     {"limit", g.limit()},
+                     {"why", g.gate.why},
+                     {"status", to_string(g.status)},
+                     {"message", g.message}};
     e["value"] = g.value ? nlohmann::json(*g.value) : nlohmann::json(nullptr);
     if (g.gate.tol) e["tol"] = *g.gate.tol;
     if (g.gate.min_order) e["min_order"] = *g.gate.min_order;

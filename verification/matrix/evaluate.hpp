@@ -27,26 +27,27 @@ struct GateResult {
   Gate gate;
   std::optional<double> value;  ///< the error (cases) or the observed order (ladders)
   GateStatus status = GateStatus::kFail;
-  std::string message;          ///< why it failed / was skipped; "" on pass
+  std::string message;  ///< why it failed / was skipped; "" on pass
   /// @brief "<= 0.01" or "order >= 0.9" (and "<= tol" too for ladders with both).
   std::string limit() const;
 };
 
 /// @brief Outcome of one case or ladder: its gates and what they were computed from.
 struct ItemResult {
-  std::string kind;              ///< "case" | "convergence" | "check"
-  std::string scene;             ///< scene name (file stem)
-  std::string name;              ///< Case::name() / Convergence::name()
-  std::string settings;          ///< run settings label ("paper dt=0.01")
-  std::string reference;         ///< reference settings label ("" for ladders)
+  std::string kind;       ///< "case" | "convergence" | "check"
+  std::string scene;      ///< scene name (file stem)
+  std::string name;       ///< Case::name() / Convergence::name()
+  std::string settings;   ///< run settings label ("paper dt=0.01")
+  std::string reference;  ///< reference settings label ("" for ladders)
   std::string tier;
   bool required = true;
-  double wall_seconds = 0.0;     ///< s, process wall time of the run(s) under test
-  double solver_seconds = 0.0;   ///< s, the methods' own wall time (summary.json)
+  double wall_seconds = 0.0;    ///< s, process wall time of the run(s) under test
+  double solver_seconds = 0.0;  ///< s, the methods' own wall time (summary.json)
   std::vector<GateResult> gates;
   std::vector<Comparison> comparisons;  ///< one per case; consecutive pairs for ladders
   /// @brief Ladders: norm name -> errors of consecutive pairs and the observed orders.
-  std::map<std::string, std::pair<std::vector<std::optional<double>>, std::vector<std::optional<double>>>> orders;
+  std::map<std::string, std::pair<std::vector<std::optional<double>>, std::vector<std::optional<double>>>>
+      orders;
   std::string note;
   /// @brief True when no gate failed.
   bool passed() const;

@@ -42,7 +42,9 @@ JobOutcome run_one(const JobSpec& spec, const std::filesystem::path& dir, const 
   const ProcessResult p = spawn_and_wait(argv, dir / "run.log", timeout);
   o.process_seconds = p.wall_seconds;
   if (!p.error.empty() || p.exit_code != 0) {
-    o.message = !p.error.empty() ? p.error : fmt::format("exit code {} (see {})", p.exit_code, (dir / "run.log").string());
+    o.message = !p.error.empty()
+                    ? p.error
+                    : fmt::format("exit code {} (see {})", p.exit_code, (dir / "run.log").string());
     return o;
   }
   std::ifstream in(dir / "summary.json");
@@ -74,8 +76,9 @@ const char* status_name(JobOutcome::Status s) {
   return "?";
 }
 
-std::map<std::string, JobOutcome> execute_jobs(const std::vector<JobSpec>& specs, const std::filesystem::path& out_dir,
-                                          const Launcher& launcher, int jobs, double timeout_seconds) {
+std::map<std::string, JobOutcome> execute_jobs(const std::vector<JobSpec>& specs,
+                                               const std::filesystem::path& out_dir, const Launcher& launcher,
+                                               int jobs, double timeout_seconds) {
   // Likely-slow runs first (methods the registry marks slow, then small steps) so that the tail
   // of the queue is short.
   std::vector<JobSpec> order = specs;
@@ -101,8 +104,8 @@ std::map<std::string, JobOutcome> execute_jobs(const std::vector<JobSpec>& specs
       JobOutcome o = run_one(order[i], out_dir / order[i].key(), launcher, skip, timeout_seconds);
       std::lock_guard lock(mu);
       ++done;
-      fmt::print(stderr, "[{}/{}] {}: {}{} ({:.2f} s)\n", done, order.size(), o.spec.label(), status_name(o.status),
-                 o.message.empty() ? "" : ": " + o.message, o.process_seconds);
+      fmt::print(stderr, "[{}/{}] {}: {}{} ({:.2f} s)\n", done, order.size(), o.spec.label(),
+                 status_name(o.status), o.message.empty() ? "" : ": " + o.message, o.process_seconds);
       std::fflush(stderr);
       out.emplace(o.spec.key(), std::move(o));
     }

@@ -17,7 +17,7 @@ struct JobOutcome {
   /// @brief ok: complete run; failed: non-zero exit, time-out or no summary.json; skipped: tool missing.
   enum class Status { kOk, kFailed, kSkipped };
   JobSpec spec;
-  std::filesystem::path dir;     ///< where history.csv and summary.json are (and run.log)
+  std::filesystem::path dir;  ///< where history.csv and summary.json are (and run.log)
   Status status = Status::kFailed;
   std::string message;           ///< why it failed or was skipped
   double process_seconds = 0.0;  ///< s, wall time of the process (start-up and output included)
@@ -31,7 +31,8 @@ const char* status_name(JobOutcome::Status s);
 
 /// @brief Runs every spec (keys must be unique) into out_dir/<key>/ with `jobs` workers; a run
 /// is ok when its process exits 0 and left a summary.json. Returns outcomes by key.
-std::map<std::string, JobOutcome> execute_jobs(const std::vector<JobSpec>& specs, const std::filesystem::path& out_dir,
-                                          const Launcher& launcher, int jobs, double timeout_seconds);
+std::map<std::string, JobOutcome> execute_jobs(const std::vector<JobSpec>& specs,
+                                               const std::filesystem::path& out_dir, const Launcher& launcher,
+                                               int jobs, double timeout_seconds);
 
 }  // namespace beamimpact::verification

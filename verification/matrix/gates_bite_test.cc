@@ -32,7 +32,8 @@ void write_run_dir(const StoredRun& h, const nlohmann::json& summary, const fs::
   }
   csv << "\n";
   for (std::size_t i = 0; i < h.t().size(); ++i) {
-    for (std::size_t c = 0; c < cols.size(); ++c) csv << (c ? "," : "") << fmt::format("{:.17g}", (*cols[c])[i]);
+    for (std::size_t c = 0; c < cols.size(); ++c)
+      csv << (c ? "," : "") << fmt::format("{:.17g}", (*cols[c])[i]);
     csv << "\n";
   }
   std::ofstream(dir / "summary.json") << summary.dump(1);
@@ -67,8 +68,9 @@ class GatesBite : public ::testing::Test {
   }
 
   /// Evaluates the case with the run replaced by a perturbed copy; returns the gate's status.
-  std::optional<GateStatus> gate_status(const Case& c, std::map<std::string, JobOutcome> runs, const fs::path& dir,
-                          const std::string& metric, std::string* message = nullptr) {
+  std::optional<GateStatus> gate_status(const Case& c, std::map<std::string, JobOutcome> runs,
+                                        const fs::path& dir, const std::string& metric,
+                                        std::string* message = nullptr) {
     runs.at(c.run.key()).dir = dir;
     const ItemResult r = evaluate_case(c, runs);
     for (const auto& g : r.gates)
@@ -85,10 +87,12 @@ class GatesBite : public ::testing::Test {
 };
 
 TEST_F(GatesBite, UnperturbedRowsPass) {
-  for (const auto* c : {&row("s1_central", "paper", "impulse"), &row("s1_offset_gap", "paper", "contact_start"),
-                        &row("s2_transverse", "paper", "impacts")}) {
+  for (const auto* c :
+       {&row("s1_central", "paper", "impulse"), &row("s1_offset_gap", "paper", "contact_start"),
+        &row("s2_transverse", "paper", "impacts")}) {
     const ItemResult r = evaluate_case(*c, run(*c));
-    for (const auto& g : r.gates) EXPECT_EQ(g.status, GateStatus::kPass) << c->name() << " " << g.gate.metric << ": " << g.message;
+    for (const auto& g : r.gates)
+      EXPECT_EQ(g.status, GateStatus::kPass) << c->name() << " " << g.gate.metric << ": " << g.message;
   }
 }
 

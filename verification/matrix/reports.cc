@@ -19,8 +19,10 @@ std::string xml_escape(const std::string& s) {
       case '"': o += "&quot;"; break;
       case '\'': o += "&apos;"; break;
       default:
-        if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') o += ' ';
-        else o += c;
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t')
+          o += ' ';
+        else
+          o += c;
     }
   }
   return o;
@@ -32,9 +34,7 @@ std::string md_escape(std::string s) {
   return o;
 }
 
-std::string value_text(const GateResult& g) {
-  return g.value ? fmt::format("{:.4g}", *g.value) : "n/a";
-}
+std::string value_text(const GateResult& g) { return g.value ? fmt::format("{:.4g}", *g.value) : "n/a"; }
 
 std::map<std::string, std::vector<const ItemResult*>> by_scene(const std::vector<ItemResult>& items) {
   std::map<std::string, std::vector<const ItemResult*>> m;
@@ -51,21 +51,27 @@ Totals totals(const std::vector<ItemResult>& items) {
   for (const auto& i : items)
     for (const auto& g : i.gates) {
       ++t.gates;
-      if (g.status == GateStatus::kPass) ++t.pass;
-      else if (g.status == GateStatus::kFail) ++t.fail;
-      else ++t.skipped;
+      if (g.status == GateStatus::kPass)
+        ++t.pass;
+      else if (g.status == GateStatus::kFail)
+        ++t.fail;
+      else
+        ++t.skipped;
     }
   return t;
 }
 
 }  // namespace
 
-
-void write_junit(const std::filesystem::path& file, const ReportContext& ctx, const std::vector<ItemResult>& items) {
+void write_junit(const std::filesystem::path& file, const ReportContext& ctx,
+                 const std::vector<ItemResult>& items) {
   const Totals all = totals(items);
   std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  x += fmt::format("<testsuites name=\"beamimpact verify {}{}\" tests=\"{}\" failures=\"{}\" skipped=\"{}\" time=\"{:.3f}\">\n",
-                   xml_escape(ctx.tier), ctx.incomplete.empty() ? "" : " (INCOMPLETE: " + xml_escape(ctx.incomplete) + ")", all.gates, all.fail, all.skipped, ctx.wall_seconds);
+  x += fmt::format(
+      "<testsuites name=\"beamimpact verify {}{}\" tests=\"{}\" failures=\"{}\" skipped=\"{}\" "
+      "time=\"{:.3f}\">\n",
+      xml_escape(ctx.tier), ctx.incomplete.empty() ? "" : " (INCOMPLETE: " + xml_escape(ctx.incomplete) + ")",
+      all.gates, all.fail, all.skipped, ctx.wall_seconds);
   for (const auto& [scene, list] : by_scene(items)) {
     int n = 0, f = 0, s = 0;
     double time = 0.0;
@@ -77,18 +83,23 @@ void write_junit(const std::filesystem::path& file, const ReportContext& ctx, co
         s += g.status == GateStatus::kSkipped;
       }
     }
-    x += fmt::format("  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" skipped=\"{}\" time=\"{:.3f}\">\n",
-                     xml_escape(scene), n, f, s, time);
+    x +=
+        fmt::format("  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" skipped=\"{}\" time=\"{:.3f}\">\n",
+                    xml_escape(scene), n, f, s, time);
     for (const auto* i : list) {
       std::string cls = scene + "." + i->settings;
-      for (char& c : cls) if (c == ' ') c = '.';
+      for (char& c : cls)
+        if (c == ' ') c = '.';
       for (const auto& g : i->gates) {
         const std::string name = i->name + ": " + g.gate.metric + (g.gate.min_order ? " order" : "");
-        x += fmt::format("    <testcase classname=\"{}\" name=\"{}\" time=\"{:.3f}\">", xml_escape(cls), xml_escape(name),
+        x += fmt::format("    <testcase classname=\"{}\" name=\"{}\" time=\"{:.3f}\">", xml_escape(cls),
+                         xml_escape(name),
                          i->gates.empty() ? 0.0 : i->wall_seconds / static_cast<double>(i->gates.size()));
-        const std::string detail = fmt::format("value {} limit {} | why: {}", value_text(g), g.limit(), g.gate.why);
+        const std::string detail =
+            fmt::format("value {} limit {} | why: {}", value_text(g), g.limit(), g.gate.why);
         if (g.status == GateStatus::kFail)
-          x += fmt::format("\n      <failure message=\"{}\">{}</failure>\n    ", xml_escape(g.message), xml_escape(detail));
+          x += fmt::format("\n      <failure message=\"{}\">{}</failure>\n    ", xml_escape(g.message),
+                           xml_escape(detail));
         else if (g.status == GateStatus::kSkipped)
           x += fmt::format("\n      <skipped message=\"{}\"/>\n    ", xml_escape(g.message));
         else
@@ -102,44 +113,56 @@ void write_junit(const std::filesystem::path& file, const ReportContext& ctx, co
   write_file_atomic(file, x);
 }
 
-void write_json(const std::filesystem::path& file, const ReportContext& ctx, const std::vector<ItemResult>& items) {
+void write_json(const std::filesystem::path& file, const ReportContext& ctx,
+                const std::vector<ItemResult>& items) {
   const Totals t = totals(items);
-  nlohmann::json j{{"command", ctx.command}, {"matrix", ctx.matrix}, {"tier", ctx.tier}, {"version", ctx.version},
-                   {"started_utc", ctx.started}, {"wall_seconds", ctx.wall_seconds}, {"jobs", ctx.jobs},
-                   {"gates", t.gates}, {"passed", t.pass}, {"failed", t.fail}, {"skipped", t.skipped},
-                   {"complete", ctx.incomplete.empty()}};
+  nlohmann::json j{
+      {"command", ctx.command}, {"matrix", ctx.matrix},       {"tier", ctx.tier},
+      {"version", ctx.version}, {"started_utc", ctx.started}, {"wall_seconds", ctx.wall_seconds},
+      {"jobs", ctx.jobs},       {"gates", t.gates},           {"passed", t.pass},
+      {"failed", t.fail},       {"skipped", t.skipped},       {"complete", ctx.incomplete.empty()}};
   if (!ctx.incomplete.empty()) j["incomplete"] = ctx.incomplete;
   auto& arr = j["items"] = nlohmann::json::array();
   for (const auto& i : items) arr.push_back(to_json(i));
   write_file_atomic(file, j.dump(1) + "\n");
 }
 
-void write_markdown(const std::filesystem::path& file, const ReportContext& ctx, const std::vector<ItemResult>& items) {
+void write_markdown(const std::filesystem::path& file, const ReportContext& ctx,
+                    const std::vector<ItemResult>& items) {
   const Totals t = totals(items);
   std::string m = "# beamimpact verification report\n\n";
   if (!ctx.incomplete.empty()) m += "**INCOMPLETE: " + ctx.incomplete + "**\n\n";
-  m += fmt::format("- command: `{}`\n- matrix: `{}`, tier **{}**, {} parallel job(s)\n- version: `{}`\n"
-                   "- started {} (UTC), wall time {:.1f} s\n",
-                   ctx.command, ctx.matrix, ctx.tier, ctx.jobs, ctx.version, ctx.started, ctx.wall_seconds);
+  m += fmt::format(
+      "- command: `{}`\n- matrix: `{}`, tier **{}**, {} parallel job(s)\n- version: `{}`\n"
+      "- started {} (UTC), wall time {:.1f} s\n",
+      ctx.command, ctx.matrix, ctx.tier, ctx.jobs, ctx.version, ctx.started, ctx.wall_seconds);
   std::set<std::string> scenes;
   for (const auto& i : items) scenes.insert(i.scene);
   std::string sl;
   for (const auto& s : scenes) sl += (sl.empty() ? "" : ", ") + s;
   m += "- scenes: " + sl + "\n";
-  m += fmt::format("\n**{}**: {} gates, {} passed, {} failed, {} skipped.\n\n",
-                   t.fail == 0 ? "PASS" : "FAIL", t.gates, t.pass, t.fail, t.skipped);
+  m += fmt::format("\n**{}**: {} gates, {} passed, {} failed, {} skipped.\n\n", t.fail == 0 ? "PASS" : "FAIL",
+                   t.gates, t.pass, t.fail, t.skipped);
   m += "Value: the error of the run against its reference (relative unless the unit says s or count; "
-       "definitions at the end), or the observed order p = log(e_coarse/e_fine)/log(r) for convergence ladders. "
+       "definitions at the end), or the observed order p = log(e_coarse/e_fine)/log(r) for convergence "
+       "ladders. "
        "Wall: process time of the run under test (ladders: all rungs).\n";
 
   for (const auto& [scene, list] : by_scene(items)) {
-    m += fmt::format("\n## {}\n\n| run | reference | norm | value | limit | result | wall s |\n|---|---|---|---|---|---|---|\n", scene);
+    m += fmt::format(
+        "\n## {}\n\n| run | reference | norm | value | limit | result | wall s "
+        "|\n|---|---|---|---|---|---|---|\n",
+        scene);
     for (const auto* i : list) {
-      const std::string run = i->kind == "convergence" ? i->name.substr(scene.size() + 1) + " (self-convergence)" : i->settings;
+      const std::string run =
+          i->kind == "convergence" ? i->name.substr(scene.size() + 1) + " (self-convergence)" : i->settings;
       for (const auto& g : i->gates) {
-        const std::string res = g.status == GateStatus::kPass ? "pass" : g.status == GateStatus::kFail ? "**FAIL**: " + g.message : "skipped: " + g.message;
-        m += fmt::format("| {} | {} | {} | {} | {} | {} | {:.2f} |\n", md_escape(run), md_escape(i->reference),
-                         g.gate.metric, value_text(g), g.limit(), md_escape(res), i->wall_seconds);
+        const std::string res = g.status == GateStatus::kPass   ? "pass"
+                                : g.status == GateStatus::kFail ? "**FAIL**: " + g.message
+                                                                : "skipped: " + g.message;
+        m +=
+            fmt::format("| {} | {} | {} | {} | {} | {} | {:.2f} |\n", md_escape(run), md_escape(i->reference),
+                        g.gate.metric, value_text(g), g.limit(), md_escape(res), i->wall_seconds);
       }
     }
     for (const auto* i : list) {

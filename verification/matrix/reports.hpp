@@ -21,19 +21,21 @@ struct ReportContext {
   std::string started;        ///< UTC time stamp
   double wall_seconds = 0.0;  ///< s, whole verify
   int jobs = 1;
-  std::string incomplete;     ///< why the report is incomplete (e.g. "interrupted by signal 2"), "" if complete
+  std::string incomplete;  ///< why the report is incomplete (e.g. "interrupted by signal 2"), "" if complete
 };
 
 /// @brief JUnit XML: one testsuite per scene, one testcase per gate, named
 /// "<scene> <method> dt=<dt> vs <reference>: <metric>" (classname "<scene>.<method>.dt=<dt>").
-void write_junit(const std::filesystem::path& file, const ReportContext& ctx, const std::vector<ItemResult>& items);
+void write_junit(const std::filesystem::path& file, const ReportContext& ctx,
+                 const std::vector<ItemResult>& items);
 
 /// @brief JSON with the context, every gate and every norm of every comparison.
-void write_json(const std::filesystem::path& file, const ReportContext& ctx, const std::vector<ItemResult>& items);
+void write_json(const std::filesystem::path& file, const ReportContext& ctx,
+                const std::vector<ItemResult>& items);
 
 /// @brief Markdown: how it was made, totals, a table per scene (method, dt, reference, norm,
 /// value, limit, result, wall time), the observed orders of each ladder, and the definitions.
-void write_markdown(const std::filesystem::path& file, const ReportContext& ctx, const std::vector<ItemResult>& items);
-
+void write_markdown(const std::filesystem::path& file, const ReportContext& ctx,
+                    const std::vector<ItemResult>& items);
 
 }  // namespace beamimpact::verification

@@ -24,9 +24,9 @@ std::string cell(const Comparison* c, const std::string& name) {
 }  // namespace
 
 const std::vector<std::string>& sweep_norms() {
-  static const std::vector<std::string> n = {"impulse", "I.rel_linf", "R.rel_l2", "Rw.rel_l2", "peak_R",
-                                             "contact_start", "contact_end", "impacts", "ua.rel_l2",
-                                             "ub.rel_l2", "vb.rel_l2", "final_velocity", "energy_final"};
+  static const std::vector<std::string> n = {
+      "impulse", "I.rel_linf", "R.rel_l2",  "Rw.rel_l2", "peak_R",         "contact_start", "contact_end",
+      "impacts", "ua.rel_l2",  "ub.rel_l2", "vb.rel_l2", "final_velocity", "energy_final"};
   return n;
 }
 
@@ -35,7 +35,8 @@ SweepResult execute_sweep(const SweepOptions& o, const Launcher& launcher) {
   const std::string key = by_fraction ? "--fraction" : "--dt";
   const auto& steps = by_fraction ? o.fractions : o.dts;
   if (steps.empty() || (!o.fractions.empty() && !o.dts.empty()))
-    throw SceneError(o.scene.string(), "--dt", "expected either --dt LIST or --fraction LIST (for dt = \"auto\" scenes)");
+    throw SceneError(o.scene.string(), "--dt",
+                     "expected either --dt LIST or --fraction LIST (for dt = \"auto\" scenes)");
   for (double v : steps)
     if (!(v > 0.0)) throw SceneError(o.scene.string(), key, "expected positive values");
   if (!fs::exists(o.scene)) throw SceneError(o.scene.string(), "", "scene file not found");
@@ -46,9 +47,12 @@ SweepResult execute_sweep(const SweepOptions& o, const Launcher& launcher) {
   for (double v : steps)
     for (const auto& m : meshes) {
       JobSpec s{o.scene, o.method, std::nullopt, m, {}, {}};
-      if (by_fraction) s.set.push_back(fmt::format("time.fraction={:g}", v));
-      else if (!method.accepts.dt) s.args = {method.output_step_option, fmt::format("{:g}", v)};  // it picks its own step
-      else s.dt = v;
+      if (by_fraction)
+        s.set.push_back(fmt::format("time.fraction={:g}", v));
+      else if (!method.accepts.dt)
+        s.args = {method.output_step_option, fmt::format("{:g}", v)};  // it picks its own step
+      else
+        s.dt = v;
       specs.push_back(s);
     }
 
@@ -57,10 +61,13 @@ SweepResult execute_sweep(const SweepOptions& o, const Launcher& launcher) {
   if (o.reference == "self") {
     const double finest = *std::min_element(steps.begin(), steps.end()) / 4;
     ref = JobSpec{o.scene, o.method, std::nullopt, meshes.back(), {}, {}};
-    if (by_fraction) ref->set.push_back(fmt::format("time.fraction={:g}", finest));
-    else ref->dt = finest;
+    if (by_fraction)
+      ref->set.push_back(fmt::format("time.fraction={:g}", finest));
+    else
+      ref->dt = finest;
     if (!method.accepts.dt)
-      throw SceneError(o.scene.string(), "--reference", "give a reference method or directory for " + o.method);
+      throw SceneError(o.scene.string(), "--reference",
+                       "give a reference method or directory for " + o.method);
     r.reference_label = ref->settings_label() + " (the finest step / 4 on the finest mesh)";
   } else if (fs::exists(fs::path(o.reference) / "summary.json")) {
     r.reference_dir = o.reference;
@@ -77,13 +84,15 @@ SweepResult execute_sweep(const SweepOptions& o, const Launcher& launcher) {
   if (ref) {
     const JobOutcome& ro = outcomes.at(ref->key());
     if (ro.status != JobOutcome::Status::kOk)
-      throw std::runtime_error("reference run " + ref->label() + " " + status_name(ro.status) + ": " + ro.message);
+      throw std::runtime_error("reference run " + ref->label() + " " + status_name(ro.status) + ": " +
+                               ro.message);
     r.reference_dir = ro.dir;
   }
   const StoredRun reference = StoredRun::read(r.reference_dir);
   for (const auto& s : specs) {
     SweepPoint p{outcomes.at(s.key()), std::nullopt};
-    if (p.outcome.status == JobOutcome::Status::kOk) p.comparison = compare_runs(StoredRun::read(p.outcome.dir), reference);
+    if (p.outcome.status == JobOutcome::Status::kOk)
+      p.comparison = compare_runs(StoredRun::read(p.outcome.dir), reference);
     r.points.push_back(std::move(p));
   }
   return r;
@@ -97,38 +106,48 @@ void write_sweep(const SweepOptions& o, const SweepResult& r, const std::string&
   for (const auto& n : names) csv += "," + n;
   csv += "\n";
   std::string md = "# Timestep sensitivity: " + o.scene.stem().string() + "\n\n" + header;
-  md += "\nErrors against: " + r.reference_label + ". Solver s: the method's own wall time (summary.json); "
+  md += "\nErrors against: " + r.reference_label +
+        ". Solver s: the method's own wall time (summary.json); "
         "process s: including start-up and output.\n\n| dt (s) | mesh | steps | solver s | process s |";
   for (const auto& n : names) md += " " + n + " |";
   md += "\n|---|---|---|---|---|";
   for (std::size_t i = 0; i < names.size(); ++i) md += "---|";
   md += "\n";
-  nlohmann::json j{{"scene", o.scene.string()}, {"method", o.method}, {"reference", r.reference_label},
+  nlohmann::json j{{"scene", o.scene.string()},
+                   {"method", o.method},
+                   {"reference", r.reference_label},
                    {"reference_dir", r.reference_dir.string()}};
   auto& pts = j["points"] = nlohmann::json::array();
   for (const auto& p : r.points) {
     const auto& s = p.outcome.spec;
-    const std::string dt = p.outcome.dt > 0.0 ? fmt::format("{:.6g}", p.outcome.dt) : (s.dt ? fmt::format("{:g}", *s.dt) : "");
+    const std::string dt =
+        p.outcome.dt > 0.0 ? fmt::format("{:.6g}", p.outcome.dt) : (s.dt ? fmt::format("{:g}", *s.dt) : "");
     const Comparison* c = p.comparison ? &*p.comparison : nullptr;
-    csv += fmt::format("{},{},{},{},{:.6g},{:.6g}", dt, s.mesh, status_name(p.outcome.status), p.outcome.steps,
-                       p.outcome.solver_seconds, p.outcome.process_seconds);
-    md += fmt::format("| {} | {} | {} | {:.4g} | {:.4g} |", dt, s.mesh.empty() ? "scene" : s.mesh, p.outcome.steps,
-                      p.outcome.solver_seconds, p.outcome.process_seconds);
+    csv += fmt::format("{},{},{},{},{:.6g},{:.6g}", dt, s.mesh, status_name(p.outcome.status),
+                       p.outcome.steps, p.outcome.solver_seconds, p.outcome.process_seconds);
+    md += fmt::format("| {} | {} | {} | {:.4g} | {:.4g} |", dt, s.mesh.empty() ? "scene" : s.mesh,
+                      p.outcome.steps, p.outcome.solver_seconds, p.outcome.process_seconds);
     for (const auto& n : names) {
       csv += "," + cell(c, n);
       md += " " + (c ? cell(c, n) : std::string(status_name(p.outcome.status))) + " |";
     }
     csv += "\n";
     md += "\n";
-    nlohmann::json e{{"dt", dt}, {"mesh", s.mesh}, {"status", status_name(p.outcome.status)},
-                     {"message", p.outcome.message}, {"steps", p.outcome.steps},
-                     {"solver_seconds", p.outcome.solver_seconds}, {"process_seconds", p.outcome.process_seconds},
+    nlohmann::json e{{"dt", dt},
+                     {"mesh", s.mesh},
+                     {"status", status_name(p.outcome.status)},
+                     {"message", p.outcome.message},
+                     {"steps", p.outcome.steps},
+                     {"solver_seconds", p.outcome.solver_seconds},
+                     {"process_seconds", p.outcome.process_seconds},
                      {"dir", p.outcome.dir.string()}};
     if (c) e["comparison"] = c->to_json();
     pts.push_back(e);
   }
   // Observed orders between consecutive dts on the same mesh.
-  md += "\nObserved order between consecutive dt on the same mesh, p = log(e_i/e_{i+1}) / log(dt_i/dt_{i+1}):\n\n| dt pair | mesh |";
+  md +=
+      "\nObserved order between consecutive dt on the same mesh, p = log(e_i/e_{i+1}) / "
+      "log(dt_i/dt_{i+1}):\n\n| dt pair | mesh |";
   for (const auto& n : names) md += " " + n + " |";
   md += "\n|---|---|";
   for (std::size_t i = 0; i < names.size(); ++i) md += "---|";
@@ -154,7 +173,8 @@ void write_sweep(const SweepOptions& o, const SweepResult& r, const std::string&
       if (p.comparison) {
         md += "\nDefinitions:\n\n";
         for (const auto& n : p.comparison->norms)
-          if (std::find(names.begin(), names.end(), n.name) != names.end()) md += "- `" + n.name + "`: " + n.definition + "\n";
+          if (std::find(names.begin(), names.end(), n.name) != names.end())
+            md += "- `" + n.name + "`: " + n.definition + "\n";
         break;
       }
   }

@@ -16,13 +16,13 @@ namespace beamimpact::verification {
 struct SweepOptions {
   std::filesystem::path scene;
   std::string method = "paper";
-  std::vector<double> dts;            ///< s (scenes with a numeric dt)
-  std::vector<double> fractions;      ///< of the critical step (scenes with dt = "auto"); instead of dts
-  std::vector<std::string> meshes;    ///< element multipliers (beam methods) or presets; empty = scene's
-  std::string reference = "self";     ///< "self" | a method name | a run directory
+  std::vector<double> dts;          ///< s (scenes with a numeric dt)
+  std::vector<double> fractions;    ///< of the critical step (scenes with dt = "auto"); instead of dts
+  std::vector<std::string> meshes;  ///< element multipliers (beam methods) or presets; empty = scene's
+  std::string reference = "self";   ///< "self" | a method name | a run directory
   std::filesystem::path out;
   int jobs = 1;
-  double timeout = 3600.0;            ///< s per run
+  double timeout = 3600.0;  ///< s per run
 };
 
 /// @brief One point of the sweep.
@@ -33,9 +33,9 @@ struct SweepPoint {
 
 /// @brief The whole sweep.
 struct SweepResult {
-  std::string reference_label;        ///< what the errors are measured against
+  std::string reference_label;  ///< what the errors are measured against
   std::filesystem::path reference_dir;
-  std::vector<SweepPoint> points;     ///< in the order dts x meshes
+  std::vector<SweepPoint> points;  ///< in the order dts x meshes
 };
 
 /// @brief Runs the sweep (runs in parallel) and compares each point with the reference.

@@ -86,58 +86,64 @@ std::optional<double> observed_order(std::optional<double> e_coarse, std::option
   return std::log(*e_coarse / *e_fine) / std::log(r);
 }
 
-ItemResult evaluate_case(const Case& c, const std::map<std::string, JobOutcome>& runs) {
+namespace {
+
+/// An item about one run under test: its identity and the run's times.
+ItemResult item_for(const char* kind, const JobSpec& run, const std::string& name, const std::string& tier,
+                    bool required, const std::string& note, const std::map<std::string, JobOutcome>& runs) {
   ItemResult r;
-  r.kind = "case";
-  r.scene = c.run.scene_name();
-  r.name = c.name();
-  r.settings = c.run.settings_label();
-  r.reference = c.reference.scene == c.run.scene ? c.reference.settings_label() : c.reference.label();
-  r.tier = c.tier;
-  r.required = c.required;
-  r.note = c.note;
-  if (auto it = runs.find(c.run.key()); it != runs.end()) {
+  r.kind = kind;
+  r.scene = run.scene_name();
+  r.name = name;
+  r.settings = run.settings_label();
+  r.tier = tier;
+  r.required = required;
+  r.note = note;
+  if (auto it = runs.find(run.key()); it != runs.end()) {
     r.wall_seconds = it->second.process_seconds;
     r.solver_seconds = it->second.solver_seconds;
-    // Name every case by its step, also when the scene chose it (dt = "auto" or the scene's dt).
-    if (!c.run.dt && it->second.dt > 0.0) {
-      r.settings += fmt::format(" dt={:.6g}", it->second.dt);
-      r.name = r.scene + " " + r.settings + " vs " + r.reference;
-    }
-  }
-  if (!runs_ok(r, {&c.run, &c.reference}, c.gates, runs)) return r;
-  try {
-    const Comparison cmp = compare_runs(StoredRun::read(runs.at(c.run.key()).dir),
-                                        StoredRun::read(runs.at(c.reference.key()).dir));
-    for (const auto& g : c.gates) r.gates.push_back(check_gate(g, cmp));
-    r.comparisons.push_back(cmp);
-  } catch (const std::exception& e) {
-    not_evaluated(r, c.gates, std::string("comparison failed: ") + e.what(), false);
   }
   return r;
 }
 
-ItemResult evaluate_check(const RunCheck& c, const std::map<std::string, JobOutcome>& runs) {
-  ItemResult r;
-  r.kind = "check";
-  r.scene = c.run.scene_name();
-  r.name = c.name();
-  r.settings = c.run.settings_label();
-  r.tier = c.tier;
-  r.required = c.required;
-  r.note = c.note;
-  if (auto it = runs.find(c.run.key()); it != runs.end()) {
-    r.wall_seconds = it->second.process_seconds;
-    r.solver_seconds = it->second.solver_seconds;
-  }
-  if (!runs_ok(r, {&c.run}, c.gates, runs)) return r;  // a crash, a NaN or a refusal fails every gate
+/// Applies the gates to the comparison that `compute` makes; a failure to compute fails them all.
+template <class F>
+void apply_gates(ItemResult& r, const std::vector<Gate>& gates, F compute, const std::string& what) {
   try {
-    const Comparison cmp = check_run(StoredRun::read(runs.at(c.run.key()).dir));
-    for (const auto& g : c.gates) r.gates.push_back(check_gate(g, cmp));
+    const Comparison cmp = compute();
+    for (const auto& g : gates) r.gates.push_back(check_gate(g, cmp));
     r.comparisons.push_back(cmp);
   } catch (const std::exception& e) {
-    not_evaluated(r, c.gates, std::string("health check failed: ") + e.what(), false);
+    not_evaluated(r, gates, what + " failed: " + e.what(), false);
   }
+}
+
+}  // namespace
+
+ItemResult evaluate_case(const Case& c, const std::map<std::string, JobOutcome>& runs) {
+  ItemResult r = item_for("case", c.run, c.name(), c.tier, c.required, c.note, runs);
+  r.reference = c.reference.scene == c.run.scene ? c.reference.settings_label() : c.reference.label();
+  // Name every case by its step, also when the scene chose it (dt = "auto" or the scene's dt).
+  if (auto it = runs.find(c.run.key()); it != runs.end() && !c.run.dt && it->second.dt > 0.0) {
+    r.settings += fmt::format(" dt={:.6g}", it->second.dt);
+    r.name = r.scene + " " + r.settings + " vs " + r.reference;
+  }
+  if (!runs_ok(r, {&c.run, &c.reference}, c.gates, runs)) return r;
+  apply_gates(
+      r, c.gates,
+      [&] {
+        return compare_runs(StoredRun::read(runs.at(c.run.key()).dir),
+                            StoredRun::read(runs.at(c.reference.key()).dir));
+      },
+      "comparison");
+  return r;
+}
+
+ItemResult evaluate_check(const RunCheck& c, const std::map<std::string, JobOutcome>& runs) {
+  ItemResult r = item_for("check", c.run, c.name(), c.tier, c.required, c.note, runs);
+  if (!runs_ok(r, {&c.run}, c.gates, runs)) return r;  // a crash, a NaN or a refusal fails every gate
+  apply_gates(
+      r, c.gates, [&] { return check_run(StoredRun::read(runs.at(c.run.key()).dir)); }, "health check");
   return r;
 }
 

@@ -4,8 +4,9 @@ in a scratch copy of the source tree and run the quick verification tier against
 
 Besides the quick tier, the real-gap tests (GEOMETRY_TESTS) run against each mutant.
 
-Usage: tools/mutation-test.sh [--all] [--only NAME[,NAME]] [--out DIR] [--scratch DIR] [--jobs N]
-  default: the fast CI subset (mutants marked ci); --all: every mutant.
+Usage: tools/mutation-test.sh [--all] [--only NAME[,NAME]] [--out DIR] [--scratch DIR] [--jobs N] [--check]
+  default: the fast CI subset (mutants marked ci); --all: every mutant; --check: only check that
+  every mutant's text occurs exactly once in the source (no build; ctest mutants_apply).
 Writes OUT/mutation.json: [{"mutant", "what", "killed_by": [gate ids "case:metric"], ...}] and
 OUT/mutation.md; exits 1 when a mutant survives (no gate fails), 2 on a usage or build error of
 the unmutated tree. The worktree is never modified: the copy lives in SCRATCH/tree (default
@@ -65,6 +66,20 @@ def apply_edits(tree: Path, edits):
     return saved
 
 
+def check_applicable():
+    """Every mutant's old text must occur exactly once in the source, or the mutant tests nothing."""
+    bad = []
+    for m in MUTANTS:
+        for rel, old, _ in m["edits"]:
+            n = (ROOT / rel).read_text().count(old)
+            if n != 1:
+                bad.append(f"{m['name']}: {rel} holds {old!r} {n} times (expected once)")
+    for b in bad:
+        print(f"mutation-test --check: {b}", file=sys.stderr)
+    print(f"mutation-test --check: {len(MUTANTS) - len({b.split(':')[0] for b in bad})} / {len(MUTANTS)} mutants apply")
+    return 1 if bad else 0
+
+
 def build(build_dir: Path, tree: Path, log: Path):
     env = dict(os.environ)
     env.setdefault("CCACHE_BASEDIR", "/work")
@@ -118,7 +133,10 @@ def main():
     ap.add_argument("--out", default=str(ROOT / "out/mutation"))
     ap.add_argument("--scratch", default=str(ROOT / "build-mutation"))
     ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--check", action="store_true", help="only check that every mutant applies to the source")
     a = ap.parse_args()
+    if a.check:
+        return check_applicable()
     names = [m["name"] for m in MUTANTS]
     if a.only:
         chosen = a.only.split(",")

@@ -133,6 +133,7 @@ void recognise_rod_on_beam(const Scene& scene, const Frame& f, ExactProblem& p) 
 }  // namespace
 
 ExactProblem recognise_scene(const Scene& scene) {
+  refuse_contact_search(scene, "exact");
   check_one_frictionless_undamped_contact(scene);
   const Contact& c = scene.contacts[0];
   ExactProblem p;

@@ -282,6 +282,9 @@ def load_scene(path, overrides=None):
         if striker == target:
             c.fail("target", "expected a body other than the striker")
         node = c.raw("node")
+        if node == "all":
+            c.fail("node", 'node = "all" (contact search) is run by the paper method only; the continuum '
+                   'models the striker\'s end face: expected "start" or "end"')
         nel = bodies[names[striker]].elements
         if node in ("start", 0):
             end_name = "start"

@@ -227,6 +227,7 @@ double integrate(const Scene& scene, const IdaOptions& opt, double dt, PenaltyId
 }  // namespace
 
 SimulationResult solve(const Scene& scene) {
+  refuse_contact_search(scene, "ida");
   ResultRecorder rec(scene, "ida", ContactSampling::kAdaptiveSteps);
   SimulationResult& r = rec.result();
   const Effects effects = ida_effects(scene, r.assumed);

@@ -19,11 +19,22 @@ constexpr double kSnap = 1e-9;
 ContactPair::ContactPair(const Model& model, const Scene& scene, int index, SurfaceInterpolation surface)
     : model_(model), surface_(surface) {
   const Contact& c = scene.contacts[index];
-  const Body& tb = scene.bodies[c.target];
+  locate(scene, index, c.striker, c.node, c.target);
+}
+
+ContactPair::ContactPair(const Model& model, const Scene& scene, int index, int striker, int node, int target,
+                         SurfaceInterpolation surface)
+    : model_(model), surface_(surface), searched_(true) {
+  locate(scene, index, striker, node, target);
+}
+
+void ContactPair::locate(const Scene& scene, int index, int striker_body, int node, int target) {
+  const Model& model = model_;
+  const Body& tb = scene.bodies[target];
   const std::string key = "contacts[" + std::to_string(index) + "]";
-  striker_ = model.node_id(c.striker, c.node);
-  target_body_ = c.target;
-  target_first_ = model.node_id(c.target, 0);
+  striker_ = model.node_id(striker_body, node);
+  target_body_ = target;
+  target_first_ = model.node_id(target, 0);
   target_elements_ = tb.elements;
   const Vec2 xs = model.node_position(striker_);
   const double L = tb.length();
@@ -41,7 +52,7 @@ ContactPair::ContactPair(const Model& model, const Scene& scene, int index, Surf
     xi2_ = 1.0 - xi1_;
     n_ = at_start ? Vec2{-axis[0], -axis[1]} : axis;
     t_ = {n_[1], -n_[0]};
-  } else if (along >= -tol && along <= L + tol && std::abs(across) > tol) {
+  } else if ((searched_ || (along >= -tol && along <= L + tol)) && std::abs(across) > tol) {
     // The striker node faces the target's surface: normal across the axis, toward the striker.
     const double sgn = across > 0 ? 1.0 : -1.0;  // across > 0: striker on the right of the axis
     n_ = {sgn * axis[1], -sgn * axis[0]};
@@ -54,9 +65,10 @@ ContactPair::ContactPair(const Model& model, const Scene& scene, int index, Surf
     if (xi2_ > 1.0 - kSnap) xi2_ = 1.0;
     xi1_ = 1.0 - xi2_;
     kind_ = (xi2_ == 0.0 || xi2_ == 1.0) ? ContactKind::kNodeToNode : ContactKind::kNodeToSurface;
+    on_surface_ = along >= -tol && along <= L + tol;  // a searched node beyond an end joins later
   } else {
     throw SceneError(scene.file, key + ".node",
-                     "the striker node of body '" + scene.bodies[c.striker].name +
+                     "the striker node of body '" + scene.bodies[striker_body].name +
                          "' faces neither the surface nor an end of target '" + tb.name +
                          "'; expected a node above the target's span or on its axis beyond an end");
   }

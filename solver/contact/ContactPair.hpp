@@ -28,6 +28,13 @@ class ContactPair {
   ContactPair(const Model& model, const Scene& scene, int index,
               SurfaceInterpolation surface = SurfaceInterpolation::kLinear);
 
+  /// @brief A pair of a contact search (contact_search.hpp): node `node` (0-based within body
+  /// `striker`) against the surface of body `target`, for scene contact `index`. The node must
+  /// lie off the target's axis (the side fixes the normal); one beyond the target's end starts
+  /// off the surface (on_surface() false) and joins when it slides over it.
+  ContactPair(const Model& model, const Scene& scene, int index, int striker, int node, int target,
+              SurfaceInterpolation surface = SurfaceInterpolation::kLinear);
+
   /// @brief Kind found at t = 0.
   ContactKind kind() const { return kind_; }
   /// @brief Global node id of the striker node.
@@ -61,10 +68,16 @@ class ContactPair {
   /// ends there, so the pair can carry no force (it is open whatever its extended gap says).
   bool on_surface() const { return on_surface_; }
 
+  /// @brief True for a pair added by a contact search (not the scene's declared node).
+  bool searched() const { return searched_; }
+  /// @brief The target body (index into the scene's bodies).
+  int target_body() const { return target_body_; }
+
   /// @brief Displacement of the struck point (interpolated as the rows are) from U (m).
   Vec2 target_vector(const Eigen::VectorXd& U) const;
 
  private:
+  void locate(const Scene& scene, int index, int striker_body, int node, int target);
   void build_rows();
   const Model& model_;
   SurfaceInterpolation surface_;
@@ -75,6 +88,7 @@ class ContactPair {
   Vec2 n_{}, t_{};
   double g0_ = 0.0;
   bool on_surface_ = true;
+  bool searched_ = false;
   std::vector<DofTerm> gn_, gt_;
 };
 

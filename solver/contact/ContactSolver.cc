@@ -1,6 +1,7 @@
 #include <beamimpact/contact/ContactSolver.hpp>
 
 #include <cmath>
+#include <limits>
 
 namespace beamimpact::paper {
 
@@ -12,19 +13,30 @@ ContactSolver::ContactSolver(std::vector<ContactPair>& pairs, std::vector<double
       tol_(std::move(gap_tol)),
       apply_H_(std::move(apply_H)),
       out_(pairs.size()),
-      hn_(pairs.size(), Eigen::VectorXd::Zero(n)),
-      ht_(friction ? pairs.size() : 0, Eigen::VectorXd::Zero(n)),
+      hn_(pairs.size()),
+      ht_(friction ? pairs.size() : 0),
       fresh_(pairs.size(), 0),
       scratch_(Eigen::VectorXd::Zero(n)),
       gbar_(pairs.size()),
       sbar_(pairs.size()),
-      active_(pairs.size()) {}
+      active_(pairs.size()),
+      candidate_(pairs.size()) {
+  // Response columns of declared pairs are sized now (no allocation in the step loop); a
+  // search's pairs get theirs when they first close (memory grows with the pairs that touch).
+  for (std::size_t c = 0; c < pairs.size(); ++c)
+    if (!pairs[c].searched()) {
+      hn_[c].setZero(n);
+      if (friction_) ht_[c].setZero(n);
+    }
+  engaged_.reserve(pairs.size());
+}
 
 void ContactSolver::refresh_response(int c) {
   if (fresh_[c]) return;
   auto column = [&](const std::vector<DofTerm>& row, Eigen::VectorXd& out) {
     scratch_.setZero();
     for (const DofTerm& t : row) scratch_(t.eq) += t.coeff;
+    if (out.size() != scratch_.size()) out.setZero(scratch_.size());
     apply_H_(scratch_, out);
   };
   column(pairs_[c].normal_row(), hn_[c]);
@@ -35,7 +47,17 @@ void ContactSolver::refresh_response(int c) {
 const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Ubar, const Eigen::VectorXd& U) {
   const int m = static_cast<int>(pairs_.size());
   any_ = false;
+  engaged_.clear();
+  if (boxes_) boxes_->update(Ubar);
   for (int c = 0; c < m; ++c) {
+    // Contact search: an open searched pair whose node is outside the other body's box cannot
+    // touch it within this step; it is skipped (gap reported as +inf: far).
+    if (boxes_ && pairs_[c].searched() && out_[c].state == ContactState::kOpen &&
+        !boxes_->near(Ubar, pairs_[c].striker_node(), pairs_[c].target_body())) {
+      out_[c] = ContactForce{0.0, 0.0, std::numeric_limits<double>::infinity(), 0.0, ContactState::kOpen};
+      active_[c] = candidate_[c] = 0;
+      continue;
+    }
     // A sliding (or newly closing) striker is re-located from the predicted configuration; a
     // sticking one stays on the material point it holds.
     if (out_[c].state != ContactState::kStick && pairs_[c].relocate(Ubar)) fresh_[c] = 0;
@@ -45,7 +67,11 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
         friction_ ? ContactPair::eval(p.tangent_row(), Ubar) - ContactPair::eval(p.tangent_row(), U) : 0.0;
     out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};
     active_[c] = gbar_[c] < -tol_[c] && p.on_surface();
-    if (active_[c]) refresh_response(c);
+    candidate_[c] = p.on_surface();
+    if (active_[c]) {
+      refresh_response(c);
+      engaged_.push_back(c);
+    }
   }
   // Gauss-Seidel over contacts: each local solve sees the others' current forces. A contact that
   // was open before the others' forces were applied joins as soon as they push it into
@@ -53,10 +79,10 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
   for (int sweep = 0; sweep < (m > 1 ? 100 : 1); ++sweep) {
     double change = 0.0;
     for (int c = 0; c < m; ++c) {
-      if (!active_[c] && (m == 1 || !pairs_[c].on_surface())) continue;
+      if (!active_[c] && (m == 1 || !candidate_[c])) continue;
       const ContactPair& p = pairs_[c];
       double g = gbar_[c], s = sbar_[c];
-      for (int d = 0; d < m; ++d) {  // effect of the other contacts' forces on this one
+      for (int d : engaged_) {  // effect of the other contacts' forces on this one
         if (d == c || out_[d].state == ContactState::kOpen) continue;
         g += out_[d].R * ContactPair::eval(p.normal_row(), hn_[d]);
         if (friction_) {
@@ -69,6 +95,7 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
         if (g >= -tol_[c]) continue;  // still open with the others' forces
         active_[c] = 1;
         refresh_response(c);
+        engaged_.insert(std::upper_bound(engaged_.begin(), engaged_.end(), c), c);  // keep index order
       }
       const double Ann = ContactPair::eval(p.normal_row(), hn_[c]);
       ContactForce f{0.0, 0.0, g, s, ContactState::kOpen};
@@ -115,7 +142,7 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
     any_ |= out_[c].state != ContactState::kOpen;
     if (out_[c].state == ContactState::kOpen && m > 1) {
       double g = gbar_[c];
-      for (int d = 0; d < m; ++d)
+      for (int d : engaged_)
         if (out_[d].state != ContactState::kOpen) {
           refresh_response(d);
           g += out_[d].R * ContactPair::eval(pairs_[c].normal_row(), hn_[d]);

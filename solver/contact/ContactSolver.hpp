@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <beamimpact/contact/ContactPair.hpp>
+#include <beamimpact/contact/contact_search.hpp>
 #include <beamimpact/schema/output_schema.hpp>
 
 namespace beamimpact::paper {
@@ -43,6 +44,9 @@ class ContactSolver {
   void invalidate() { std::fill(fresh_.begin(), fresh_.end(), 0); }
   /// @brief True when the last solve produced any non-zero force.
   bool any_force() const { return any_; }
+  /// @brief Lets solve() skip open searched pairs whose node is outside the other body's box
+  /// (nullptr: check every pair). The boxes must outlive the solver.
+  void set_search_boxes(SearchBoxes* boxes) { boxes_ = boxes; }
 
  private:
   void refresh_response(int c);
@@ -57,6 +61,9 @@ class ContactSolver {
   Eigen::VectorXd scratch_;
   std::vector<double> gbar_, sbar_;  ///< predicted violations per contact (sized once)
   std::vector<char> active_;
+  std::vector<char> candidate_;  ///< on the surface and not skipped by the box pass
+  std::vector<int> engaged_;     ///< active pairs of this solve, in index order
+  SearchBoxes* boxes_ = nullptr;
   bool any_ = false;
 };
 

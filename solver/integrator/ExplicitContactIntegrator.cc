@@ -5,30 +5,42 @@
 namespace beamimpact::paper {
 namespace {
 
-std::vector<ContactPair> make_pairs(const Model& model, const Scene& scene, SurfaceInterpolation surface) {
-  std::vector<ContactPair> pairs;
-  for (int c = 0; c < static_cast<int>(scene.contacts.size()); ++c)
-    pairs.emplace_back(model, scene, c, surface);
-  return pairs;
-}
-
-std::vector<double> frictions(const Scene& scene) {
+/// Per pair: the Coulomb coefficient of its scene contact.
+std::vector<double> frictions(const Scene& scene, const std::vector<int>& contact_of_pair) {
   std::vector<double> mu;
-  for (const Contact& c : scene.contacts) mu.push_back(c.friction);
+  for (int c : contact_of_pair) mu.push_back(scene.contacts[c].friction);
   return mu;
 }
 
 /// Per contact: 1e-10 of the larger element length of the two bodies in contact. Above the
 /// roundoff of positions (~1e-15 relative), far below any physical penetration per step, and
 /// blind to bodies that take no part in the contact.
-std::vector<double> gap_tolerances(const Scene& scene) {
+std::vector<double> gap_tolerances(const Scene& scene, const std::vector<int>& contact_of_pair) {
   std::vector<double> tol;
-  for (const Contact& c : scene.contacts) {
+  for (int k : contact_of_pair) {
+    const Contact& c = scene.contacts[k];
     const Body& a = scene.bodies[c.striker];
     const Body& b = scene.bodies[c.target];
     tol.push_back(1e-10 * std::max(a.length() / a.elements, b.length() / b.elements));
   }
   return tol;
+}
+
+/// The search boxes of a scene with node = "all" contacts (nullptr without): the bodies of those
+/// contacts, each inflated by its element length.
+std::unique_ptr<SearchBoxes> search_boxes(const Model& model, const Scene& scene) {
+  std::vector<char> boxed(scene.bodies.size(), 0);
+  std::vector<double> margin(scene.bodies.size(), 0.0);
+  bool any = false;
+  for (const Contact& c : scene.contacts)
+    if (c.search) {
+      any = true;
+      for (int b : {c.striker, c.target}) {
+        boxed[b] = 1;
+        margin[b] = scene.bodies[b].length() / scene.bodies[b].elements;
+      }
+    }
+  return any ? std::make_unique<SearchBoxes>(model, boxed, margin) : nullptr;
 }
 
 }  // namespace
@@ -42,9 +54,13 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
       friction_(effects.friction),
       minv_(model),
       fint_(model, effects.corotational ? effects.rotating : std::vector<bool>(scene.bodies.size(), false)),
-      pairs_(make_pairs(model, scene, surface)),
-      solver_(pairs_, frictions(scene), effects.friction, model.size(), gap_tolerances(scene),
+      search_(make_contact_pairs(model, scene, surface)),
+      pairs_(std::move(search_.pairs)),
+      boxes_(search_boxes(model, scene)),
+      solver_(pairs_, frictions(scene, search_.contact), effects.friction, model.size(),
+              gap_tolerances(scene, search_.contact),
               [this](const Eigen::VectorXd& f, Eigen::VectorXd& out) { apply_H(f, out); }) {
+  solver_.set_search_boxes(boxes_.get());
   if (!model.lumped() && fint_.nonlinear()) {
     cmass_ = std::make_unique<CorotationalMass>(model, fint_);
     minv_.factorize_pattern(cmass_->M());  // M_A(t) may hold entries the model's M never stored

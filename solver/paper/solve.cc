@@ -1,5 +1,6 @@
 #include <beamimpact/paper/solve.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -49,13 +50,50 @@ void set_merge_rule(const Options& o, double dt, ResultRecorder& rec) {
                   o.merge_steps, static_cast<double>(o.merge_steps) * dt));
 }
 
-HistoryRow make_row(const ExplicitContactIntegrator& in) {
+/// The node pairs of each scene contact (one, unless the contact searches: node = "all").
+std::vector<std::vector<int>> pair_groups(const ExplicitContactIntegrator& in, std::size_t contacts) {
+  std::vector<std::vector<int>> g(contacts);
+  for (std::size_t p = 0; p < in.pair_contact().size(); ++p) g[in.pair_contact()[p]].push_back(static_cast<int>(p));
+  return g;
+}
+
+/// One scene contact as the history and the statistics report it. A single pair: its force.
+/// A search: R and tau summed over the contact's pairs (each along its own pair's normal and
+/// tangent), the state of the pair carrying the largest R, the least gap over the pairs that
+/// face the surface; `pair` is that largest-R pair (the primary while all are open).
+struct ContactView {
+  ContactForce f;
+  int pair = 0;
+};
+
+ContactView view(const ExplicitContactIntegrator& in, int contact, const std::vector<int>& group) {
+  const int primary = in.primary_pair()[contact];
+  if (group.size() == 1) return {in.forces()[primary], primary};
+  ContactView v{in.forces()[primary], primary};
+  v.f.R = v.f.tau = 0.0;
+  double Rmax = 0.0;
+  for (int p : group) {
+    const ContactForce& f = in.forces()[p];
+    v.f.R += f.R;
+    v.f.tau += f.tau;
+    if (in.pairs()[p].on_surface()) v.f.gap_next = std::min(v.f.gap_next, f.gap_next);
+    if (f.R > Rmax) {
+      Rmax = f.R;
+      v.pair = p;
+      v.f.state = f.state;
+    }
+  }
+  return v;
+}
+
+HistoryRow make_row(const ExplicitContactIntegrator& in, const std::vector<std::vector<int>>& groups) {
   const Model& m = in.model();
   HistoryRow row;
   row.t = in.time();
-  for (std::size_t c = 0; c < in.pairs().size(); ++c) {
-    const ContactPair& pair = in.pairs()[c];
-    const ContactForce& f = in.forces()[c];
+  for (std::size_t c = 0; c < groups.size(); ++c) {
+    const ContactView v = view(in, static_cast<int>(c), groups[c]);
+    const ContactPair& pair = in.pairs()[v.pair];
+    const ContactForce& f = v.f;
     ContactSample s;
     s.R = f.R;
     s.tau = f.tau;
@@ -79,14 +117,15 @@ HistoryRow make_row(const ExplicitContactIntegrator& in) {
 /// output_every-th step and at the last one. Throws when the energy is no longer finite or has grown
 /// 1e6-fold.
 void record_step(const ExplicitContactIntegrator& integ, long p, long N, const Scene& scene,
-                 double critical_dt, std::vector<DeformedSurface>& surfaces, ResultRecorder& rec) {
-  for (std::size_t c = 0; c < integ.forces().size(); ++c) {
-    const ContactForce& f = integ.forces()[c];
+                 double critical_dt, const std::vector<std::vector<int>>& groups,
+                 std::vector<DeformedSurface>& surfaces, ResultRecorder& rec) {
+  for (std::size_t c = 0; c < groups.size(); ++c) {
+    const ContactForce f = view(integ, static_cast<int>(c), groups[c]).f;
     rec.sample(c, integ.time(), f.R, f.tau, integ.dt(), f.state);
-    rec.track_real_gap(c, integ.time(), surfaces[c].gap(integ.U()).gap);
+    for (int q : groups[c]) rec.track_real_gap(c, integ.time(), surfaces[q].gap(integ.U()).gap);
   }
   if (p % scene.time.output_every != 0 && p != N) return;
-  HistoryRow row = make_row(integ);
+  HistoryRow row = make_row(integ, groups);
   const double E = row.kinetic + row.strain;
   const double E0 = p == 0 ? E : rec.result().energy_initial;
   if (!std::isfinite(E) || E > 1e6 * E0 + 1e-300)
@@ -132,12 +171,13 @@ SimulationResult solve(const Scene& scene_in) {
   set_merge_rule(options, r.dt, rec);
 
   ExplicitContactIntegrator integ(model, scene, effects, r.dt, options.surface);
-  std::vector<DeformedSurface> surfaces;  // the real gap of each contact, from the deformed geometry
-  for (const Contact& c : scene.contacts)
-    surfaces.emplace_back(model, c.target, model.node_id(c.striker, c.node));
+  const std::vector<std::vector<int>> groups = pair_groups(integ, scene.contacts.size());
+  std::vector<DeformedSurface> surfaces;  // the real gap of each pair, from the deformed geometry
+  for (const ContactPair& pair : integ.pairs())
+    surfaces.emplace_back(model, pair.target_body(), pair.striker_node());
   Progress progress("paper", scene.time.end);
   for (long p = 0;; ++p) {
-    record_step(integ, p, N, scene, cs.dt, surfaces, rec);
+    record_step(integ, p, N, scene, cs.dt, groups, surfaces, rec);
     if (p == N) break;
     integ.step();
     progress.update(integ.time());
@@ -154,10 +194,17 @@ SimulationResult solve(const Scene& scene_in) {
   r.extra["dofs"] = model.size();
   r.extra["dofs_per_node"] = model.dofs_per_node();
   std::vector<ContactKind> kinds;
-  for (const ContactPair& pair : integ.pairs()) kinds.push_back(pair.kind());
+  for (int p : integ.primary_pair()) kinds.push_back(integ.pairs()[p].kind());
   SimulationResult result = rec.finish(kinds);
-  for (std::size_t c = 0; c < scene.contacts.size(); ++c)
+  for (std::size_t c = 0; c < scene.contacts.size(); ++c) {
     result.contacts[c].friction = scene.contacts[c].friction;  // as applied
+    result.contacts[c].extra["contact_search"] =
+        scene.contacts[c].search
+            ? fmt::format("all nodes: {} node pairs (every striker node off the target's axis, the "
+                          "target's end nodes against the striker); node {} reported while open",
+                          groups[c].size(), scene.contacts[c].node)
+            : fmt::format("declared node {} only (the paper's method)", scene.contacts[c].node);
+  }
   return result;
 }
 

@@ -77,7 +77,12 @@ struct Contact {
   int node = 0;           ///< striker node index (resolved from "start"/"end"/index)
   int target = 0;         ///< index into Scene::bodies
   double friction = 0.0;  ///< Coulomb mu
+  /// node = "all" (contact search): every striker node is checked against the target's surface
+  /// and the target's end nodes against the striker's; `node` is then the striker node nearest
+  /// the target at t = 0 (the one whose motion the history reports while nothing touches).
+  bool search = false;
 };
+
 
 /// @brief Forced effects from the optional [effects] table (empty = derived from the scene).
 struct EffectOverrides {
@@ -105,5 +110,9 @@ struct Scene {
   /// @brief Index of the body with this name, or -1.
   int body_index(const std::string& name) const;
 };
+
+/// @brief Refuses a scene with a contact search (node = "all") for a method that checks only the
+/// declared node: SceneError naming contacts[i].node. `method` names the method in the message.
+void refuse_contact_search(const Scene& scene, const std::string& method);
 
 }  // namespace beamimpact

@@ -150,8 +150,8 @@ Vec2 bounded(TableReader& r, const std::string& key, const Vec2& v, const std::s
 
 int node_ref(TableReader& r, const std::string& key, const Body& body) {
   const toml::node* n = r.raw(key);
-  const std::string expected = "\"start\", \"end\" or a node index 0.." + std::to_string(body.elements) +
-                               " of body '" + body.name + "'";
+  const std::string expected = "\"start\", \"end\", \"all\" (contact search) or a node index 0.." +
+                               std::to_string(body.elements) + " of body '" + body.name + "'";
   if (!n) r.fail(key, "missing; expected " + expected);
   if (auto s = n->as_string()) {
     if (s->get() == "start") return 0;
@@ -164,6 +164,24 @@ int node_ref(TableReader& r, const std::string& key, const Body& body) {
     return static_cast<int>(i->get());
   }
   r.fail(key, "expected " + expected);
+}
+
+/// Distance (m) from point x to the segment of body b.
+double distance_to_body(const Vec2& x, const Body& b) {
+  const Vec2 d{b.end[0] - b.start[0], b.end[1] - b.start[1]};
+  const double L2 = d[0] * d[0] + d[1] * d[1];
+  const double s = std::clamp(((x[0] - b.start[0]) * d[0] + (x[1] - b.start[1]) * d[1]) / L2, 0.0, 1.0);
+  return std::hypot(x[0] - b.start[0] - s * d[0], x[1] - b.start[1] - s * d[1]);
+}
+
+/// The striker node nearest the target's segment at t = 0 (the first one on a tie).
+int nearest_node(const Body& striker, const Body& target) {
+  int best = 0;
+  for (int i = 1; i < striker.nodes(); ++i)
+    if (distance_to_body(striker.node_position(i), target) <
+        distance_to_body(striker.node_position(best), target))
+      best = i;
+  return best;
 }
 
 void read_time(TableReader& r, TimeSettings& t) {
@@ -346,11 +364,14 @@ Contact read_contact(TableReader& r, const Scene& sc) {
   const std::string s = r.string("striker", "the name of a body");
   c.striker = sc.body_index(s);
   if (c.striker < 0) r.fail("striker", "expected the name of a body, got '" + s + "'");
-  c.node = node_ref(r, "node", sc.bodies[c.striker]);
+  const toml::node* nn = r.raw("node");
+  c.search = nn && nn->as_string() && nn->as_string()->get() == "all";
+  if (!c.search) c.node = node_ref(r, "node", sc.bodies[c.striker]);
   const std::string t = r.string("target", "the name of a body");
   c.target = sc.body_index(t);
   if (c.target < 0) r.fail("target", "expected the name of a body, got '" + t + "'");
   if (c.target == c.striker) r.fail("target", "expected a body other than the striker");
+  if (c.search) c.node = nearest_node(sc.bodies[c.striker], sc.bodies[c.target]);
   c.friction = r.number_or("friction", 0.0, "a Coulomb coefficient >= 0");
   if (c.friction < 0) r.fail("friction", "expected a Coulomb coefficient >= 0");
   bounded(r, "friction", c.friction, "a Coulomb coefficient >= 0");
@@ -396,14 +417,6 @@ void keep_method_tables(TableReader& top, Scene& sc) {
 
 /// @brief Cross-checks that need the whole scene: a bending scene gives every body an inertia,
 /// and no two bodies overlap at t = 0.
-/// Distance (m) from point x to the segment of body b.
-double distance_to_body(const Vec2& x, const Body& b) {
-  const Vec2 d{b.end[0] - b.start[0], b.end[1] - b.start[1]};
-  const double L2 = d[0] * d[0] + d[1] * d[1];
-  const double s = std::clamp(((x[0] - b.start[0]) * d[0] + (x[1] - b.start[1]) * d[1]) / L2, 0.0, 1.0);
-  return std::hypot(x[0] - b.start[0] - s * d[0], x[1] - b.start[1] - s * d[1]);
-}
-
 /// A striker node that touches its target at t = 0 has no gap to close: refused for every method.
 void check_initial_gaps(const Scene& sc) {
   double scale = 0.0;
@@ -412,7 +425,8 @@ void check_initial_gaps(const Scene& sc) {
     const Contact& c = sc.contacts[i];
     const Body& striker = sc.bodies[c.striker];
     const Body& target = sc.bodies[c.target];
-    const Vec2 x = striker.node_position(c.node);
+    for (int node = c.search ? 0 : c.node; node <= (c.search ? striker.elements : c.node); ++node) {
+    const Vec2 x = striker.node_position(node);
     if (distance_to_body(x, target) <= 1e-9 * scale)
       throw SceneError(
           sc.file, "contacts[" + std::to_string(i) + "].node",
@@ -420,6 +434,14 @@ void check_initial_gaps(const Scene& sc) {
                       "(zero initial gap); expected a positive gap: move '{}' away from '{}' "
                       "(a contact must close during the run)",
                       striker.name, x[0], x[1], target.name, striker.name, target.name));
+    }
+    // A search also checks the target's end nodes against the striker.
+    for (int end : {0, target.elements})
+      if (c.search && distance_to_body(target.node_position(end), striker) <= 1e-9 * scale)
+        throw SceneError(sc.file, "contacts[" + std::to_string(i) + "].node",
+                         fmt::format("node = \"all\": an end node of target '{}' touches striker '{}' at t = 0 "
+                                     "(zero initial gap); expected a positive gap",
+                                     target.name, striker.name));
   }
 }
 

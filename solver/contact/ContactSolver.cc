@@ -65,6 +65,12 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
     gbar_[c] = p.g0() + ContactPair::eval(p.normal_row(), Ubar);
     sbar_[c] =
         friction_ ? ContactPair::eval(p.tangent_row(), Ubar) - ContactPair::eval(p.tangent_row(), U) : 0.0;
+    if (closure_slip_ == ClosureSlip::kFromClosure && friction_ && out_[c].state == ContactState::kOpen &&
+        gbar_[c] < -tol_[c]) {
+      // A closure step: only the slide after the closure instant (linear in time) is to be stopped.
+      const double g_now = std::max(0.0, p.g0() + ContactPair::eval(p.normal_row(), U));
+      sbar_[c] *= -gbar_[c] / (g_now - gbar_[c]);  // 1 - phi, phi = g_now / (g_now - gbar)
+    }
     out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};
     active_[c] = gbar_[c] < -tol_[c] && p.on_surface();
     candidate_[c] = p.on_surface();

@@ -16,6 +16,16 @@
 
 namespace beamimpact::paper {
 
+/// @brief How the stick test of a closure step (the step in which an open contact closes)
+/// measures the tangential increment.
+enum class ClosureSlip {
+  kWholeStep,    ///< the paper: over the whole step, although the contact is closed only for the
+                 ///< part after the closure instant (the discrete stick threshold then moves with
+                 ///< the closure phase)
+  kFromClosure,  ///< only the part after the closure instant, (1 - phi) of it with phi = g^p /
+                 ///< (g^p - gbar^{p+1}) the linear closure instant within the step
+};
+
 /// @brief Per-contact result of one step.
 struct ContactForce {
   double R = 0.0, tau = 0.0;  ///< N; R >= 0 compressive, tau along the target tangent on the striker
@@ -47,6 +57,9 @@ class ContactSolver {
   /// @brief Lets solve() skip open searched pairs whose node is outside the other body's box
   /// (nullptr: check every pair). The boxes must outlive the solver.
   void set_search_boxes(SearchBoxes* boxes) { boxes_ = boxes; }
+  /// @brief How a closure step's stick test measures the tangential increment (default: the
+  /// paper's whole step).
+  void set_closure_slip(ClosureSlip c) { closure_slip_ = c; }
 
  private:
   void refresh_response(int c);
@@ -64,6 +77,7 @@ class ContactSolver {
   std::vector<char> candidate_;  ///< on the surface and not skipped by the box pass
   std::vector<int> engaged_;     ///< active pairs of this solve, in index order
   SearchBoxes* boxes_ = nullptr;
+  ClosureSlip closure_slip_ = ClosureSlip::kWholeStep;
   bool any_ = false;
 };
 

@@ -44,6 +44,10 @@ class ExplicitContactIntegrator {
     solve_contacts();
   }
 
+  /// @brief How a closure step's stick test measures the tangential increment (ClosureSlip;
+  /// the paper's whole step unless set).
+  void set_closure_slip(ClosureSlip c) { solver_.set_closure_slip(c); }
+
   /// @brief Current time t_p (s) and step p.
   double time() const { return static_cast<double>(p_) * dt_; }
   long step_index() const { return p_; }

@@ -150,6 +150,9 @@ Options Options::read(const Scene& scene, std::map<std::string, std::string>* as
   o.surface = in.choice_or("surface", "linear", {"linear", "hermite"}) == "linear"
                   ? SurfaceInterpolation::kLinear
                   : SurfaceInterpolation::kHermite;
+  o.closure_slip = in.choice_or("closure_slip", "step", {"step", "from_closure"}) == "step"
+                       ? ClosureSlip::kWholeStep
+                       : ClosureSlip::kFromClosure;
   in.finish();
   return o;
 }
@@ -171,6 +174,7 @@ SimulationResult solve(const Scene& scene_in) {
   set_merge_rule(options, r.dt, rec);
 
   ExplicitContactIntegrator integ(model, scene, effects, r.dt, options.surface);
+  integ.set_closure_slip(options.closure_slip);
   const std::vector<std::vector<int>> groups = pair_groups(integ, scene.contacts.size());
   std::vector<DeformedSurface> surfaces;  // the real gap of each pair, from the deformed geometry
   for (const ContactPair& pair : integ.pairs())

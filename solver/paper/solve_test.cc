@@ -183,6 +183,53 @@ TEST(Friction, FirstContactStepSlipsWhenCotAlphaExceedsMu) {
   }
 }
 
+/// State of the first closed step of S4 at angle `angle`, the striker shifted along its velocity
+/// by f |v| dt (the contact then closes f dt earlier: another closure phase), with friction mu.
+ContactState closure_state(int angle, double f, double mu, const std::string& closure_slip) {
+  const Scene base = load_scene(paper_scene("s4_oblique_" + std::to_string(angle)), {"time.end=1e-6"});
+  const double dt = paper::solve(base).dt;
+  Scene s = load_scene(paper_scene("s4_oblique_" + std::to_string(angle)),
+                       {"paper.closure_slip=\"" + closure_slip + "\"", "time.end=0.02"});  // closes at 0.0115 s (60 deg), 0.0141 s (45 deg)
+  Body& A = s.bodies[0];
+  const double speed = std::hypot(A.velocity[0], A.velocity[1]);
+  for (Vec2* x : {&A.start, &A.end})
+    for (int c = 0; c < 2; ++c) (*x)[c] += f * dt * A.velocity[c];  // f |v| dt along v
+  s.time.dt = dt;
+  s.contacts[0].friction = mu;
+  for (const HistoryRow& row : paper::solve(s).history)
+    if (row.contacts[0].state != ContactState::kOpen) return row.contacts[0].state;
+  return ContactState::kOpen;
+}
+
+// The stick threshold of the closure step. S4's strike is node-to-node with lumped masses, so the
+// contact's compliance is dt^2 (1/m_A + 1/m_B) in every direction and stick needs mu >= |tangential
+// increment| / |penetration|; measured from the closure instant both grow at the approach speeds,
+// so the threshold is v_t / v_n = cot(alpha0) exactly, at every closure phase. The option
+// closure_slip = "from_closure" must give exactly that (bracketed at 1e-6: the phase follows from
+// rigid free flight, exact to roundoff). The paper's whole-step test does not (issue 12: measured
+// thresholds 0.61 to 8.6 at 60 deg): its threshold is cot(alpha0) / (1 - phi), checked below.
+TEST(Friction, ClosureStepStickThresholdIsCotAlphaFromTheClosureInstant) {
+  for (int a : {60, 45}) {
+    const double cot = 1.0 / std::tan(a * M_PI / 180.0);
+    for (double f : {0.0, 0.25, 0.5, 0.75}) {
+      EXPECT_EQ(closure_state(a, f, cot * (1 + 1e-6), "from_closure"), ContactState::kStick) << a << " " << f;
+      EXPECT_EQ(closure_state(a, f, cot * (1 - 1e-6), "from_closure"), ContactState::kSlip) << a << " " << f;
+    }
+  }
+  // The paper's whole-step test compares the whole step's tangential increment with the
+  // penetration of its last (1 - phi): its threshold is cot(alpha0) / (1 - phi), phi the closure
+  // phase (the fraction of the step before the gap reaches zero, from rigid free flight).
+  const Scene s60 = load_scene(paper_scene("s4_oblique_60"));
+  const double dt = paper::solve(load_scene(paper_scene("s4_oblique_60"), {"time.end=1e-6"})).dt;
+  const double t_close = s60.bodies[0].end[1] / -s60.bodies[0].velocity[1];  // B's surface at y = 0
+  for (double f : {0.0, 0.25, 0.5, 0.75}) {
+    const double phase = (t_close - f * dt) / dt, phi = phase - std::floor(phase);
+    const double mu = (1.0 / std::sqrt(3.0)) / (1.0 - phi);
+    EXPECT_EQ(closure_state(60, f, mu * (1 + 1e-6), "step"), ContactState::kStick) << f << " phi " << phi;
+    EXPECT_EQ(closure_state(60, f, mu * (1 - 1e-6), "step"), ContactState::kSlip) << f << " phi " << phi;
+  }
+}
+
 TEST(Oblique, PapersTrendSmallerAngleGivesSmallerDeflectionAndForce) {
   // Pu & Chi 3.4: as alpha0 falls 90 -> 60 -> 45 deg, B's vertical displacement and the normal
   // force fall (A's vertical velocity is v0 sin(alpha0)). Measured: 16.6, 11.8, 7.1 mm; peak R

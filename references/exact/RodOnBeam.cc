@@ -287,6 +287,12 @@ class Integration {
     std::unique_ptr<gsl_root_fsolver, void (*)(gsl_root_fsolver*)> owner(
         gsl_root_fsolver_alloc(gsl_root_fsolver_brent), gsl_root_fsolver_free);
     gsl_root_fsolver* solver = owner.get();
+    // Re-integrated from (ta, ya), the event function may already be <= 0 at ta (an event within
+    // roundoff of the last stop, e.g. a beam so soft that the gap barely moves): the event is at ta.
+    if (GSL_FN_EVAL(&F, ta) <= 0.0) return ta;
+    // The driver saw the crossing by tb; re-integrated, the function may stay above 0 there by
+    // roundoff (a gap or force that hovers at 1e-15): the event is at tb.
+    if (GSL_FN_EVAL(&F, tb) > 0.0) return tb;
     check(gsl_root_fsolver_set(solver, &F, ta, tb), "root bracketing");
     double lo = ta, hi = tb;
     for (int it = 0; it < 200; ++it) {
@@ -305,7 +311,13 @@ class Integration {
     t_ = te;
     memory_sample(t_, y_.data());
     track(t_, y_.data());
-    if (te <= last_event_t_) throw std::runtime_error("rod-on-beam: event location made no progress");
+    if (te <= last_event_t_)
+      throw std::runtime_error(
+          "exact rod-on-beam: two contact events at t = " + std::to_string(te) +
+          " s cannot be ordered (the gap and the contact force both stay within roundoff of zero: "
+          "the rod and the beam move together without a resolvable contact or separation); the "
+          "semi-analytic solution does not resolve this scene (e.g. a target this soft or light): "
+          "compare with --method ida or paper");
     last_event_t_ = te;
     if (d_.closed) {
       sol_.intervals.push_back({contact_start_, t_});

@@ -4,6 +4,8 @@
 #include <memory>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include <beamimpact/ida/ContactKinematics.hpp>
 #include <beamimpact/ida/PenaltyIda.hpp>
 #include <beamimpact/ida/ida_options.hpp>
@@ -13,6 +15,7 @@
 #include <beamimpact/model/critical_dt.hpp>
 #include <beamimpact/model/deformed_geometry.hpp>
 #include <beamimpact/record/ResultRecorder.hpp>
+#include <beamimpact/scene/SceneError.hpp>
 #include <beamimpact/scene/run_cost.hpp>
 #include <beamimpact/util/Progress.hpp>
 
@@ -95,6 +98,29 @@ PenaltyContacts make_penalty_contacts(const Scene& scene, const Model& model, co
     pc.laws.push_back(law);
   }
   return pc;
+}
+
+/// IDA resolves a closed penalty contact's oscillation (period 2 pi sqrt(m_red / kn)) with some
+/// 20 steps; a contact that stays closed for the whole run then costs 20 end / period steps. A
+/// striker of vanishing mass under a stiff penalty would make that astronomically many (a run
+/// that never ends): refused like any run far beyond the ordinary (run_cost.hpp) unless
+/// time.allow_long_run is set.
+void check_penalty_cost(const Scene& scene, const PenaltyContacts& pc, int unknowns) {
+  if (scene.time.allow_long_run) return;
+  for (std::size_t i = 0; i < pc.laws.size(); ++i) {
+    const double m_red = pc.extra[i]["reduced_mass"].get<double>();
+    const double period = 2.0 * M_PI * std::sqrt(m_red / pc.laws[i].kn);
+    const double steps = 20.0 * scene.time.end / period;
+    if (!(steps * unknowns <= kOrdinaryWork))
+      throw SceneError(scene.file, "time.allow_long_run",
+                       fmt::format("IDA's penalty on contacts[{}] oscillates with a period of {:.3g} s "
+                                   "(kn {:.3g} N/m, reduced mass {:.3g} kg): resolving it over time.end = "
+                                   "{:g} s takes about {:.3g} steps x {} unknowns, beyond an ordinary run "
+                                   "({:g}); set time.allow_long_run = true (or --allow-long), or a softer "
+                                   "ida.kn",
+                                   i, period, pc.laws[i].kn, m_red, scene.time.end, steps, unknowns,
+                                   kOrdinaryWork));
+  }
 }
 
 /// IDA's tolerances and linear solver: dense, or KLU ("auto": dense up to opt.dense_max unknowns).
@@ -249,6 +275,7 @@ SimulationResult solve(const Scene& scene) {
   SparseMatrix C;
   if (effects.damping) C = model.rayleigh_mass() * model.M() + model.rayleigh_stiffness() * model.K();
   const PenaltyContacts contacts = make_penalty_contacts(scene, model, opt, effects.friction, r);
+  check_penalty_cost(scene, contacts, n);
   std::vector<const ContactKinematics*> kinematics;
   for (const auto& g : contacts.geometry) kinematics.push_back(g.get());
   const IdaSettings settings = make_settings(opt, n, r);

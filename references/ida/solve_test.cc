@@ -209,6 +209,10 @@ TEST(RunIda, BadOptionsAreSceneErrors) {
   expect_error("ida.restitution=0", "ida.restitution");
   expect_error("ida.linear_solver=\"lu\"", "ida.linear_solver");
   expect_error("ida.kn=-5", "ida.kn");
+  // A striker of vanishing mass under the default penalty: its contact period (2 pi sqrt(m/kn),
+  // 2e-17 s here) would take ~1e18 IDA steps over S1; it hung before, now it is refused up front.
+  expect_error("bodies.A.area=1e-30", "time.allow_long_run");
+  expect_error("contacts[0].node=\"all\"", "contacts[0].node");  // contact search: paper only
 }
 
 }  // namespace

@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # @brief Installs the Debian packages beamimpact needs (idempotent; skips what is present).
-# Usage: tools/install-deps.sh [--no-fenicsx]
+# Usage: tools/install-deps.sh [--no-fenicsx] [--sanitizers]
 #   --no-fenicsx  skip python3-dolfinx (large: PETSc, MPI); the FEniCSx reference is then unavailable.
+#   --sanitizers  only the packages of tools/sanitize.sh and tools/fuzz.sh (clang, its sanitizer and
+#                 libFuzzer runtimes, ninja)
 set -euo pipefail
 pkgs=(cmake g++ make libeigen3-dev libsundials-dev libgsl-dev libgtest-dev libbenchmark-dev
       libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev
       python3-numpy python3-matplotlib)
 [[ "${1:-}" == "--no-fenicsx" ]] || pkgs+=(python3-dolfinx openmpi-bin)
+[[ "${1:-}" == "--sanitizers" ]] && pkgs=(clang libclang-rt-14-dev ninja-build)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -7,6 +7,7 @@
 #   env BEAMIMPACT_ASAN_DIR for another folder, BEAMIMPACT_JOBS for -j
 set -euo pipefail
 cd "$(dirname "$0")/.."
+bash tools/install-deps.sh --sanitizers
 build=${BEAMIMPACT_ASAN_DIR:-build-asan}
 jobs=${BEAMIMPACT_JOBS:-$(nproc)}
 launcher=()

@@ -120,7 +120,8 @@ class Loader {
   }
 
   /// Fields shared by runs and references; `dt` is read by the caller (a number or a list).
-  JobSpec read_spec(TableReader& r, const fs::path& scene, bool with_dt) {
+  /// mesh_ladder: `mesh` is a ladder's list of multipliers (read by read_ladder), not the run's.
+  JobSpec read_spec(TableReader& r, const fs::path& scene, bool with_dt, bool mesh_ladder = false) {
     JobSpec s;
     s.scene = scene;
     s.method = r.string("method", "a method name: " + method_names());
@@ -130,7 +131,7 @@ class Loader {
       s.dt = r.number("dt", "a positive time step (s)");
       if (!(*s.dt > 0.0)) r.fail("dt", "expected a positive time step (s)");
     }
-    if (const toml::node* n = r.raw("mesh")) {
+    if (const toml::node* n = mesh_ladder ? nullptr : r.raw("mesh")) {
       if (auto i = n->value<long>())
         s.mesh = std::to_string(*i);
       else if (auto str = n->value<std::string>())
@@ -170,8 +171,12 @@ class Loader {
       if (g.has("tol")) gate.tol = g.number("tol", "a non-negative tolerance in the norm's unit");
       if (ladder && g.has("min_order"))
         gate.min_order = g.number("min_order", "the least acceptable observed order");
-      if (!gate.tol && !gate.min_order)
-        g.fail("tol", ladder ? "expected tol and/or min_order" : "expected a tolerance");
+      if (ladder && g.has("richardson"))
+        gate.richardson = g.number("richardson", "a safety factor >= 1 on the Richardson error estimate");
+      if (gate.richardson && !(*gate.richardson >= 1.0))
+        g.fail("richardson", "expected a safety factor >= 1 on the Richardson error estimate (1.25: Roache)");
+      if (!gate.tol && !gate.min_order && !gate.richardson)
+        g.fail("tol", ladder ? "expected tol, min_order and/or richardson" : "expected a tolerance");
       if (gate.tol && !(*gate.tol >= 0.0)) g.fail("tol", "expected a non-negative tolerance");
       gate.why = g.string("why", "the justification of the tolerance (theory, mesh error, measured spread)");
       if (gate.why.size() < 10) g.fail("why", "expected a real justification");
@@ -207,23 +212,40 @@ class Loader {
   Convergence read_ladder(TableReader& r, const std::string& prefix) {
     Convergence v;
     const fs::path scene = scene_path(r);
-    const JobSpec base = read_spec(r, scene, false);
-    const bool by_dt = r.has("dt");
-    if (by_dt == r.has("fraction")) r.fail("dt", "expected exactly one of dt = [...] or fraction = [...]");
-    v.steps = numbers(r, by_dt ? "dt" : "fraction");
+    const JobSpec base = read_spec(r, scene, false, r.raw("mesh") && r.raw("mesh")->as_array());
+    const int given = r.has("dt") + r.has("fraction") + r.has("mesh");
+    if (given != 1) r.fail("dt", "expected exactly one of dt = [...], fraction = [...] or mesh = [...]");
+    const std::string key = r.has("dt") ? "dt" : r.has("fraction") ? "fraction" : "mesh";
+    v.steps = numbers(r, key);
+    if (key == "mesh")
+      for (double& s : v.steps) {
+        if (!(s >= 1.0) || s != std::floor(s)) r.fail("mesh", "expected whole element multipliers >= 1");
+        s = 1.0 / s;  // the refined quantity is the element size, relative to the scene's
+      }
     for (std::size_t i = 0; i + 1 < v.steps.size(); ++i)
       if (!(v.steps[i + 1] < v.steps[i]))
-        r.fail(by_dt ? "dt" : "fraction", "expected decreasing values (coarse to fine)");
+        r.fail(key, key == "mesh" ? "expected increasing multipliers (coarse to fine)"
+                                  : "expected decreasing values (coarse to fine)");
     for (double s : v.steps) {
       JobSpec spec = base;
-      if (by_dt)
+      if (key == "dt")
         spec.dt = s;
-      else
+      else if (key == "fraction")
         spec.set.push_back(fmt::format("time.fraction={:g}", s));
+      else
+        spec.mesh = fmt::format("{:g}", 1.0 / s);
       v.runs.push_back(spec);
+    }
+    if (r.has("reference")) {
+      TableReader rr(sub_table(r, "reference"), file_, prefix + ".reference", nullptr);
+      v.reference = read_spec(rr, rr.has("scene") ? scene_path(rr) : scene, true);
+      rr.finish();
     }
     common(r, v.tier, v.required, v.note);
     v.gates = read_gates(r, prefix, GateKind::kLadder);
+    for (const Gate& g : v.gates)
+      if (g.richardson && (!v.reference || v.runs.size() < 3))
+        r.fail("gates", "a richardson gate needs a reference and at least three rungs");
     return v;
   }
 
@@ -248,10 +270,13 @@ std::string Case::name() const {
 }
 
 std::string Convergence::name() const {
-  std::string s =
-      runs.front().scene_name() + " " + runs.front().method + " " + (runs.front().dt ? "dt=" : "fraction=");
-  for (std::size_t i = 0; i < steps.size(); ++i) s += fmt::format("{}{:g}", i ? "/" : "", steps[i]);
-  if (!runs.front().mesh.empty()) s += " mesh=" + runs.front().mesh;
+  const JobSpec& first = runs.front();
+  const bool by_mesh = runs.size() > 1 && runs[0].mesh != runs[1].mesh;
+  std::string s = first.scene_name() + " " + first.method + " " + (by_mesh ? "mesh=" : first.dt ? "dt=" : "fraction=");
+  for (std::size_t i = 0; i < steps.size(); ++i)
+    s += fmt::format("{}{:g}", i ? "/" : "", by_mesh ? 1.0 / steps[i] : steps[i]);
+  if (!by_mesh && !first.mesh.empty()) s += " mesh=" + first.mesh;
+  if (reference) s += " vs " + reference->settings_label();
   return s;
 }
 
@@ -276,8 +301,10 @@ std::vector<JobSpec> VerificationMatrix::runs(const std::string& tier) const {
       add(c.reference);
     }
   for (const auto& v : convergence)
-    if (in_tier(v.tier, tier))
+    if (in_tier(v.tier, tier)) {
       for (const auto& s : v.runs) add(s);
+      if (v.reference) add(*v.reference);
+    }
   for (const auto& c : checks)
     if (in_tier(c.tier, tier)) add(c.run);
   return out;

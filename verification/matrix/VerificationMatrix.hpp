@@ -18,6 +18,11 @@ struct Gate {
   std::optional<double> tol;        ///< passes when the error <= tol
   std::optional<double> min_order;  ///< convergence only: passes when the observed order >= this
   std::string why;                  ///< justification (theory, mesh error, measured spread)
+  /// Ladders with a reference, scalar norms only: a safety factor F (Roache's grid convergence
+  /// index uses 1.25 for three rungs). Passes when the Richardson limit Q_R of the last three
+  /// rungs (their own observed order p, no reference used) is within F E_R of the reference,
+  /// E_R = |Q_n - Q_{n-1}| / (r^p - 1) the extrapolation's own error estimate of the finest rung.
+  std::optional<double> richardson;
 };
 
 /// @brief A run compared with a reference run.
@@ -31,11 +36,14 @@ struct Case {
   std::string name() const;
 };
 
-/// @brief Self-convergence: the same method at successively refined steps; consecutive pairs
-/// are compared and the observed order of each norm is p = log(e_i / e_{i+1}) / log(r).
+/// @brief A convergence ladder: the same method at successively refined steps (dt or fraction)
+/// or meshes (element multiplier; the step follows from the scene). Without a reference,
+/// consecutive pairs are compared (self-convergence); with one, every rung is compared with it.
+/// The observed order of each norm is p = log(e_i / e_{i+1}) / log(r), r the refinement ratio.
 struct Convergence {
   std::vector<JobSpec> runs;  ///< coarse to fine
-  std::vector<double> steps;  ///< the refined quantity (dt or fraction) of each run
+  std::vector<double> steps;  ///< the refined quantity of each run: dt, fraction, or 1 / mesh multiplier
+  std::optional<JobSpec> reference;  ///< when set, errors are against it (e.g. the exact solution)
   std::string tier = "quick";
   bool required = true;
   std::vector<Gate> gates;  ///< min_order (and optionally tol on the finest pair)

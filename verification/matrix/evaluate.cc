@@ -48,9 +48,17 @@ bool runs_ok(ItemResult& r, const std::vector<const JobSpec*>& specs, const std:
 
 }  // namespace
 
+std::optional<std::pair<double, double>> richardson_limit(double q1, double q2, double q3, double r) {
+  const double d12 = q1 - q2, d23 = q2 - q3;
+  if (d12 == 0.0 || !(d23 / d12 > 0.0 && d23 / d12 < 1.0)) return std::nullopt;
+  const double p = std::log(d12 / d23) / std::log(r);
+  return std::pair{q3 - d23 / (std::pow(r, p) - 1.0), p};
+}
+
 std::string GateResult::limit() const {
   std::string s;
-  if (gate.min_order) s = fmt::format("order >= {:g}", *gate.min_order);
+  if (gate.richardson) s = fmt::format("|Q_R - ref| <= {:g} E_R", *gate.richardson);
+  if (gate.min_order) s += fmt::format("{}order >= {:g}", s.empty() ? "" : ", ", *gate.min_order);
   if (gate.tol) s += fmt::format("{}<= {:g}", s.empty() ? "" : ", error ", *gate.tol);
   return s;
 }
@@ -156,7 +164,9 @@ ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, Job
   r.tier = v.tier;
   r.required = v.required;
   r.note = v.note;
+  if (v.reference) r.reference = v.reference->settings_label();
   std::vector<const JobSpec*> specs;
+  if (v.reference) specs.push_back(&*v.reference);
   for (const auto& s : v.runs) {
     specs.push_back(&s);
     if (auto it = runs.find(s.key()); it != runs.end()) {
@@ -166,9 +176,14 @@ ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, Job
   }
   if (!runs_ok(r, specs, v.gates, runs)) return r;
   try {
-    for (std::size_t i = 0; i + 1 < v.runs.size(); ++i)
-      r.comparisons.push_back(compare_runs(StoredRun::read(runs.at(v.runs[i].key()).dir),
-                                           StoredRun::read(runs.at(v.runs[i + 1].key()).dir)));
+    if (v.reference) {  // every rung against the reference
+      const StoredRun ref = StoredRun::read(runs.at(v.reference->key()).dir);
+      for (const auto& s : v.runs) r.comparisons.push_back(compare_runs(StoredRun::read(runs.at(s.key()).dir), ref));
+    } else {  // consecutive pairs
+      for (std::size_t i = 0; i + 1 < v.runs.size(); ++i)
+        r.comparisons.push_back(compare_runs(StoredRun::read(runs.at(v.runs[i].key()).dir),
+                                             StoredRun::read(runs.at(v.runs[i + 1].key()).dir)));
+    }
   } catch (const std::exception& e) {
     not_evaluated(r, v.gates, std::string("comparison failed: ") + e.what(), false);
     return r;
@@ -182,6 +197,16 @@ ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, Job
     }
     for (std::size_t i = 0; i + 1 < errors.size(); ++i)
       orders.push_back(observed_order(errors[i], errors[i + 1], v.steps[i] / v.steps[i + 1]));
+    // Richardson from the last three rungs' own values (scalar norms carry them as a, b).
+    const std::size_t k = r.comparisons.size();
+    if (!v.reference || k < 3) continue;
+    const Norm *n1 = r.comparisons[k - 3].find(n.name), *n2 = r.comparisons[k - 2].find(n.name),
+               *n3 = r.comparisons[k - 1].find(n.name);
+    if (!n1 || !n2 || !n3 || !n1->a || !n2->a || !n3->a || !n3->b || *n3->b == 0.0) continue;
+    const double ratio = v.steps[k - 2] / v.steps[k - 1];
+    if (const auto lim = richardson_limit(*n1->a, *n2->a, *n3->a, ratio))
+      r.richardson[n.name] = {lim->second, lim->first, *n3->b, std::abs(lim->first - *n3->b) / std::abs(*n3->b),
+                              std::abs(lim->first - *n3->a) / std::abs(*n3->b)};
   }
   for (const auto& g : v.gates) {
     GateResult gr{g, std::nullopt, GateStatus::kPass, {}};
@@ -192,7 +217,24 @@ ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, Job
     } else {
       const auto& [errors, orders] = it->second;
       const auto finest = errors.back();
-      if (g.min_order) {
+      if (g.richardson) {
+        const auto rich = r.richardson.find(g.metric);
+        if (rich == r.richardson.end()) {
+          gr.status = GateStatus::kFail;
+          gr.message = "no Richardson limit: the last three rungs' differences do not shrink monotonically";
+        } else if (rich->second.error > *g.richardson * rich->second.estimate) {
+          gr.status = GateStatus::kFail;
+          gr.message = fmt::format(
+              "Richardson limit {:.6g} (order {:.3g}) is {:.3g} from the reference {:.6g}, beyond {:g} x its "
+              "error estimate {:.3g}",
+              rich->second.limit, rich->second.order, rich->second.error, rich->second.reference, *g.richardson,
+              rich->second.estimate);
+        }
+        // The value: the distance to the reference in units of the error estimate.
+        if (rich != r.richardson.end() && rich->second.estimate > 0.0)
+          gr.value = rich->second.error / rich->second.estimate;
+      }
+      if (g.min_order && gr.status == GateStatus::kPass) {
         gr.value = orders.empty() ? std::nullopt : orders.back();
         if (!gr.value) {
           const bool zero = finest && *finest == 0.0;
@@ -210,7 +252,7 @@ ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, Job
           gr.message = finest ? fmt::format("finest-pair error {:.4g} exceeds {:g}", *finest, *g.tol)
                               : "finest-pair error unavailable";
         }
-        if (!g.min_order) gr.value = finest;
+        if (!g.min_order && !g.richardson) gr.value = finest;
       }
     }
     r.gates.push_back(gr);
@@ -240,6 +282,7 @@ nlohmann::json to_json(const ItemResult& r) {
     e["value"] = g.value ? nlohmann::json(*g.value) : nlohmann::json(nullptr);
     if (g.gate.tol) e["tol"] = *g.gate.tol;
     if (g.gate.min_order) e["min_order"] = *g.gate.min_order;
+    if (g.gate.richardson) e["richardson"] = *g.gate.richardson;
     gates.push_back(e);
   }
   auto& cmps = j["comparisons"] = nlohmann::json::array();
@@ -255,6 +298,12 @@ nlohmann::json to_json(const ItemResult& r) {
       o[name] = {{"errors", opt(eo.first)}, {"orders", opt(eo.second)}};
     }
   }
+  for (const auto& [name, x] : r.richardson)
+    j["richardson"][name] = {{"order", x.order},
+                             {"limit", x.limit},
+                             {"reference", x.reference},
+                             {"error", x.error},
+                             {"estimate", x.estimate}};
   return j;
 }
 

@@ -48,6 +48,15 @@ struct ItemResult {
   /// @brief Ladders: norm name -> errors of consecutive pairs and the observed orders.
   std::map<std::string, std::pair<std::vector<std::optional<double>>, std::vector<std::optional<double>>>>
       orders;
+  /// @brief Ladders with a reference, scalar norms: the Richardson limit of the last three rungs.
+  struct Richardson {
+    double order = 0.0;  ///< p = log(|Q1 - Q2| / |Q2 - Q3|) / log(r), from the rungs alone
+    double limit = 0.0;  ///< Q3 + (Q3 - Q2) / (r^p - 1)
+    double reference = 0.0;
+    double error = 0.0;     ///< |limit - reference| / |reference|
+    double estimate = 0.0;  ///< E_R / |reference|: |Q_n - Q_{n-1}| / (r^p - 1), relative
+  };
+  std::map<std::string, Richardson> richardson;
   std::string note;
   /// @brief True when no gate failed.
   bool passed() const;
@@ -61,6 +70,11 @@ ItemResult evaluate_case(const Case& c, const std::map<std::string, JobOutcome>&
 
 /// @brief Evaluates the health checks of one run (check_run()) from the finished runs.
 ItemResult evaluate_check(const RunCheck& c, const std::map<std::string, JobOutcome>& runs);
+
+/// @brief The Richardson limit of three rungs q1, q2, q3 (coarse to fine, refinement ratio r) with
+/// their own observed order: {limit, order}; empty when the differences do not shrink monotonically (no
+/// asymptotic range: 0 < (q2 - q3) / (q1 - q2) < 1).
+std::optional<std::pair<double, double>> richardson_limit(double q1, double q2, double q3, double r);
 
 /// @brief Evaluates a convergence ladder from the finished runs.
 ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, JobOutcome>& runs);

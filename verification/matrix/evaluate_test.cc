@@ -41,5 +41,18 @@ TEST(Evaluate, ObservedOrder) {
   EXPECT_FALSE(observed_order(std::nullopt, 1e-3, 2.0));
 }
 
+// Richardson extrapolation: Q(h) = 1 + 0.5 h^2 sampled at h = 1, 1/2, 1/4 gives the limit 1 and
+// the order 2 exactly (to roundoff: the formula is exact for a pure power); differences that do
+// not shrink monotonically (no asymptotic range) give no limit.
+TEST(Richardson, ExactForAPurePowerAndRefusedOutsideTheAsymptoticRange) {
+  auto q = [](double h) { return 1.0 + 0.5 * h * h; };
+  const auto lim = richardson_limit(q(1.0), q(0.5), q(0.25), 2.0);
+  ASSERT_TRUE(lim);
+  EXPECT_NEAR(lim->first, 1.0, 1e-14);
+  EXPECT_NEAR(lim->second, 2.0, 1e-12);
+  EXPECT_FALSE(richardson_limit(1.0, 2.0, 1.5, 2.0));  // oscillating
+  EXPECT_FALSE(richardson_limit(1.0, 1.5, 2.5, 2.0));  // diverging
+}
+
 }  // namespace
 }  // namespace beamimpact::verification

@@ -167,7 +167,8 @@ void write_markdown(const std::filesystem::path& file, const ReportContext& ctx,
     }
     for (const auto* i : list) {
       if (i->kind != "convergence" || i->orders.empty()) continue;
-      m += fmt::format("\nObserved orders, {} (errors of consecutive pairs, then orders):\n\n", i->name);
+      m += fmt::format("\nObserved orders, {} ({}, then orders):\n\n", i->name,
+                       i->reference.empty() ? "errors of consecutive pairs" : "errors of each rung against the reference");
       const std::size_t ne = i->orders.begin()->second.first.size();
       m += "| norm |";
       for (std::size_t k = 0; k < ne; ++k) m += fmt::format(" e{} |", k + 1);
@@ -181,6 +182,13 @@ void write_markdown(const std::filesystem::path& file, const ReportContext& ctx,
         for (const auto& v : e) m += v ? fmt::format(" {:.3e} |", *v) : std::string(" n/a |");
         for (const auto& v : p) m += v ? fmt::format(" {:.2f} |", *v) : std::string(" - |");
         m += "\n";
+      }
+      if (!i->richardson.empty()) {
+        m += "\nRichardson limits of the last three rungs (their own observed order; the reference not used):\n\n"
+             "| norm | order p | limit Q_R | reference | abs(Q_R - ref) / ref | E_R / ref |\n|---|---|---|---|---|---|\n";
+        for (const auto& [name, x] : i->richardson)
+          m += fmt::format("| {} | {:.2f} | {:.6g} | {:.6g} | {:.2e} | {:.2e} |\n", name, x.order, x.limit, x.reference,
+                           x.error, x.estimate);
       }
     }
   }

@@ -26,7 +26,7 @@ Effects derive_effects(const Scene& scene) {
   e.rotating.assign(scene.bodies.size(), false);
   if (e.bending && scene.model.kinematics == Kinematics::kCorotational)
     for (std::size_t b = 0; b < scene.bodies.size(); ++b)
-      e.corotational |= e.rotating[b] = body_can_rotate(scene.bodies[b]);
+      e.corotational |= e.rotating[b] = body_can_rotate(scene.bodies[b]) && !scene.bodies[b].rigid;
   return e;
 }
 

@@ -29,10 +29,12 @@ Model::Model(const Scene& scene, bool bending)
                      "false requires all bodies and velocities on one line; this scene is not collinear");
   const int dpn = dofs_per_node_;
 
-  // Nodes and fixed DOFs.
+  // Nodes and fixed DOFs. A rigid body's nodes have none of their own (all fixed here): they
+  // follow the body's centre, whose DOFs come after every node's.
   std::vector<char> fixed;
   for (int b = 0; b < static_cast<int>(scene.bodies.size()); ++b) {
     const Body& body = scene.bodies[b];
+    body_centre_.push_back({0.5 * (body.start[0] + body.end[0]), 0.5 * (body.start[1] + body.end[1])});
     body_first_node_.push_back(static_cast<int>(node_pos_.size()));
     body_velocity_.push_back(body.velocity);
     body_mass_.push_back(body.rho * body.area * body.length());
@@ -41,7 +43,9 @@ Model::Model(const Scene& scene, bool bending)
       node_body_.push_back(b);
     }
     fixed.resize(node_pos_.size() * dpn, 0);
+    if (body.rigid) std::fill(fixed.end() - body.nodes() * dpn, fixed.end(), 1);
     for (const Support& s : body.supports) {
+      if (body.rigid) break;  // a rigid body's support fixes its centre (below)
       const int n = body_first_node_[b] + s.node;
       if (dpn == 3) {
         fixed[3 * n] |= s.fix_x;
@@ -55,22 +59,55 @@ Model::Model(const Scene& scene, bool bending)
     const Vec2 d = unit_axis(body);
     for (int i = 0; i < body.elements; ++i)
       elements_.push_back({b, body_first_node_[b] + i, body_first_node_[b] + i + 1, body.E, body.area,
-                           body.inertia, body.rho, body.length() / body.elements, d[0], d[1]});
+                           body.inertia, body.rho, body.length() / body.elements, d[0], d[1], body.rigid});
   }
+  // Rigid bodies' centre DOFs: immovable when supported (the scene allows only a full fix).
+  const std::size_t node_dofs = fixed.size();
+  std::vector<int> rigid_first(scene.bodies.size(), -1);
+  for (int b = 0; b < static_cast<int>(scene.bodies.size()); ++b)
+    if (scene.bodies[b].rigid) {
+      rigid_first[b] = static_cast<int>(fixed.size());
+      fixed.resize(fixed.size() + dpn, scene.bodies[b].supports.empty() ? 0 : 1);
+    }
   dof_to_eq_.assign(fixed.size(), -1);
   for (std::size_t d = 0; d < fixed.size(); ++d)
     if (!fixed[d]) {
       dof_to_eq_[d] = static_cast<int>(free_.size());
       free_.push_back(static_cast<int>(d));
     }
+  rigid_eq_.assign(scene.bodies.size(), {kNotRigid, kNotRigid, kNotRigid});
+  for (int b = 0; b < static_cast<int>(scene.bodies.size()); ++b)
+    if (rigid_first[b] >= 0) {
+      rigid_eq_[b] = {-1, -1, -1};
+      for (int c = 0; c < dpn; ++c) rigid_eq_[b][c] = dof_to_eq_[rigid_first[b] + c];
+    }
+  dof_to_eq_.resize(node_dofs);  // node DOFs only: equation() never sees the centres' slots
   const int n = size();
 
   // Element matrices in global axes, scattered to the free equations.
   std::vector<Eigen::Triplet<double>> kt, mt;
   Eigen::VectorXd mdiag = Eigen::VectorXd::Zero(n);
   momentum_.assign(num_bodies(), {Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)});
+  for (int b = 0; b < num_bodies(); ++b) {  // rigid bodies: m, m, m L^2 / 12 at the centre
+    if (!rigid(b)) continue;
+    const Body& body = scene.bodies[b];
+    const double m = body_mass_[b], L = body.length();
+    const double masses[3] = {m, m, m * L * L / 12.0};
+    for (int c = 0; c < dpn; ++c) {
+      const int eq = rigid_eq_[b][c];
+      if (eq < 0) continue;
+      const double mc = dpn == 3 ? masses[c] : m;
+      if (lumped_)
+        mdiag(eq) += mc;
+      else
+        mt.emplace_back(eq, eq, mc);
+      for (int k = 0; k < 2; ++k)  // momentum along global axis k
+        if (dpn == 3 ? c == k : true) momentum_[b][k](eq) += dpn == 3 ? mc : mc * axis_[k];
+    }
+  }
   for (int e = 0; e < static_cast<int>(elements_.size()); ++e) {
     const Element& el = elements_[e];
+    if (el.rigid) continue;  // geometry only
     const Eigen::Matrix<int, 6, 1> eq = element_equations(e);
     const int ne = 2 * dpn;
     const Eigen::MatrixXd Ke = element_stiffness(e, el.c, el.s), Me = element_mass(e, el.c, el.s);
@@ -130,6 +167,8 @@ Eigen::MatrixXd Model::element_mass(int e, double c, double s) const {
 
 int Model::equation(int n, int c) const {
   if (c >= dofs_per_node_) return -1;
+  // Every point of a rigid body turns with its centre; its translations are not single DOFs.
+  if (const auto& r = rigid_eq_[node_body_[n]]; r[0] != kNotRigid) return c == 2 ? r[2] : -1;
   return dof_to_eq_[n * dofs_per_node_ + c];
 }
 
@@ -140,6 +179,20 @@ std::vector<DofTerm> Model::project(int n, const Vec2& d) const {
 }
 
 void Model::append_projection(int n, const Vec2& d, double scale, std::vector<DofTerm>& out) const {
+  if (const auto& r = rigid_eq_[node_body_[n]]; r[0] != kNotRigid) {
+    // u(node) = u_c + theta (-ry, rx), r = X_node - X_c.
+    const Vec2& X = node_pos_[n];
+    const Vec2& C = body_centre_[node_body_[n]];
+    if (dofs_per_node_ == 3) {
+      const double lever = d[0] * -(X[1] - C[1]) + d[1] * (X[0] - C[0]);
+      const double coeff[3] = {d[0], d[1], lever};
+      for (int c = 0; c < 3; ++c)
+        if (r[c] >= 0 && coeff[c] != 0.0) out.push_back({r[c], scale * coeff[c]});
+    } else if (r[0] >= 0 && dot(axis_, d) != 0.0) {
+      out.push_back({r[0], scale * dot(axis_, d)});
+    }
+    return;
+  }
   if (dofs_per_node_ == 3) {
     for (int c = 0; c < 2; ++c)
       if (const int e = equation(n, c); e >= 0 && d[c] != 0.0) out.push_back({e, scale * d[c]});
@@ -150,6 +203,14 @@ void Model::append_projection(int n, const Vec2& d, double scale, std::vector<Do
 }
 
 Vec2 Model::node_vector(const Eigen::VectorXd& U, int n) const {
+  if (const auto& r = rigid_eq_[node_body_[n]]; r[0] != kNotRigid) {
+    auto at = [&](int c) { return r[c] >= 0 ? U(r[c]) : 0.0; };
+    if (dofs_per_node_ != 3) return {at(0) * axis_[0], at(0) * axis_[1]};
+    const Vec2& X = node_pos_[n];
+    const Vec2& C = body_centre_[node_body_[n]];
+    const double th = at(2);
+    return {at(0) - th * (X[1] - C[1]), at(1) + th * (X[0] - C[0])};
+  }
   if (dofs_per_node_ == 3) {
     const int ex = equation(n, 0), ey = equation(n, 1);
     return {ex >= 0 ? U(ex) : 0.0, ey >= 0 ? U(ey) : 0.0};
@@ -161,6 +222,13 @@ Vec2 Model::node_vector(const Eigen::VectorXd& U, int n) const {
 
 Eigen::VectorXd Model::initial_velocity() const {
   Eigen::VectorXd v = Eigen::VectorXd::Zero(size());
+  for (int b = 0; b < num_bodies(); ++b)
+    if (rigid(b)) {  // translation of the centre, no spin
+      const Vec2& bv = body_velocity_[b];
+      const double comp[3] = {dofs_per_node_ == 3 ? bv[0] : dot(bv, axis_), bv[1], 0.0};
+      for (int c = 0; c < dofs_per_node_; ++c)
+        if (rigid_eq_[b][c] >= 0) v(rigid_eq_[b][c]) = comp[c];
+    }
   for (int n = 0; n < num_nodes(); ++n) {
     const Vec2& bv = body_velocity_[node_body_[n]];
     if (dofs_per_node_ == 3) {

@@ -8,6 +8,7 @@
 /// displacement along the common axis of an all-collinear scene). Supported DOFs are removed from
 /// the equations; equation(node, component) returns -1 for them.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -85,6 +86,7 @@ class Model {
     int body, n1, n2;
     double E, area, inertia, rho;  ///< N/m^2, m^2, m^4, kg/m^3
     double length, c, s;           ///< m; direction cosines of the reference axis
+    bool rigid = false;            ///< of a rigid body: geometry only (no stiffness, no mass of its own)
   };
   /// @brief The element list (per-element work: corotation, bounds).
   const std::vector<Element>& elements() const { return elements_; }
@@ -92,10 +94,18 @@ class Model {
   Eigen::MatrixXd element_stiffness(int e, double c, double s) const;
   /// @brief Element mass in global axes at direction (c, s): 6x6 (frame) or 2x2 (rod).
   Eigen::MatrixXd element_mass(int e, double c, double s) const;
+  /// @brief True when body b is rigid: its nodes move with the 3 (frame) or 1 (rod) DOFs of its
+  /// centre, u(node) = u_c + theta x (X_node - X_c) (small rotations).
+  bool rigid(int b) const { return rigid_eq_[b][0] != kNotRigid; }
   /// @brief Equation index of each of the element's 6 (frame) or 2 (rod) DOFs, -1 when fixed.
   Eigen::Matrix<int, 6, 1> element_equations(int e) const;
 
  private:
+  static constexpr int kNotRigid = -2;
+  /// Per body: equations of its centre (x, y, theta; rods: axial), -1 when fixed, kNotRigid for
+  /// an elastic body.
+  std::vector<std::array<int, 3>> rigid_eq_;
+  std::vector<Vec2> body_centre_;
   int dofs_per_node_ = 3;
   Vec2 axis_{1.0, 0.0};
   bool lumped_ = true;

@@ -27,6 +27,7 @@ double element_bound(const Model& model) {
   double lam = 0.0;
   for (int e = 0; e < static_cast<int>(model.elements().size()); ++e) {
     const Model::Element& el = model.elements()[e];
+    if (el.rigid) continue;  // a rigid body has no element stiffness
     Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(
         model.element_stiffness(e, el.c, el.s), model.element_mass(e, el.c, el.s), Eigen::EigenvaluesOnly);
     if (es.info() == Eigen::Success) lam = std::max(lam, es.eigenvalues().maxCoeff());

@@ -19,6 +19,13 @@ namespace {
 
 /// The step: given, or "auto" = fraction x critical; refused above critical unless allowed.
 double choose_dt(const Scene& scene, const CriticalStep& cs, SimulationResult& r) {
+  if (cs.omega_max == 0.0) {  // only rigid bodies: no stiffness, no stability limit
+    if (!scene.time.dt)
+      throw SceneError(scene.file, "time.dt",
+                       "\"auto\" takes a fraction of the critical step, and a scene of rigid bodies has none "
+                       "(no stiffness); expected a step in seconds");
+    return *scene.time.dt;
+  }
   if (!scene.time.dt) {
     r.assumed["time.dt"] = fmt::format("auto: {} x critical step {:.6g} s", scene.time.fraction, cs.dt);
     return scene.time.fraction * cs.dt;
@@ -194,7 +201,7 @@ SimulationResult solve(const Scene& scene_in) {
                               {"omega_max", cs.omega_max},
                               {"lanczos_iterations", cs.iterations},
                               {"element_bound_dt", cs.element_bound_dt},
-                              {"dt_over_critical", r.dt / cs.dt}};
+                              {"dt_over_critical", cs.dt > 0.0 ? nlohmann::json(r.dt / cs.dt) : nlohmann::json(nullptr)}};
   r.extra["dofs"] = model.size();
   r.extra["dofs_per_node"] = model.dofs_per_node();
   std::vector<ContactKind> kinds;

@@ -62,6 +62,10 @@ struct Body {
   double inertia = 0.0;  ///< m^4 (0 when not given: only valid for axial scenes)
   Vec2 velocity{};       ///< m/s, initial rigid velocity
   std::vector<Support> supports;
+  /// rigid = true: the body moves as a rigid body (x, y and rotation of its centre; mass
+  /// rho A L, inertia m L^2 / 12; small rotations). `elements` only places its nodes; no
+  /// supports (free) or one fixing x, y and theta (immovable).
+  bool rigid = false;
 
   /// @brief Length (m).
   double length() const;

@@ -43,7 +43,8 @@ RunCost estimate_run_cost(const Scene& scene, double dt) {
 
 double estimate_auto_dt(const Scene& scene) {
   double dt = std::numeric_limits<double>::infinity();
-  for (const Body& b : scene.bodies) dt = std::min(dt, b.length() / b.elements * std::sqrt(b.rho / b.E));
+  for (const Body& b : scene.bodies)
+    if (!b.rigid) dt = std::min(dt, b.length() / b.elements * std::sqrt(b.rho / b.E));  // rigid: no waves
   return scene.time.fraction * dt;
 }
 

@@ -340,6 +340,11 @@ Body read_body(TableReader& r, Scene& sc) {
   else
     (*assumed)[r.path("velocity")] = "[0, 0]";
   read_supports(r, b, assumed);
+  b.rigid = r.boolean_or("rigid", false);
+  if (b.rigid && !b.supports.empty() &&
+      !(b.supports.size() == 1 && b.supports[0].fix_x && b.supports[0].fix_y && b.supports[0].fix_theta))
+    r.fail("supports", "a rigid body is free (supports = []) or immovable (one support fixing \"x\", \"y\" and "
+                       "\"theta\"); expected one of those");
   r.finish();
   return b;
 }
@@ -448,7 +453,7 @@ void check_initial_gaps(const Scene& sc) {
 void check_whole_scene(const Scene& sc) {
   const bool bending = sc.effects.bending.value_or(!scene_is_collinear(sc));
   for (std::size_t i = 0; i < sc.bodies.size(); ++i)
-    if (bending && sc.bodies[i].inertia <= 0.0)
+    if (bending && sc.bodies[i].inertia <= 0.0 && !sc.bodies[i].rigid)
       throw SceneError(sc.file, "bodies[" + std::to_string(i) + "].inertia",
                        "missing; expected a positive second moment of area (m^4): this scene bends");
   for (std::size_t i = 0; i < sc.bodies.size(); ++i)

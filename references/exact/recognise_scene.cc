@@ -132,8 +132,55 @@ void recognise_rod_on_beam(const Scene& scene, const Frame& f, ExactProblem& p) 
 
 }  // namespace
 
+/// @brief A free rigid rod falling without spin along the normal of an immovable rigid surface,
+/// striking it with one end (references.md section 3).
+ExactProblem recognise_rigid_rod(const Scene& scene) {
+  if (scene.bodies.size() != 2 || scene.contacts.size() != 1)
+    refuse(scene, "bodies", "a rigid rod onto a rigid surface needs exactly two bodies and one contact");
+  if (scene.model.rayleigh_mass != 0.0 || scene.model.rayleigh_stiffness != 0.0)
+    refuse(scene, "model.rayleigh_mass", "damping is not zero; the closed form is undamped");
+  const Contact& c = scene.contacts[0];
+  const Body& A = scene.bodies[c.striker];
+  const Body& B = scene.bodies[c.target];
+  const std::string ka = fmt::format("bodies[{}]", c.striker), kb = fmt::format("bodies[{}]", c.target);
+  if (!A.rigid || !B.rigid)
+    refuse(scene, (A.rigid ? kb : ka) + ".rigid", "the closed form needs both bodies rigid (rigid = true)");
+  if (!A.supports.empty()) refuse(scene, ka + ".supports", "the rod must be free");
+  if (B.supports.empty()) refuse(scene, kb + ".supports", "the surface must be immovable");
+  if (c.node != 0 && c.node != A.elements)
+    refuse(scene, "contacts[0].node", "the rod's contact node is not an end of the rod");
+  ExactProblem p;
+  p.kind = ExactKind::kRigidRod;
+  p.striker = c.striker;
+  p.target = c.target;
+  p.mu = c.friction;
+  p.striker_rod = as_rod(A);
+  const Vec2 t = unit(sub(B.end, B.start));
+  const Vec2 pc = A.node_position(c.node);
+  const Vec2 centre{0.5 * (A.start[0] + A.end[0]), 0.5 * (A.start[1] + A.end[1])};
+  const double side = cross(t, sub(centre, B.start)) >= 0.0 ? 1.0 : -1.0;
+  p.normal = {-side * t[1], side * t[0]};
+  p.gap = dot(sub(pc, B.start), p.normal);
+  const double along = dot(sub(pc, B.start), t);
+  if (!(p.gap > 0.0) || along < 0.0 || along > B.length())
+    refuse(scene, "contacts[0].node", "the rod's contact end is not above the surface's span");
+  const Vec2 r = sub(pc, centre);  // centre to contact end
+  const double half = 0.5 * A.length();
+  const double sin_t = -dot(r, p.normal) / half;
+  if (!(sin_t > kTol)) refuse(scene, ka + ".start", "the rod's contact end is not its lower end (or the rod lies flat)");
+  p.theta = std::asin(std::min(1.0, sin_t));
+  p.v0 = -dot(A.velocity, p.normal);
+  if (!(p.v0 > 0.0) || std::abs(cross(A.velocity, p.normal)) > kTol * norm(A.velocity))
+    refuse(scene, ka + ".velocity", "the rod must fall along the surface normal (the closed form has no "
+                                    "tangential approach speed)");
+  p.contact_kind = ContactKind::kNodeToSurface;
+  return p;
+}
+
 ExactProblem recognise_scene(const Scene& scene) {
   refuse_contact_search(scene, "exact");
+  for (const Body& b : scene.bodies)
+    if (b.rigid) return recognise_rigid_rod(scene);
   check_one_frictionless_undamped_contact(scene);
   const Contact& c = scene.contacts[0];
   ExactProblem p;

@@ -16,6 +16,7 @@ namespace beamimpact::exact {
 enum class ExactKind {
   kCoaxialRods,  ///< two free coaxial rods, end to end (references.md section 1)
   kRodOnBeam,    ///< a free rod end-on onto a simply supported beam (references.md section 2)
+  kRigidRod,     ///< a rigid rod onto an immovable rigid surface, with friction (references.md section 3)
 };
 
 /// @brief The 1D problem a scene describes, in the frame of its contact.
@@ -31,6 +32,9 @@ struct ExactProblem {
   SimpleBeam beam;              ///< the target as a beam (kRodOnBeam)
   double x_c = 0.0;             ///< m, struck point from the target's start node (kRodOnBeam)
   ContactKind contact_kind = ContactKind::kEndToEnd;  ///< string forms in schema/output_schema.hpp
+  Vec2 normal{};                ///< kRigidRod: unit normal of the surface, toward the rod
+  double theta = 0.0;           ///< kRigidRod: rad, angle between the rod and the surface
+  double mu = 0.0;              ///< kRigidRod: Coulomb coefficient
 };
 
 /// @brief Recognises the scene or throws SceneError(scene.file, key, condition that failed).

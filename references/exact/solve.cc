@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <beamimpact/exact/CoaxialRods.hpp>
+#include <beamimpact/exact/RigidRodImpact.hpp>
 #include <beamimpact/exact/RodOnBeam.hpp>
 #include <beamimpact/exact/output_times.hpp>
 #include <beamimpact/exact/recognise_scene.hpp>
@@ -98,6 +99,72 @@ SimulationResult solve_rods(const Scene& scene, const ExactProblem& p, ResultRec
                       {"impedance_target", B.impedance()}};
   return finish_summary(rec, std::move(rows), sol.force_intervals(), sol.impulse(te), sol.peak_force(), first,
                         p.contact_kind, extra);
+}
+
+/// The rigid rod: free flight to the contact instant t0 = gap / V, the closed-form impulses
+/// (restitution 0), then free flight with the new velocity and spin (rotation exact, no gravity).
+SimulationResult solve_rigid(const Scene& scene, const ExactProblem& p, ResultRecorder& rec) {
+  SimulationResult& r = rec.result();
+  const Body& A = scene.bodies[p.striker];
+  const double m = A.rho * A.area * A.length(), l = A.length(), I = m * l * l / 12.0;
+  const RigidRodImpact imp = rigid_rod_impact(m, l, p.theta, p.v0, p.mu);
+  const int node = scene.contacts[0].node;
+  const Vec2 G0{0.5 * (A.start[0] + A.end[0]), 0.5 * (A.start[1] + A.end[1])};
+  const Vec2 A0 = A.node_position(node);
+  const Vec2 r0{A0[0] - G0[0], A0[1] - G0[1]};
+  const Vec2 n = p.normal;
+  // Tangential impulse toward the centre's side of the contact end, along the surface.
+  const Vec2 t{n[1], -n[0]};
+  const double toward_centre = -(r0[0] * t[0] + r0[1] * t[1]) >= 0.0 ? 1.0 : -1.0;
+  const Vec2 P{imp.p_n * n[0] + toward_centre * imp.p_t * t[0], imp.p_n * n[1] + toward_centre * imp.p_t * t[1]};
+  const double t0 = p.gap / p.v0;
+  const Vec2 v0 = A.velocity;
+  const Vec2 v1{v0[0] + P[0] / m, v0[1] + P[1] / m};
+  const double w1 = (r0[0] * P[1] - r0[1] * P[0]) / I;  // counter-clockwise spin after the impact
+  std::vector<HistoryRow> rows;
+  for (double time : output_times(r.dt, scene.time.end)) {
+    const bool after = time > t0;
+    const double tau = after ? time - t0 : 0.0, phi = w1 * tau;
+    const Vec2 v = after ? v1 : v0;
+    const double w = after ? w1 : 0.0;
+    const Vec2 G{G0[0] + v0[0] * std::min(time, t0) + v1[0] * tau, G0[1] + v0[1] * std::min(time, t0) + v1[1] * tau};
+    const Vec2 rt{std::cos(phi) * r0[0] - std::sin(phi) * r0[1], std::sin(phi) * r0[0] + std::cos(phi) * r0[1]};
+    HistoryRow row;
+    row.t = time;
+    ContactSample c;
+    c.ua = {G[0] + rt[0] - A0[0], G[1] + rt[1] - A0[1]};
+    c.va = {v[0] - w * rt[1], v[1] + w * rt[0]};
+    c.gap = p.gap + c.ua[0] * n[0] + c.ua[1] * n[1];
+    c.state = ContactState::kOpen;  // the impact is instantaneous: no finite force at any row
+    row.contacts.push_back(c);
+    row.kinetic = 0.5 * m * (v[0] * v[0] + v[1] * v[1]) + 0.5 * I * w * w;
+    row.momentum = {m * v[0], m * v[1]};
+    rows.push_back(row);
+  }
+  rec.set_final_velocity(A.name, scene.time.end > t0 ? v1 : v0);
+  rec.set_final_velocity(scene.bodies[p.target].name, {0.0, 0.0});
+  r.effects = {"rigid", "friction"};
+  r.steps = 1;
+  nlohmann::json extra = {{"stick_threshold", imp.mu_star},
+                          {"regime", imp.stick ? "stick" : "slip"},
+                          {"theta", p.theta},
+                          {"approach_speed", p.v0},
+                          {"impact_time", t0},
+                          {"spin_after", w1}};
+  r.extra["exact"] = {{"solution",
+                       "rigid rod onto an immovable rigid surface, Coulomb friction, restitution 0: closed-form "
+                       "impulses (references.md 3); free flight before and after (exact rotation, no gravity)"},
+                      {"note", "the impact is an instantaneous impulse: the rows carry no force; intervals are "
+                               "[t0, t0], the impulses are the closed form's"}};
+  const bool hit = t0 <= scene.time.end;
+  SimulationResult out = finish_summary(rec, std::move(rows),
+                                        hit ? std::vector<std::array<double, 2>>{{t0, t0}}
+                                            : std::vector<std::array<double, 2>>{},
+                                        hit ? imp.p_n : 0.0, 0.0, 0.0, p.contact_kind, extra);
+  // The paper's tangent is the normal turned -90 deg: the summary's sign convention.
+  out.contacts[0].impulse_tangential = hit ? toward_centre * imp.p_t : 0.0;
+  out.contacts[0].friction = p.mu;
+  return out;
 }
 
 struct BeamOptions {
@@ -223,6 +290,7 @@ SimulationResult solve(const Scene& scene) {
     if (!(o.rtol > 0.0 && o.rtol < 1e-2)) in.fail("rtol", "expected a tolerance in (0, 0.01)");
   }
   in.finish();
+  if (p.kind == ExactKind::kRigidRod) return solve_rigid(scene, p, rec);
   return p.kind == ExactKind::kCoaxialRods ? solve_rods(scene, p, rec) : solve_beam(scene, p, o, rec);
 }
 

@@ -44,6 +44,28 @@ TEST(RunExact, S1CentralIsTheClosedForm) {
   EXPECT_NEAR(r.history[150].strain, 2.0 * 2.0 * 2.0 / (2.0 * 100.0 * 0.4) * 10.0, 1e-12);
 }
 
+// The rigid rod (references.md section 3) at 30 deg, 1 kg, 1 m/s, in the three regimes: the
+// numbers are the closed form evaluated by hand (s = 1/2, c = sqrt(3)/2, threshold 3 sqrt(3) / 7
+// = 0.742307): frictionless p_n = 1 / (1 + 9/4) = 4/13; slip at mu = 0.3: p_n = 1 / (13/4 -
+// 3 (1/2)(sqrt(3)/2) 0.3), p_t = 0.3 p_n; stick: p_n = 7/16, p_t = 7/16 x 3 sqrt(3)/7. The energy
+// after is the kinetic energy of the new motion: (1/2) m |v|^2 + (1/2) I w^2 (stick: 9/32 J).
+TEST(RunExact, RigidRodOnARigidSurfaceIsTheClosedForm) {
+  const auto scene = (testing::source_dir() / "verification/scenes/extra/rigid_rod_oblique.toml").string();
+  const double r3 = std::sqrt(3.0);
+  auto run = [&](double mu) { return exact::solve(load_scene(scene, {"contacts[0].friction=" + std::to_string(mu)})); };
+  const SimulationResult free = run(0.0), slip = run(0.3), stick = run(1.0);
+  EXPECT_NEAR(free.contacts[0].impulse_normal, 4.0 / 13.0, 1e-15);
+  EXPECT_EQ(free.contacts[0].impulse_tangential, 0.0);
+  const double pn_slip = 1.0 / (13.0 / 4.0 - 3.0 * 0.5 * (r3 / 2) * 0.3);
+  EXPECT_NEAR(slip.contacts[0].impulse_normal, pn_slip, 1e-15);
+  EXPECT_NEAR(slip.contacts[0].impulse_tangential, 0.3 * pn_slip, 1e-15);
+  EXPECT_NEAR(stick.contacts[0].impulse_normal, 7.0 / 16.0, 1e-15);
+  EXPECT_NEAR(stick.contacts[0].impulse_tangential, 7.0 / 16.0 * 3 * r3 / 7, 1e-15);
+  EXPECT_NEAR(stick.energy_final, 9.0 / 32.0, 1e-14);  // stick: the end stops; 1/2 - 9/32 J lost
+  ASSERT_EQ(stick.contacts[0].intervals.size(), 1u);
+  EXPECT_NEAR(stick.contacts[0].intervals[0][0], 0.01, 1e-15);  // gap 0.01 m at 1 m/s
+}
+
 TEST(RunExact, MovingTargetIsSolvedInItsRestFrame) {
   // S1 with B coming head-on at -1 m/s: relative speed 2 m/s, first touch at 0.5 / 2 s, force
   // Z v_rel / 2 = 4 N for 2 L / c = 2 s, impulse 8 N s; equal rods swap velocities (A -1, B +1);

@@ -201,7 +201,9 @@ SimulationResult solve(const Scene& scene_in) {
                               {"omega_max", cs.omega_max},
                               {"lanczos_iterations", cs.iterations},
                               {"element_bound_dt", cs.element_bound_dt},
-                              {"dt_over_critical", cs.dt > 0.0 ? nlohmann::json(r.dt / cs.dt) : nlohmann::json(nullptr)}};
+                              {"dt_over_critical", cs.dt > 0.0 ? r.dt / cs.dt : 0.0}};
+  if (cs.omega_max == 0.0)
+    r.extra["critical_step"] = {{"method", "none: no stiffness (rigid bodies only), no stability limit"}};
   r.extra["dofs"] = model.size();
   r.extra["dofs_per_node"] = model.dofs_per_node();
   std::vector<ContactKind> kinds;

@@ -143,7 +143,8 @@ SimulationResult solve_rigid(const Scene& scene, const ExactProblem& p, ResultRe
   }
   rec.set_final_velocity(A.name, scene.time.end > t0 ? v1 : v0);
   rec.set_final_velocity(scene.bodies[p.target].name, {0.0, 0.0});
-  r.effects = {"rigid", "friction"};
+  r.effects = {"rigid"};
+  if (p.mu > 0.0) r.effects.push_back("friction");
   r.steps = 1;
   nlohmann::json extra = {{"stick_threshold", imp.mu_star},
                           {"regime", imp.stick ? "stick" : "slip"},

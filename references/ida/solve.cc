@@ -60,6 +60,7 @@ Effects ida_effects(const Scene& scene, std::map<std::string, std::string>& assu
 struct PenaltyContacts {
   std::vector<std::unique_ptr<ModelContact>> geometry;
   std::vector<PenaltyLaw> laws;
+  std::vector<double> reduced_mass;  ///< kg, per contact: the two contact points' reduced mass
   nlohmann::json extra = nlohmann::json::array();  ///< per contact: kn, cn, restitution, ...
 };
 
@@ -96,6 +97,7 @@ PenaltyContacts make_penalty_contacts(const Scene& scene, const Model& model, co
                         {"friction_velocity", law.v_reg},
                         {"contact_period", M_PI * std::sqrt(m_red / law.kn)}});
     pc.laws.push_back(law);
+    pc.reduced_mass.push_back(m_red);
   }
   return pc;
 }
@@ -108,7 +110,7 @@ PenaltyContacts make_penalty_contacts(const Scene& scene, const Model& model, co
 void check_penalty_cost(const Scene& scene, const PenaltyContacts& pc, int unknowns) {
   if (scene.time.allow_long_run) return;
   for (std::size_t i = 0; i < pc.laws.size(); ++i) {
-    const double m_red = pc.extra[i]["reduced_mass"].get<double>();
+    const double m_red = pc.reduced_mass[i];
     const double period = 2.0 * M_PI * std::sqrt(m_red / pc.laws[i].kn);
     const double steps = 20.0 * scene.time.end / period;
     if (!(steps * unknowns <= kOrdinaryWork))

@@ -7,16 +7,12 @@
 namespace beamimpact::paper {
 namespace {
 
-/// Signed distance (m) of point x from body b's axis, and its position along the axis (m).
-std::pair<double, double> across_along(const Vec2& x, const Body& b) {
-  const double L = b.length();
-  const Vec2 axis{(b.end[0] - b.start[0]) / L, (b.end[1] - b.start[1]) / L};
-  const Vec2 rel{x[0] - b.start[0], x[1] - b.start[1]};
-  return {rel[0] * axis[1] - rel[1] * axis[0], rel[0] * axis[0] + rel[1] * axis[1]};
-}
-
 /// Nodes on the other body's axis (within 1e-9 of its length) have no side: no surface pair.
-bool off_axis(const Vec2& x, const Body& b) { return std::abs(across_along(x, b).first) > 1e-9 * b.length(); }
+bool off_axis(const Vec2& x, const Body& b) {
+  const Vec2 d{b.end[0] - b.start[0], b.end[1] - b.start[1]};
+  const double across = ((x[0] - b.start[0]) * d[1] - (x[1] - b.start[1]) * d[0]) / b.length();
+  return std::abs(across) > 1e-9 * b.length();
+}
 
 }  // namespace
 
@@ -24,22 +20,20 @@ ContactPairs make_contact_pairs(const Model& model, const Scene& scene, SurfaceI
   ContactPairs out;
   for (int c = 0; c < static_cast<int>(scene.contacts.size()); ++c) {
     const Contact& k = scene.contacts[c];
-    out.primary.push_back(static_cast<int>(out.pairs.size()));
-    out.pairs.emplace_back(model, scene, c, surface);
-    out.contact.push_back(c);
+    auto& group = out.group.emplace_back();
+    auto add = [&](auto&&... args) {
+      group.push_back(static_cast<int>(out.pairs.size()));
+      out.pairs.emplace_back(model, scene, c, args..., surface);
+      out.contact.push_back(c);
+    };
+    add();
     if (!k.search) continue;
     const Body& A = scene.bodies[k.striker];
     const Body& B = scene.bodies[k.target];
     for (int i = 0; i < A.nodes(); ++i)
-      if (i != k.node && off_axis(A.node_position(i), B)) {
-        out.pairs.emplace_back(model, scene, c, k.striker, i, k.target, surface);
-        out.contact.push_back(c);
-      }
+      if (i != k.node && off_axis(A.node_position(i), B)) add(k.striker, i, k.target);
     for (int e : {0, B.elements})
-      if (off_axis(B.node_position(e), A)) {
-        out.pairs.emplace_back(model, scene, c, k.target, e, k.striker, surface);
-        out.contact.push_back(c);
-      }
+      if (off_axis(B.node_position(e), A)) add(k.target, e, k.striker);
   }
   return out;
 }

@@ -19,8 +19,9 @@ namespace beamimpact::paper {
 /// @brief The node pairs of all contacts, with the scene contact each one belongs to.
 struct ContactPairs {
   std::vector<ContactPair> pairs;
-  std::vector<int> contact;  ///< per pair: index into Scene::contacts
-  std::vector<int> primary;  ///< per scene contact: its declared (or nearest, for "all") pair
+  std::vector<int> contact;             ///< per pair: index into Scene::contacts
+  std::vector<std::vector<int>> group;  ///< per scene contact: its pairs, the declared (or, for
+                                        ///< "all", the nearest) one first
 };
 
 /// @brief Builds the pairs of every contact of the scene (declared pair first within a contact).

@@ -55,9 +55,8 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
       minv_(model),
       fint_(model, effects.corotational ? effects.rotating : std::vector<bool>(scene.bodies.size(), false)),
       search_(make_contact_pairs(model, scene, surface)),
-      pairs_(std::move(search_.pairs)),
       boxes_(search_boxes(model, scene)),
-      solver_(pairs_, frictions(scene, search_.contact), effects.friction, model.size(),
+      solver_(search_.pairs, frictions(scene, search_.contact), effects.friction, model.size(),
               gap_tolerances(scene, search_.contact),
               [this](const Eigen::VectorXd& f, Eigen::VectorXd& out) { apply_H(f, out); }) {
   solver_.set_search_boxes(boxes_.get());
@@ -117,10 +116,10 @@ void ExplicitContactIntegrator::solve_contacts() {
     // Contact work of step p: f_c . (U^{p+1} - U^{p-1}) / 2 with this step's rows, i.e.
     // R (g_{p+1} - g_{p-1})/2 + tau (s_{p+1} - s_{p-1})/2. It is the exact change of the discrete
     // energy 1/2 v_{p+1/2} M v_{p+1/2} + 1/2 u_p K u_{p+1} (linear kinematics).
-    for (std::size_t c = 0; c < pairs_.size(); ++c) {
+    for (std::size_t c = 0; c < search_.pairs.size(); ++c) {
       const ContactForce& f = solver_.forces()[c];
       if (f.state == ContactState::kOpen) continue;
-      const ContactPair& pc = pairs_[c];
+      const ContactPair& pc = search_.pairs[c];
       const double g_prev = pc.g0() + ContactPair::eval(pc.normal_row(), U_prev_);
       dissipated_ -= 0.5 * f.R * (f.gap_next - g_prev);
       if (friction_) {

@@ -60,11 +60,9 @@ class ExplicitContactIntegrator {
   /// @brief Forces of the last solve, per contact.
   const std::vector<ContactForce>& forces() const { return solver_.forces(); }
   /// @brief Contact geometry, per node pair (one per scene contact unless a contact searches).
-  const std::vector<ContactPair>& pairs() const { return pairs_; }
-  /// @brief Per pair: the scene contact it belongs to.
-  const std::vector<int>& pair_contact() const { return search_.contact; }
-  /// @brief Per scene contact: the index of its declared (or, for node = "all", nearest) pair.
-  const std::vector<int>& primary_pair() const { return search_.primary; }
+  const std::vector<ContactPair>& pairs() const { return search_.pairs; }
+  /// @brief Per scene contact: its pairs, the declared (or, for node = "all", nearest) one first.
+  const std::vector<std::vector<int>>& pair_groups() const { return search_.group; }
   /// @brief Kinetic 1/2 V^T M V and strain energy at step p (J).
   double kinetic_energy() const;
   double strain_energy() const { return fint_.strain_energy(U_); }
@@ -95,8 +93,7 @@ class ExplicitContactIntegrator {
   MassSolver minv_;
   InternalForce fint_;
   std::unique_ptr<CorotationalMass> cmass_;  ///< only for consistent mass with rotating bodies
-  ContactPairs search_;  ///< pair bookkeeping (its pairs are moved into pairs_)
-  std::vector<ContactPair> pairs_;
+  ContactPairs search_;  ///< the contact pairs and the scene contact of each
   std::unique_ptr<SearchBoxes> boxes_;
   ContactSolver solver_;
   long p_ = 0;

@@ -57,13 +57,6 @@ void set_merge_rule(const Options& o, double dt, ResultRecorder& rec) {
                   o.merge_steps, static_cast<double>(o.merge_steps) * dt));
 }
 
-/// The node pairs of each scene contact (one, unless the contact searches: node = "all").
-std::vector<std::vector<int>> pair_groups(const ExplicitContactIntegrator& in, std::size_t contacts) {
-  std::vector<std::vector<int>> g(contacts);
-  for (std::size_t p = 0; p < in.pair_contact().size(); ++p) g[in.pair_contact()[p]].push_back(static_cast<int>(p));
-  return g;
-}
-
 /// One scene contact as the history and the statistics report it. A single pair: its force.
 /// A search: R and tau summed over the contact's pairs (each along its own pair's normal and
 /// tangent), the state of the pair carrying the largest R, the least gap over the pairs that
@@ -73,8 +66,8 @@ struct ContactView {
   int pair = 0;
 };
 
-ContactView view(const ExplicitContactIntegrator& in, int contact, const std::vector<int>& group) {
-  const int primary = in.primary_pair()[contact];
+ContactView view(const ExplicitContactIntegrator& in, const std::vector<int>& group) {
+  const int primary = group.front();
   if (group.size() == 1) return {in.forces()[primary], primary};
   ContactView v{in.forces()[primary], primary};
   v.f.R = v.f.tau = 0.0;
@@ -93,12 +86,13 @@ ContactView view(const ExplicitContactIntegrator& in, int contact, const std::ve
   return v;
 }
 
-HistoryRow make_row(const ExplicitContactIntegrator& in, const std::vector<std::vector<int>>& groups) {
+HistoryRow make_row(const ExplicitContactIntegrator& in) {
+  const auto& groups = in.pair_groups();
   const Model& m = in.model();
   HistoryRow row;
   row.t = in.time();
   for (std::size_t c = 0; c < groups.size(); ++c) {
-    const ContactView v = view(in, static_cast<int>(c), groups[c]);
+    const ContactView v = view(in, groups[c]);
     const ContactPair& pair = in.pairs()[v.pair];
     const ContactForce& f = v.f;
     ContactSample s;
@@ -124,15 +118,15 @@ HistoryRow make_row(const ExplicitContactIntegrator& in, const std::vector<std::
 /// output_every-th step and at the last one. Throws when the energy is no longer finite or has grown
 /// 1e6-fold.
 void record_step(const ExplicitContactIntegrator& integ, long p, long N, const Scene& scene,
-                 double critical_dt, const std::vector<std::vector<int>>& groups,
-                 std::vector<DeformedSurface>& surfaces, ResultRecorder& rec) {
+                 double critical_dt, std::vector<DeformedSurface>& surfaces, ResultRecorder& rec) {
+  const auto& groups = integ.pair_groups();
   for (std::size_t c = 0; c < groups.size(); ++c) {
-    const ContactForce f = view(integ, static_cast<int>(c), groups[c]).f;
+    const ContactForce f = view(integ, groups[c]).f;
     rec.sample(c, integ.time(), f.R, f.tau, integ.dt(), f.state);
     for (int q : groups[c]) rec.track_real_gap(c, integ.time(), surfaces[q].gap(integ.U()).gap);
   }
   if (p % scene.time.output_every != 0 && p != N) return;
-  HistoryRow row = make_row(integ, groups);
+  HistoryRow row = make_row(integ);
   const double E = row.kinetic + row.strain;
   const double E0 = p == 0 ? E : rec.result().energy_initial;
   if (!std::isfinite(E) || E > 1e6 * E0 + 1e-300)
@@ -182,13 +176,12 @@ SimulationResult solve(const Scene& scene_in) {
 
   ExplicitContactIntegrator integ(model, scene, effects, r.dt, options.surface);
   integ.set_closure_slip(options.closure_slip);
-  const std::vector<std::vector<int>> groups = pair_groups(integ, scene.contacts.size());
   std::vector<DeformedSurface> surfaces;  // the real gap of each pair, from the deformed geometry
   for (const ContactPair& pair : integ.pairs())
     surfaces.emplace_back(model, pair.target_body(), pair.striker_node());
   Progress progress("paper", scene.time.end);
   for (long p = 0;; ++p) {
-    record_step(integ, p, N, scene, cs.dt, groups, surfaces, rec);
+    record_step(integ, p, N, scene, cs.dt, surfaces, rec);
     if (p == N) break;
     integ.step();
     progress.update(integ.time());
@@ -207,7 +200,7 @@ SimulationResult solve(const Scene& scene_in) {
   r.extra["dofs"] = model.size();
   r.extra["dofs_per_node"] = model.dofs_per_node();
   std::vector<ContactKind> kinds;
-  for (int p : integ.primary_pair()) kinds.push_back(integ.pairs()[p].kind());
+  for (const auto& group : integ.pair_groups()) kinds.push_back(integ.pairs()[group.front()].kind());
   SimulationResult result = rec.finish(kinds);
   for (std::size_t c = 0; c < scene.contacts.size(); ++c) {
     result.contacts[c].friction = scene.contacts[c].friction;  // as applied
@@ -215,7 +208,7 @@ SimulationResult solve(const Scene& scene_in) {
         scene.contacts[c].search
             ? fmt::format("all nodes: {} node pairs (every striker node off the target's axis, the "
                           "target's end nodes against the striker); node {} reported while open",
-                          groups[c].size(), scene.contacts[c].node)
+                          integ.pair_groups()[c].size(), scene.contacts[c].node)
             : fmt::format("declared node {} only (the paper's method)", scene.contacts[c].node);
   }
   return result;

@@ -177,10 +177,12 @@ double distance_to_body(const Vec2& x, const Body& b) {
 /// The striker node nearest the target's segment at t = 0 (the first one on a tie).
 int nearest_node(const Body& striker, const Body& target) {
   int best = 0;
+  double best_distance = distance_to_body(striker.node_position(0), target);
   for (int i = 1; i < striker.nodes(); ++i)
-    if (distance_to_body(striker.node_position(i), target) <
-        distance_to_body(striker.node_position(best), target))
+    if (const double d = distance_to_body(striker.node_position(i), target); d < best_distance) {
       best = i;
+      best_distance = d;
+    }
   return best;
 }
 

@@ -101,8 +101,10 @@ Model::Model(const Scene& scene, bool bending)
         mdiag(eq) += mc;
       else
         mt.emplace_back(eq, eq, mc);
-      for (int k = 0; k < 2; ++k)  // momentum along global axis k
-        if (dpn == 3 ? c == k : true) momentum_[b][k](eq) += dpn == 3 ? mc : mc * axis_[k];
+      if (dpn == 3 && c < 2)
+        momentum_[b][c](eq) += mc;  // the centre's x or y translation
+      else if (dpn == 1)
+        for (int k = 0; k < 2; ++k) momentum_[b][k](eq) += mc * axis_[k];  // the rod axis
     }
   }
   for (int e = 0; e < static_cast<int>(elements_.size()); ++e) {

@@ -16,7 +16,7 @@ Comparison with_impulse(std::optional<double> v) {
 }
 
 TEST(Evaluate, GatePassesAtOrBelowTolerance) {
-  const Gate g{"impulse", 0.01, std::nullopt, "test gate"};
+  const Gate g{"impulse", 0.01, std::nullopt, "test gate", std::nullopt};
   EXPECT_EQ(check_gate(g, with_impulse(0.01)).status, GateStatus::kPass);  // "error <= tol"
   const GateResult f = check_gate(g, with_impulse(0.0100001));
   EXPECT_EQ(f.status, GateStatus::kFail);
@@ -24,9 +24,9 @@ TEST(Evaluate, GatePassesAtOrBelowTolerance) {
 }
 
 TEST(Evaluate, UnavailableOrMissingNormFails) {
-  EXPECT_EQ(check_gate({"impulse", 1.0, std::nullopt, "test"}, with_impulse(std::nullopt)).status,
+  EXPECT_EQ(check_gate({"impulse", 1.0, std::nullopt, "test", std::nullopt}, with_impulse(std::nullopt)).status,
             GateStatus::kFail);
-  const GateResult m = check_gate({"impulse_2", 1.0, std::nullopt, "test"}, with_impulse(0.0));
+  const GateResult m = check_gate({"impulse_2", 1.0, std::nullopt, "test", std::nullopt}, with_impulse(0.0));
   EXPECT_EQ(m.status, GateStatus::kFail);
   EXPECT_NE(m.message.find("not produced"), std::string::npos);
 }

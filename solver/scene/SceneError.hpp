@@ -21,13 +21,11 @@ class SceneError : public std::runtime_error {
   /// @brief The dotted key the error is about ("" when it concerns the whole file).
   const std::string& key() const { return key_; }
 
- private:
-  static std::string format(const std::string& file, const std::string& key, const std::string& msg) {
-    return file + (key.empty() ? std::string() : ": key '" + clip(key) + "'") + ": " + clip(msg);
-  }
-  /// Cuts every run of more than 80 non-blank characters (an echoed value) to 80, marked "...".
-  static std::string clip(const std::string& text) {
-    constexpr std::size_t kLongest = 80;
+  /// @brief Cuts every run of more than `longest` non-blank characters (an echoed value, a
+  /// path) to `longest`, marked "...", so that a message stays one readable line.
+  /// @param text the message or value; @param longest the longest run kept (>= 4)
+  static std::string clip(const std::string& text, std::size_t longest = 80) {
+    const std::size_t kLongest = longest;
     std::string out;
     std::size_t run = 0;
     for (char c : text) {
@@ -38,6 +36,12 @@ class SceneError : public std::runtime_error {
         out += "...";
     }
     return out;
+  }
+
+ private:
+  /// Paths may be long but not kilobytes long: 160 characters keep every ordinary path whole.
+  static std::string format(const std::string& file, const std::string& key, const std::string& msg) {
+    return clip(file, 160) + (key.empty() ? std::string() : ": key '" + clip(key) + "'") + ": " + clip(msg);
   }
   std::string file_;
   std::string key_;

@@ -138,6 +138,33 @@ gates = [{ metric = "impluse", tol = 0.01, why = "misspelt metric name" }]
   EXPECT_FALSE(fs::exists(tmp_ / "v" / "report.md"));
 }
 
+// A scene path the file system refuses (a name longer than NAME_MAX, found by the matrix fuzz
+// target: std::filesystem threw "File name too long" through verify) is a missing scene: exit 2
+// naming the key, like any other path that does not exist. The same for sweep's scene and run's
+// --out.
+TEST_F(Commands, ScenePathTooLongIsBadInput) {
+  const std::string name = "verification/" + std::string(300, 'x') + ".toml";
+  const fs::path m = matrix(fmt::format(R"(
+[[case]]
+scene = "{}"
+method = "paper"
+reference = {{ method = "paper" }}
+gates = [{{ metric = "impulse", tol = 0.01, why = "a scene that cannot exist" }}]
+)", name));
+  Result r = run(fmt::format("verify '{}' --out '{}'", m.string(), (tmp_ / "v").string()));
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("case[0].scene"), std::string::npos) << r.out;
+  r = run(fmt::format("sweep {} --dt 0.01 --out '{}'", name, (tmp_ / "s").string()));
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("scene file not found"), std::string::npos) << r.out;
+  // An --out the file system refuses: exit 2, the path cut to 160 characters, no library wording.
+  r = run(fmt::format("run verification/scenes/paper/s1_central.toml --out '{}'", (tmp_ / name).string()));
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("File name too long (check --out"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("filesystem error"), std::string::npos) << r.out;
+  EXPECT_LT(r.out.size(), 300u) << r.out;
+}
+
 // compare: prints every norm with its definition; a directory that is not a run exits 2.
 TEST_F(Commands, CompareRunsAndRejectsNonRuns) {
   const std::string s1 = "verification/scenes/paper/s1_central.toml";

@@ -3,6 +3,7 @@
 /// Exit codes: 0 success; 1 a verification gate failed; 2 bad input (scene, options); 3 a run failed.
 
 #include <cstdio>
+#include <filesystem>
 #include <new>
 
 #include <CLI/CLI.hpp>
@@ -31,6 +32,12 @@ int main(int argc, char** argv) {
     return e.code;
   } catch (const SceneError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // A path the file system refuses (too long, not writable, not a directory): the user's --out
+    // or an input path, so bad input, named without the library's wording.
+    std::fprintf(stderr, "error: %s: %s (check --out and the paths given)\n",
+                 SceneError::clip(e.path1().string(), 160).c_str(), e.code().message().c_str());
     return 2;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "error: out of memory: the run needs more memory than this machine has\n");

@@ -117,13 +117,14 @@ std::filesystem::path find_source_root(const std::filesystem::path& start) {
   for (const Method& m : methods())
     for (const std::string& x : m.command)
       if (!x.empty() && x[0] != '/' && x.find('/') != std::string::npos) needed.emplace_back(x);
+  std::error_code unreadable;  // a path the file system refuses (too long) counts as absent
   auto holds_all = [&](const fs::path& d) {
     for (const fs::path& p : needed)
-      if (!fs::exists(d / p)) return false;
+      if (!fs::exists(d / p, unreadable)) return false;
     return true;
   };
   fs::path d = fs::absolute(start);
-  if (!fs::is_directory(d)) d = d.parent_path();
+  if (!fs::is_directory(d, unreadable)) d = d.parent_path();
   for (; !d.empty(); d = d.parent_path()) {
     if (holds_all(d)) return d;
     if (d == d.parent_path()) break;

@@ -115,7 +115,8 @@ class Loader {
     std::string s = r.string("scene", "a scene name from [scenes] or a path relative to the root");
     if (scenes_.count(s)) s = scenes_.at(s);
     const fs::path p = (root_ / s).lexically_normal();
-    if (!fs::exists(p)) r.fail("scene", "expected an existing scene file, " + p.string() + " does not exist");
+    std::error_code unreadable;  // e.g. a name too long for the file system: not found either
+    if (!fs::exists(p, unreadable)) r.fail("scene", "expected an existing scene file, " + p.string() + " does not exist");
     return p;
   }
 

@@ -39,7 +39,8 @@ SweepResult execute_sweep(const SweepOptions& o, const Launcher& launcher) {
                      "expected either --dt LIST or --fraction LIST (for dt = \"auto\" scenes)");
   for (double v : steps)
     if (!(v > 0.0)) throw SceneError(o.scene.string(), key, "expected positive values");
-  if (!fs::exists(o.scene)) throw SceneError(o.scene.string(), "", "scene file not found");
+  std::error_code unreadable;  // a path the file system refuses (too long) is not found either
+  if (!fs::exists(o.scene, unreadable)) throw SceneError(o.scene.string(), "", "scene file not found");
   const Method& method = beamimpact::method(o.method, o.scene.string(), "--method");
   const std::vector<std::string> meshes = o.meshes.empty() ? std::vector<std::string>{""} : o.meshes;
 
@@ -69,7 +70,7 @@ SweepResult execute_sweep(const SweepOptions& o, const Launcher& launcher) {
       throw SceneError(o.scene.string(), "--reference",
                        "give a reference method or directory for " + o.method);
     r.reference_label = ref->settings_label() + " (the finest step / 4 on the finest mesh)";
-  } else if (fs::exists(fs::path(o.reference) / "summary.json")) {
+  } else if (fs::exists(fs::path(o.reference) / "summary.json", unreadable)) {
     r.reference_dir = o.reference;
     r.reference_label = "run directory " + o.reference;
   } else {

@@ -24,7 +24,7 @@ bash tools/sanitize.sh --build-only   # the fuzz targets live in the sanitizer b
 declare -A seeds=(
   [scene_fuzz]="$(find verification/scenes fuzz/corpus/scene -name '*.toml' | tr '\n' ' ')"
   [run_reader_fuzz]="$(find fuzz/corpus/run -type f | tr '\n' ' ')"
-  [matrix_fuzz]="verification/matrix.toml"
+  [matrix_fuzz]="verification/matrix.toml $(find fuzz/corpus/matrix -type f | tr '\n' ' ')"
 )
 mkdir -p "$build/findings"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=0}

@@ -1,0 +1,170 @@
+#!/usr/bin/env python3
+"""@brief Per-effect cost per step: reads the JSON of benchmarks/effects_benchmark (--benchmark_out),
+divides every variant's CPU time per step by the hand-written kernel's at the same size (same run),
+and writes the plot, the table (markdown) and the manifest the HTML report reads.
+
+Usage: plot_effects_benchmark.py [--run] [--json reports/benchmarks/effects_benchmark.json]
+                                 [--out reports/benchmarks] [--build build]
+--run  first runs the benchmark (3 interleaved repetitions, about 2-4 min) into --json.
+Per point the median over repetitions is used; "spread" is (max - min) / median of the variant's
+own repetitions, the noise against which "costs nothing" is judged.
+"""
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+BASELINE = "frames"  # effects are costed relative to this variant (open contact, nothing else on)
+KERNEL = {"rods": "rod_kernel"}  # every other variant is a frame model
+BENCH_ARGS = ["--benchmark_repetitions=3", "--benchmark_enable_random_interleaving=true",
+              "--benchmark_min_time=0.2", "--benchmark_out_format=json"]
+
+
+def fail(msg):
+    print(f"plot_effects_benchmark: {msg}", file=sys.stderr)
+    sys.exit(2)
+
+
+def load(path):
+    try:
+        with open(path) as f:
+            data = json.load(f)
+    except (OSError, json.JSONDecodeError) as e:
+        fail(f"{path}: cannot read a Google Benchmark JSON ({e})")
+    times = {}
+    for b in data.get("benchmarks", []):
+        if b.get("run_type") != "iteration" or b.get("error_occurred"):
+            continue
+        parts = b["run_name"].split("/")  # run_variant/frames/1000 or kernel/frame_kernel/1000
+        if len(parts) != 3:
+            continue
+        times.setdefault((parts[1], int(parts[2])), []).append(
+            {"cpu": b["cpu_time"], "closed": b.get("closed"), "dofs": b.get("dofs")})
+    if not times:
+        fail(f"{path}: no benchmark result in it")
+    return data["context"], times
+
+
+def summarise(times):
+    med = {k: statistics.median(x["cpu"] for x in v) for k, v in times.items()}
+    spread = {k: (max(x["cpu"] for x in v) - min(x["cpu"] for x in v)) / med[k] for k, v in times.items()}
+    rows = {}
+    for (name, size), t in med.items():
+        if name.endswith("_kernel"):
+            continue
+        kern = med.get((KERNEL.get(name, "frame_kernel"), size))
+        base = med.get((BASELINE, size))
+        closed = [x["closed"] for x in times[(name, size)] if x["closed"] is not None]
+        rows[(name, size)] = {"variant": name, "size": size, "dofs": times[(name, size)][0]["dofs"],
+                              "cpu_ns_per_step": t, "ratio_to_kernel": t / kern if kern else None,
+                              "vs_frames": (t / base - 1.0) if base and name != "rods" else None,
+                              "spread": spread[(name, size)], "closed_fraction": min(closed) if closed else None}
+    return rows
+
+
+def order(rows):
+    names = []
+    for (n, _) in sorted(rows, key=lambda k: k[1]):
+        if n not in names:
+            names.append(n)
+    return names, sorted({s for (_, s) in rows})
+
+
+def table(rows):
+    names, sizes = order(rows)
+    head = "| variant | " + " | ".join(f"{s:g} DOFs: x kernel (vs frames)" for s in sizes) + " | contacts closed |\n"
+    out = head + "|---|" + "---|" * (len(sizes) + 1) + "\n"
+    for n in names:
+        cells = []
+        for s in sizes:
+            r = rows.get((n, s))
+            if not r or r["ratio_to_kernel"] is None:
+                cells.append("n/a")
+                continue
+            vs = "" if r["vs_frames"] is None or n == BASELINE else f" ({r['vs_frames']:+.0%})"
+            cells.append(f"{r['ratio_to_kernel']:.2f}{vs} ±{r['spread'] / 2:.0%}")
+        closed = [rows[(n, s)]["closed_fraction"] for s in sizes if (n, s) in rows]
+        cl = "-" if not n.startswith("contact") else f"{min(c for c in closed if c is not None):.0%} of steps"
+        out += f"| {n} | " + " | ".join(cells) + f" | {cl} |\n"
+    return out
+
+
+def plot(rows, png, footer):
+    names, sizes = order(rows)
+    fig, ax = plt.subplots(figsize=(8, 5))
+    fig.subplots_adjust(left=0.1, right=0.72, bottom=0.2)
+    for i, n in enumerate(names):
+        pts = [(rows[(n, s)]["dofs"], rows[(n, s)]["ratio_to_kernel"], rows[(n, s)]["spread"])
+               for s in sizes if (n, s) in rows and rows[(n, s)]["ratio_to_kernel"]]
+        if pts:
+            ax.errorbar([p[0] for p in pts], [p[1] for p in pts], yerr=[[p[1] * p[2] / 2 for p in pts]] * 2,
+                        fmt="o-", ms=3, capsize=2, label=n, color=f"C{i % 10}", ls="-" if i < 10 else "--")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("degrees of freedom")
+    ax.set_ylabel("CPU time per step / hand-written kernel's (same run)")
+    ax.set_title("Cost per step of each effect, as a ratio to the lumped-mass kernel", fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    fig.text(0.01, 0.01, footer, fontsize=6.5, family="monospace", va="bottom")
+    fig.savefig(png, dpi=100)
+    plt.close(fig)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--run", action="store_true")
+    p.add_argument("--json", default="reports/benchmarks/effects_benchmark.json")
+    p.add_argument("--out", default="reports/benchmarks")
+    p.add_argument("--build", default=os.environ.get("BEAMIMPACT_BUILD_DIR", "build"))
+    a = p.parse_args()
+    exe = os.path.join(a.build, "benchmarks", "effects_benchmark")
+    cmd = f"{exe} {' '.join(BENCH_ARGS)} --benchmark_out={a.json}"
+    if a.run:
+        if not os.access(exe, os.X_OK):
+            fail(f"--build {a.build}: no benchmarks/effects_benchmark there (cmake --build {a.build} --target effects_benchmark)")
+        os.makedirs(os.path.dirname(os.path.abspath(a.json)), exist_ok=True)
+        subprocess.run(cmd.split(), check=True)
+    version = subprocess.run([os.path.join(a.build, "beamimpact"), "--version"], capture_output=True,
+                             text=True).stdout.strip() or "unknown"
+    ctx, times = load(a.json)
+    rows = summarise(times)
+    os.makedirs(a.out, exist_ok=True)
+    load_avg = ctx.get("load_avg", [])
+    footer = (f"{cmd}\nbeamimpact {version} | {ctx.get('num_cpus')} CPUs, load average {load_avg} | "
+              f"median of repetitions, bars: half the spread")
+    plot(rows, os.path.join(a.out, "effects.png"), footer)
+    md = table(rows)
+    with open(os.path.join(a.out, "effects_table.md"), "w") as f:
+        f.write(f"Made by `{cmd}` then `reports/plot_effects_benchmark.py`, beamimpact {version}, "
+                f"load average {load_avg}.\n\n{md}")
+    names, sizes = order(rows)
+    trows = [[n] + [("n/a" if (n, s) not in rows or rows[(n, s)]["ratio_to_kernel"] is None else
+                     f"{rows[(n, s)]['ratio_to_kernel']:.2f}" + ("" if rows[(n, s)]["vs_frames"] is None or n == BASELINE
+                                                                else f" ({rows[(n, s)]['vs_frames']:+.0%})"))
+                    for s in sizes] for n in names]
+    with open(os.path.join(a.out, "figures.json"), "w") as f:
+        json.dump({"title": "Per-effect benchmarks (cost per step, ratio to the hand-written kernel)",
+                   "about": "benchmarks/effects_benchmark.cc: the paper integrator on a 10 m target of n elements "
+                            "with one effect on at a time; CPU time per step divided by beamimpact::bench::StepKernel's "
+                            "at the same size in the same run; in brackets the change against 'frames' (open contact, "
+                            "no other effect).",
+                   "tables": [{"title": "ratio to the kernel (change vs frames)",
+                               "columns": ["variant"] + [f"{s:g} DOFs" for s in sizes], "rows": trows}],
+                   "figures": [{"png": "effects.png", "title": "Cost per step against size, per effect",
+                                "command": cmd + " && /usr/bin/python3 reports/plot_effects_benchmark.py",
+                                "scene": "generated in benchmarks/effects_benchmark.cc (S2's beam, rigid strikers)",
+                                "version": version, "caption": "Ratios within one run; the machine was shared."}]},
+                  f, indent=1)
+    print(md)
+
+
+if __name__ == "__main__":
+    main()

@@ -87,7 +87,7 @@ def order(rows):
 
 def table(rows):
     names, sizes = order(rows)
-    head = "| variant | " + " | ".join(f"{s:g} DOFs: x kernel (vs frames)" for s in sizes) + " | steps with the pushed contacts closed |\n"
+    head = "| variant | " + " | ".join(f"{s:g} DOFs: x kernel (change vs baseline)" for s in sizes) + " | steps with the pushed contacts closed |\n"
     out = head + "|---|" + "---|" * (len(sizes) + 1) + "\n"
     for n in names:
         cells = []

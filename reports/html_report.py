@@ -23,7 +23,7 @@ import sys
 FIGURE_SETS = {
     "work_precision": "/usr/bin/python3 reports/work_precision.py",
     "paper_figures": "/usr/bin/python3 reports/paper_figures.py",
-    "benchmarks": "/usr/bin/python3 reports/plot_effects_benchmark.py",
+    "benchmarks": "/usr/bin/python3 reports/plot_effects_benchmark.py --run",
 }
 FIGURE_KEYS = ("png", "title", "command", "scene", "version")
 

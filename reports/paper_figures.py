@@ -24,8 +24,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-PAPER = "verification/scenes/paper"
-FENICSX_CMD = ["/usr/bin/python3", "references/fenicsx/run.py"]  # api/registry.cc: fenicsx.command
+from work_precision import FENICSX_CMD, PAPER  # noqa: E402  (one owner of the scene folder and FEniCSx command)
 METHODS = ("paper", "exact", "ida", "fenicsx")
 STYLE = {"paper": dict(color="k", lw=1.4), "exact": dict(color="C3", lw=1.0, ls="--"),
          "ida": dict(color="C0", lw=1.0, ls=":"), "fenicsx": dict(color="C2", lw=1.0, ls="-.")}

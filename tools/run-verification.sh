@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # @brief The main job: installs what is missing, builds, runs the verification matrix on the
-# shipped scenes and writes its report under out/verify/.
+# shipped scenes and writes its report under out/verify/, then one self-contained
+# out/verify/report.html: this run's verdicts plus the committed work-precision sets, paper
+# figures and benchmark plots (reports/html_report.py).
 # Usage: tools/run-verification.sh [--tier quick|full]   (default: quick)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -8,4 +10,12 @@ bash tools/build.sh
 build=${BEAMIMPACT_BUILD_DIR:-build}
 args=("$@")
 ((${#args[@]})) || args=(--tier quick)
-"$build"/beamimpact verify verification/matrix.toml --out out/verify --jobs "$(nproc)" "${args[@]}"
+status=0
+rm -f out/verify/norms.json out/verify/report.html  # never a stale report from an earlier run
+"$build"/beamimpact verify verification/matrix.toml --out out/verify --jobs "$(nproc)" "${args[@]}" || status=$?
+# The report shows a failing run too (its verdicts say so); an interrupted or refused run wrote no norms.json.
+if [[ -f out/verify/norms.json ]]; then
+  /usr/bin/python3 reports/html_report.py --verify out/verify --figures reports/work_precision \
+    --figures reports/paper_figures --figures reports/benchmarks --out out/verify/report.html
+fi
+exit "$status"

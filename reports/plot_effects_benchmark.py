@@ -1,0 +1,180 @@
+#!/usr/bin/env python3
+"""@brief Per-effect cost per step: reads the JSON of benchmarks/effects_benchmark (--benchmark_out),
+divides every variant's CPU time per step by the hand-written kernel's at the same size (same run),
+and writes the plot, the table (markdown) and the manifest the HTML report reads.
+
+Usage: plot_effects_benchmark.py [--run] [--json reports/benchmarks/effects_benchmark.json]
+                                 [--out reports/benchmarks] [--build build]
+--run  first runs the benchmark (3 interleaved repetitions, about 2-4 min) into --json.
+Per point the minimum over repetitions is used (on a shared machine other load only adds time);
+"spread" is (max - min) / min of the point's own repetitions, the noise against which "costs
+nothing" is judged.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import textwrap
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+BASELINE = "frames"  # effects are costed relative to this variant (open contact, nothing else on)
+KERNEL = {"rods": "rod_kernel"}  # every other variant is a frame model
+BENCH_ARGS = ["--benchmark_repetitions=3", "--benchmark_enable_random_interleaving=true",
+              "--benchmark_min_time=0.2", "--benchmark_out_format=json"]
+
+
+def fail(msg):
+    print(f"plot_effects_benchmark: {msg}", file=sys.stderr)
+    sys.exit(2)
+
+
+def load(path):
+    try:
+        with open(path) as f:
+            data = json.load(f)
+    except (OSError, json.JSONDecodeError) as e:
+        fail(f"{path}: cannot read a Google Benchmark JSON ({e})")
+    times = {}
+    for b in data.get("benchmarks", []):
+        if b.get("run_type") != "iteration" or b.get("error_occurred"):
+            continue
+        parts = b["run_name"].split("/")  # run_variant/frames/1000 or kernel/frame_kernel/1000
+        if len(parts) != 3:
+            continue
+        times.setdefault((parts[1], int(parts[2])), []).append(
+            {"cpu": b["cpu_time"], "closed": b.get("closed"), "dofs": b.get("dofs")})
+    if not times:
+        fail(f"{path}: no benchmark result in it")
+    return data["context"], times
+
+
+def baseline_of(name):
+    """Contact rows (8 targets) are costed against contact_0 (same layout, all open); the rest against frames."""
+    return "contact_0" if name.startswith("contact_") and name != "contact_0" else BASELINE
+
+
+def summarise(times):
+    med = {k: min(x["cpu"] for x in v) for k, v in times.items()}
+    spread = {k: (max(x["cpu"] for x in v) - min(x["cpu"] for x in v)) / med[k] for k, v in times.items()}
+    rows = {}
+    for (name, size), t in med.items():
+        if name.endswith("_kernel"):
+            continue
+        kern = med.get((KERNEL.get(name, "frame_kernel"), size))
+        base = med.get((baseline_of(name), size))
+        closed = [x["closed"] for x in times[(name, size)] if x["closed"] is not None]
+        rows[(name, size)] = {"variant": name, "size": size, "dofs": times[(name, size)][0]["dofs"],
+                              "cpu_ns_per_step": t, "ratio_to_kernel": t / kern if kern else None,
+                              "vs_baseline": (t / base - 1.0) if base and name not in ("rods", BASELINE) else None,
+                              "spread": spread[(name, size)], "closed_fraction": min(closed) if closed else None}
+    return rows
+
+
+ORDER = ("rods", "frames", "consistent_mass", "damping", "corotational", "friction_declared_contact_open",
+         "corotational_declared_target_held", "contact_0", "contact_1", "contact_2", "contact_8", "contact_1_friction")
+
+
+def order(rows):
+    present = {n for (n, _) in rows}
+    names = [n for n in ORDER if n in present] + sorted(present - set(ORDER))
+    return names, sorted({s for (_, s) in rows})
+
+
+def table(rows):
+    names, sizes = order(rows)
+    head = "| variant | " + " | ".join(f"{s:g} DOFs: x kernel (change vs baseline)" for s in sizes) + " | steps with the pushed contacts closed |\n"
+    out = head + "|---|" + "---|" * (len(sizes) + 1) + "\n"
+    for n in names:
+        cells = []
+        for s in sizes:
+            r = rows.get((n, s))
+            if not r or r["ratio_to_kernel"] is None:
+                cells.append("n/a")
+                continue
+            vs = "" if r["vs_baseline"] is None else f" ({r['vs_baseline']:+.0%})"
+            cells.append(f"{r['ratio_to_kernel']:.2f}{vs} ±{r['spread'] / 2:.0%}")
+        closed = [rows[(n, s)]["closed_fraction"] for s in sizes if (n, s) in rows]
+        cl = "-" if not n.startswith("contact_") or n == "contact_0" else " / ".join(
+            "n/a" if c is None else f"{c:.0%}" for c in closed)
+        out += f"| {n} | " + " | ".join(cells) + f" | {cl} |\n"
+    return out
+
+
+def plot(rows, png, footer):
+    names, sizes = order(rows)
+    fig, ax = plt.subplots(figsize=(8, 5))
+    fig.subplots_adjust(left=0.1, right=0.72, bottom=0.22)
+    for i, n in enumerate(names):
+        pts = [(rows[(n, s)]["dofs"], rows[(n, s)]["ratio_to_kernel"], rows[(n, s)]["spread"])
+               for s in sizes if (n, s) in rows and rows[(n, s)]["ratio_to_kernel"]]
+        if pts:
+            ax.errorbar([p[0] for p in pts], [p[1] for p in pts], yerr=[[p[1] * p[2] / 2 for p in pts]] * 2,
+                        fmt="o", ms=3, capsize=2, label=n, color=f"C{i % 10}", ls="-" if i < 10 else "--")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("degrees of freedom")
+    ax.set_ylabel("CPU time per step / hand-written kernel's (same run)")
+    ax.set_title("Cost per step of each effect, as a ratio to the lumped-mass kernel", fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    fig.text(0.01, 0.01, footer, fontsize=6.5, family="monospace", va="bottom")
+    fig.savefig(png, dpi=100)
+    plt.close(fig)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--run", action="store_true")
+    p.add_argument("--json", default="reports/benchmarks/effects_benchmark.json")
+    p.add_argument("--out", default="reports/benchmarks")
+    p.add_argument("--build", default=os.environ.get("BEAMIMPACT_BUILD_DIR", "build"))
+    a = p.parse_args()
+    exe = os.path.join(a.build, "benchmarks", "effects_benchmark")
+    cmd = f"{exe} {' '.join(BENCH_ARGS)} --benchmark_out={a.json}"
+    if a.run:
+        if not os.access(exe, os.X_OK):
+            fail(f"--build {a.build}: no benchmarks/effects_benchmark there (cmake --build {a.build} --target effects_benchmark)")
+        os.makedirs(os.path.dirname(os.path.abspath(a.json)), exist_ok=True)
+        subprocess.run(cmd.split(), check=True)
+    version = subprocess.run([os.path.join(a.build, "beamimpact"), "--version"], capture_output=True,
+                             text=True).stdout.strip() or "unknown"
+    ctx, times = load(a.json)
+    rows = summarise(times)
+    os.makedirs(a.out, exist_ok=True)
+    load_avg = ctx.get("load_avg", [])
+    footer = ("\n".join(textwrap.wrap(cmd, 130)) + f"\nbeamimpact {version} | {ctx.get('num_cpus')} CPUs, load average {load_avg} | "
+              f"min of repetitions, bars: half the spread")
+    plot(rows, os.path.join(a.out, "effects.png"), footer)
+    md = table(rows)
+    with open(os.path.join(a.out, "effects_table.md"), "w") as f:
+        f.write(f"Made by `{cmd}` then `reports/plot_effects_benchmark.py`, beamimpact {version}, "
+                f"load average {load_avg}.\n\n{md}")
+    names, sizes = order(rows)
+    trows = [[n] + [("n/a" if (n, s) not in rows or rows[(n, s)]["ratio_to_kernel"] is None else
+                     f"{rows[(n, s)]['ratio_to_kernel']:.2f}" + ("" if rows[(n, s)]["vs_baseline"] is None
+                                                                else f" ({rows[(n, s)]['vs_baseline']:+.0%})"))
+                    for s in sizes] for n in names]
+    with open(os.path.join(a.out, "figures.json"), "w") as f:
+        json.dump({"title": "Per-effect benchmarks (cost per step, ratio to the hand-written kernel)",
+                   "about": "benchmarks/effects_benchmark.cc: the paper integrator on a 10 m target of n elements "
+                            "with one effect on at a time; CPU time per step divided by beamimpact::bench::StepKernel's "
+                            "at the same size in the same run (minimum of 3 interleaved repetitions); in brackets the change against the "
+                            "baseline: 'frames' (one target, open contact, no other effect), for the contact rows "
+                            "'contact_0' (8 targets, all contacts open).",
+                   "tables": [{"title": "ratio to the kernel (change vs baseline)",
+                               "columns": ["variant"] + [f"{s:g} DOFs" for s in sizes], "rows": trows}],
+                   "figures": [{"png": "effects.png", "title": "Cost per step against size, per effect",
+                                "command": cmd + " && /usr/bin/python3 reports/plot_effects_benchmark.py",
+                                "scene": "generated in benchmarks/effects_benchmark.cc (S2's beam, rigid strikers)",
+                                "version": version, "caption": "Ratios within one run; the machine was shared."}]},
+                  f, indent=1)
+    print(md)
+
+
+if __name__ == "__main__":
+    main()

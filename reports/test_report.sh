@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# @brief ctest report_render: writes a small report.html (a fixture verification run plus the
+# committed figure sets) and checks it in headless Chromium (reports/check_report.py: images decode,
+# no section empty, no image broken in the browser, the screenshot is not blank; --self-test: a
+# corrupted image and an empty section are rejected). Fails, with a message, when chromium is absent.
+# Usage: reports/test_report.sh OUT_DIR
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=${1:?usage: reports/test_report.sh OUT_DIR}
+rm -rf "$out" && mkdir -p "$out"
+sets=(--figures reports/testdata/figure_set)
+for d in work_precision paper_figures benchmarks; do sets+=(--figures "reports/$d"); done
+/usr/bin/python3 reports/html_report.py --verify reports/testdata/verify "${sets[@]}" --out "$out/report.html"
+/usr/bin/python3 reports/check_report.py "$out/report.html" --screenshot "$out/report.png" --self-test

@@ -1,0 +1,41 @@
+#pragma once
+/// @file run_study.hpp
+/// @brief Runs a whole study (every point, on every rank of the MPI job or in this process) and
+/// writes its table: study.csv and study.json (identical between runs and rank counts), the
+/// timing fields apart in timing.csv and timing.json, and study.md listing where the method
+/// broke (failed, diverged, created energy, or an error above the study's `breaks` bound).
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <beamimpact/study/Study.hpp>
+#include <beamimpact/study/run_point.hpp>
+
+namespace beamimpact::study {
+
+/// @brief The results of a study, in design order.
+struct StudyResult {
+  std::vector<Point> points;
+  std::vector<PointResult> results;  ///< results[i] belongs to points[i]
+  double wall_seconds = 0.0;         ///< s, the whole study (timing field)
+  int ranks = 1;
+};
+
+/// @brief Runs every point (longest first, over the MPI ranks when there are several), with one
+/// progress line per point on stderr (rank 0). Returns the results on rank 0, nullopt on the
+/// other ranks (they write nothing).
+std::optional<StudyResult> execute_study(const Study& s, const std::filesystem::path& out);
+
+/// @brief True when the case counts as a breakdown of the method: not "ok", or the study's
+/// `breaks` metric above its bound.
+bool broke(const Study& s, const CaseResult& c);
+
+/// @brief Writes out/study.csv, study.json, study.md, timing.csv and timing.json.
+/// @param command how the study was started (for study.md)
+/// @param version `beamimpact --version`
+void write_study(const Study& s, const StudyResult& r, const std::filesystem::path& out,
+                 const std::string& command, const std::string& version);
+
+}  // namespace beamimpact::study

@@ -97,8 +97,10 @@ void verify(const VerifyArgs& a) {
       add(c->run);
       add(c->reference);
     }
-    for (const auto* v : ladders)
+    for (const auto* v : ladders) {
       for (const auto& s : v->runs) add(s);
+      if (v->reference) add(*v->reference);
+    }
     for (const auto* c : checks) add(c->run);
   }
   const fs::path out = a.out;

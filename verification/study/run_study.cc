@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <beamimpact/study/task_farm.hpp>
+#include <beamimpact/util/Progress.hpp>
 #include <beamimpact/util/write_file_atomic.hpp>
 
 namespace beamimpact::study {
@@ -58,6 +59,7 @@ std::optional<StudyResult> execute_study(const Study& s, const fs::path& out) {
   }
   const fs::path runs = out / "runs";
   r.results.resize(n);
+  Progress::set_enabled(false);  // one line per point instead of the methods' own progress
   std::size_t finished = 0;
   const bool root = farm(
       cost,

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """@brief Maps of one `beamimpact study` over two of its parameters: the error map (a norm of the
 method against the study's reference, log colour scale) and the stability map (ok, energy created
-above the bound, diverged, refused; cases above the `breaks` bound marked), one panel per value of
+above the bound, diverged, refused; cases above a `breaks` bound marked x), one panel per value of
 a third parameter (e.g. the mesh).
 
 Usage: study_maps.py STUDY_DIR --x alpha0 --y mu [--facet mesh] [--norm impulse] [--method paper]
@@ -89,8 +89,9 @@ def draw(meta, args, kind):
             cmap = mcolors.ListedColormap(COLOURS)
             mappable = ax.pcolormesh(edges(xs), edges(ys), z, cmap=cmap, vmin=-0.5, vmax=len(STATUS) - 0.5, shading="flat")
             hit = [c for c in sub if c["broke"] and c["status"] == "ok"]
+            rules = " or ".join(f"{r['metric']} > {r['above']:g}" for r in meta["breaks"])
             ax.plot([c["parameters"][args.x] for c in hit], [c["parameters"][args.y] for c in hit], "kx", ms=4,
-                    label=f"{meta['breaks']['metric']} > {meta['breaks']['above']:g}")
+                    label=rules)
             if hit:
                 ax.legend(loc="upper right", fontsize=7)
         ax.set_xlabel(args.x)

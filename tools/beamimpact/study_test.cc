@@ -84,6 +84,7 @@ TEST_F(StudyCommand, TableRecordsRefusedCasesAndFrictionActsOnlyOnObliqueImpacts
     for (double mu : {0.0, 0.6}) {
       const auto& c = find(a, mu, 3.0);
       EXPECT_EQ(c.at("status"), "error");
+      EXPECT_TRUE(c.at("broke").get<bool>());  // listed in study.md as a breakdown
       EXPECT_NE(c.at("message").get<std::string>().find("fraction"), std::string::npos) << c.dump();
       EXPECT_EQ(find(a, mu, 0.5).at("status"), "ok");
     }

@@ -146,12 +146,21 @@ Study Study::load(const fs::path& file_in) {
   for (const auto& n : s.norms)
     if (!verification::known_norm(n)) r.fail("norms", "unknown norm '" + n + "' (see `beamimpact compare`)");
   if (const toml::node* n = r.raw("breaks")) {
-    if (!n->as_table()) r.fail("breaks", "expected a table { metric = \"impulse\", above = 0.1 }");
-    TableReader b(*n->as_table(), file, "breaks", nullptr);
-    s.breaks.metric = b.string("metric", "a comparison norm");
-    if (!verification::known_norm(s.breaks.metric)) b.fail("metric", "unknown norm '" + s.breaks.metric + "'");
-    s.breaks.above = b.number("above", "the norm value above which a case is listed");
-    b.finish();
+    const toml::array* a = n->as_array();
+    if (!a || a->empty()) r.fail("breaks", "expected an array such as [{ metric = \"impulse\", above = 0.1 }]");
+    s.breaks.clear();
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const toml::table* t = a->get(i)->as_table();
+      if (!t) r.fail("breaks", "expected tables { metric = \"impulse\", above = 0.1 }");
+      TableReader b(*t, file, fmt::format("breaks[{}]", i), nullptr);
+      BreakRule rule;
+      rule.metric = b.string("metric", "a comparison norm");
+      if (std::find(s.norms.begin(), s.norms.end(), rule.metric) == s.norms.end())
+        b.fail("metric", "'" + rule.metric + "' is not one of the study's norms");
+      rule.above = b.number("above", "the norm value above which a case is listed");
+      b.finish();
+      s.breaks.push_back(rule);
+    }
   }
   s.keep_runs = r.boolean_or("keep_runs", false);
   const toml::node* ps = r.raw("parameter");

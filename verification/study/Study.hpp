@@ -33,7 +33,7 @@ struct Reference {
   std::vector<std::string> set;
 };
 
-/// @brief Where a case counts as "the integrator's assumptions broke" in the report.
+/// @brief Where a case counts as "the integrator's assumptions broke" in the report (any rule).
 struct BreakRule {
   std::string metric = "impulse";  ///< a comparison norm
   double above = 0.1;              ///< the norm value above which a case is listed
@@ -54,7 +54,7 @@ struct Study {
   std::uint64_t seed = 1;    ///< Latin hypercube seed
   double energy_growth = 0.05;  ///< stability bound: energy created / E0 above this is "energy"
   std::vector<std::string> norms;  ///< table columns (comparison norms)
-  BreakRule breaks;
+  std::vector<BreakRule> breaks{BreakRule{}};  ///< `breaks = [{ metric, above }, ...]`
   bool keep_runs = false;  ///< keep each run's history.csv / summary.json under DIR/runs
 
   /// @brief Reads and checks a study file. Throws SceneError (file, key, what was expected) for a

@@ -41,8 +41,11 @@ std::optional<double> metric(const Study& s, const CaseResult& c, const std::str
 
 bool broke(const Study& s, const CaseResult& c) {
   if (c.status != "ok") return c.status != "no_reference";
-  const auto v = metric(s, c, s.breaks.metric);
-  return v && *v > s.breaks.above;
+  for (const auto& rule : s.breaks) {
+    const auto v = metric(s, c, rule.metric);
+    if (v && *v > rule.above) return true;
+  }
+  return false;
 }
 
 std::optional<StudyResult> execute_study(const Study& s, const fs::path& out) {
@@ -75,9 +78,9 @@ std::optional<StudyResult> execute_study(const Study& s, const fs::path& out) {
         double secs = p.reference_seconds;
         for (const auto& c : p.cases) {
           secs += c.seconds;
-          const auto v = metric(s, c, s.breaks.metric);
-          line += fmt::format(" {} {}{}", c.method, c.status,
-                              v ? fmt::format(" {} {:.3g}", s.breaks.metric, *v) : std::string());
+          line += fmt::format(" {} {}", c.method, c.status);
+          for (const auto& rule : s.breaks)
+            if (const auto v = metric(s, c, rule.metric)) line += fmt::format(" {} {:.3g}", rule.metric, *v);
         }
         fmt::print(stderr, "[{}/{}] #{} {}:{} ({:.2f} s, rank {})\n", ++finished, n, i,
                    point_label(s, r.points[i]), line, secs, rank);
@@ -137,11 +140,19 @@ void write_study(const Study& s, const StudyResult& r, const fs::path& out, cons
                        {"broke", b}});
       if (b) {
         ++n_broken;
-        const auto v = metric(s, c, s.breaks.metric);
-        broken += fmt::format("| {} | {} | {} | {} | {} | {} |\n", i, point_label(s, pt), c.method, c.status,
-                              num(v), c.message.substr(0, 160));
+        broken += fmt::format("| {} | {} | {} | {} |", i, point_label(s, pt), c.method, c.status);
+        for (const auto& rule : s.breaks) broken += " " + num(metric(s, c, rule.metric)) + " |";
+        broken += " " + c.message.substr(0, 160) + " |\n";
       }
     }
+  }
+  nlohmann::json rules = nlohmann::json::array();
+  std::string rule_text, rule_head, rule_bar;
+  for (const auto& rule : s.breaks) {
+    rules.push_back({{"metric", rule.metric}, {"above", rule.above}});
+    rule_text += fmt::format(", or {} above {:g}", rule.metric, rule.above);
+    rule_head += " " + rule.metric + " |";
+    rule_bar += "---|";
   }
   nlohmann::json j{{"study", s.name},
                    {"description", s.description},
@@ -156,7 +167,7 @@ void write_study(const Study& s, const StudyResult& r, const fs::path& out, cons
                    {"parameters", params},
                    {"norms", s.norms},
                    {"energy_growth_bound", s.energy_growth},
-                   {"breaks", {{"metric", s.breaks.metric}, {"above", s.breaks.above}}},
+                   {"breaks", rules},
                    {"cases", cases}};
   nlohmann::json t{{"ranks", r.ranks},
                    {"points", r.points.size()},
@@ -172,9 +183,8 @@ void write_study(const Study& s, const StudyResult& r, const fs::path& out, cons
   for (const auto& [k, v] : counts) md += fmt::format("| {} | {} |\n", k, v);
   md += fmt::format(
       "\n## Where the method broke ({} case(s))\n\nStatus not ok (error: refused; diverged: the run failed; energy: "
-      "energy created above {:g} of E0), or {} above {:g}.\n\n| # | point | method | status | {} | message |\n"
-      "|---|---|---|---|---|---|\n{}",
-      n_broken, s.energy_growth, s.breaks.metric, s.breaks.above, s.breaks.metric, broken);
+      "energy created above {:g} of E0){}.\n\n| # | point | method | status |{} message |\n|---|---|---|---|{}---|\n{}",
+      n_broken, s.energy_growth, rule_text, rule_head, rule_bar, broken);
   write_file_atomic(out / "study.csv", csv);
   write_file_atomic(out / "study.json", j.dump(1) + "\n");
   write_file_atomic(out / "study.md", md);

@@ -43,7 +43,8 @@ std::optional<std::map<std::string, JobOutcome>> distributed_jobs(const std::vec
         fmt::print(stderr, "{}", line);
         std::fflush(stderr);
         out.emplace(o.spec.key(), std::move(o));
-      });
+      },
+      [&](std::size_t i) { return "run " + order[i].label(); });
   if (!root) return std::nullopt;
   return out;
 }

@@ -85,7 +85,8 @@ std::optional<StudyResult> execute_study(const Study& s, const fs::path& out) {
         fmt::print(stderr, "[{}/{}] #{} {}:{} ({:.2f} s, rank {})\n", ++finished, n, i,
                    point_label(s, r.points[i]), line, secs, rank);
         r.results[i] = std::move(p);
-      });
+      },
+      [&](std::size_t i) { return fmt::format("study point #{} ({})", i, point_label(s, r.points[i])); });
   if (!root) return std::nullopt;
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

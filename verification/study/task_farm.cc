@@ -1,5 +1,6 @@
 #include <beamimpact/study/task_farm.hpp>
 
+#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -27,9 +28,12 @@ bool g_mpi = false;
 
 // What each computing thread of this process runs now, for the crash message (written by a
 // signal handler: preformatted, async-signal-safe write only).
-char g_running[2][160];
+char g_running[2][400];
 std::atomic<int> g_slot{0};
 thread_local int t_slot = -1;
+
+constexpr int kCrashSignals[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT};
+struct sigaction g_previous[std::size(kCrashSignals)];
 
 void on_crash(int sig) {
   for (const char* m : g_running)
@@ -37,19 +41,29 @@ void on_crash(int sig) {
       const ssize_t w = ::write(2, m, std::strlen(m));
       (void)w;
     }
-  std::signal(sig, SIG_DFL);
+  // Hand the signal to whoever handled it before (a sanitizer's report, or the default action).
+  for (std::size_t i = 0; i < std::size(kCrashSignals); ++i)
+    if (kCrashSignals[i] == sig) sigaction(sig, &g_previous[i], nullptr);
   std::raise(sig);
 }
 
 void install_crash_report() {
-  for (int s : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(s, on_crash);
+  static bool installed = false;
+  if (installed) return;
+  installed = true;
+  struct sigaction sa {};
+  sa.sa_handler = on_crash;
+  sigemptyset(&sa.sa_mask);
+  for (std::size_t i = 0; i < std::size(kCrashSignals); ++i) sigaction(kCrashSignals[i], &sa, &g_previous[i]);
 }
+
+const std::function<std::string(std::size_t)>* g_label = nullptr;
 
 void mark_running(std::size_t task) {
   if (t_slot < 0) t_slot = std::min(1, g_slot++);
+  const std::string label = g_label && *g_label ? (*g_label)(task) : std::to_string(task);
   std::snprintf(g_running[t_slot], sizeof g_running[t_slot],
-                "beamimpact: rank %d ended by a signal while running task %zu (see the progress lines)\n", g_rank,
-                task);
+                "beamimpact: rank %d ended by a signal while running %s\n", g_rank, label.c_str());
 }
 
 void clear_running() {
@@ -151,7 +165,6 @@ void master(const std::vector<std::size_t>& order, const std::function<std::stri
 World::World(int& argc, char**& argv) {
   (void)argc;
   (void)argv;
-  install_crash_report();
 #ifdef BEAMIMPACT_HAVE_MPI
   if (!started_by_mpirun()) return;
   int provided = 0;
@@ -189,8 +202,11 @@ std::vector<std::size_t> longest_first(const std::vector<double>& cost) {
 }
 
 bool farm(const std::vector<double>& cost, const std::function<std::string(std::size_t)>& work,
-          const std::function<void(std::size_t, const std::string&, int)>& done) {
+          const std::function<void(std::size_t, const std::string&, int)>& done,
+          const std::function<std::string(std::size_t)>& label) {
   const std::vector<std::size_t> order = longest_first(cost);
+  install_crash_report();
+  g_label = &label;
 #ifdef BEAMIMPACT_HAVE_MPI
   if (g_size > 1) {
     if (g_rank == 0) {

@@ -37,9 +37,11 @@ class World {
 /// @param work computes task i and returns its result (called on any rank; must not throw)
 /// @param done called on rank 0, in its main thread, for each result as it arrives, with the
 ///        rank that computed it
+/// @param label names task i in the message of a rank that dies while running it
 /// @return true on rank 0 (every result was passed to done), false on the workers
 bool farm(const std::vector<double>& cost, const std::function<std::string(std::size_t)>& work,
-          const std::function<void(std::size_t, const std::string&, int)>& done);
+          const std::function<void(std::size_t, const std::string&, int)>& done,
+          const std::function<std::string(std::size_t)>& label = {});
 
 /// @brief The order farm() hands tasks out: by cost, largest first, ties by index.
 std::vector<std::size_t> longest_first(const std::vector<double>& cost);

@@ -89,11 +89,7 @@ def draw(meta, args, kind):
             cmap = mcolors.ListedColormap(COLOURS)
             mappable = ax.pcolormesh(edges(xs), edges(ys), z, cmap=cmap, vmin=-0.5, vmax=len(STATUS) - 0.5, shading="flat")
             hit = [c for c in sub if c["broke"] and c["status"] == "ok"]
-            rules = " or ".join(f"{r['metric']} > {r['above']:g}" for r in meta["breaks"])
-            ax.plot([c["parameters"][args.x] for c in hit], [c["parameters"][args.y] for c in hit], "kx", ms=4,
-                    label=rules)
-            if hit:
-                ax.legend(loc="upper right", fontsize=7)
+            ax.plot([c["parameters"][args.x] for c in hit], [c["parameters"][args.y] for c in hit], "kx", ms=4)
         ax.set_xlabel(args.x)
         ax.set_ylabel(args.y)
         ax.set_title(f"{args.facet} = {f:g}" if f is not None else meta["study"], fontsize=9)
@@ -105,8 +101,9 @@ def draw(meta, args, kind):
     else:
         cb = fig.colorbar(mappable, cax=cax, ticks=range(len(STATUS)))
         cb.ax.set_yticklabels(STATUS, fontsize=7)
+        rules = " or ".join(f"{r['metric']} > {r['above']:g}" for r in meta["breaks"])
         fig.suptitle(f"{meta['study']}: stability of {args.method} (energy: created > "
-                     f"{meta['energy_growth_bound']:g} E0)", fontsize=10)
+                     f"{meta['energy_growth_bound']:g} E0); x: ok but {rules}", fontsize=10)
     footer(fig, args, meta)
     out = f"{args.out}_{kind}.png"
     fig.savefig(out, dpi=110)

@@ -24,7 +24,9 @@ namespace beamimpact::study {
 namespace {
 
 int g_rank = 0, g_size = 1;
-bool g_mpi = false;
+#ifdef BEAMIMPACT_HAVE_MPI
+bool g_mpi = false;  // MPI_Init was called (so MPI_Finalize is due)
+#endif
 
 // What each computing thread of this process runs now, for the crash message (written by a
 // signal handler: preformatted, async-signal-safe write only).

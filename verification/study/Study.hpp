@@ -59,6 +59,7 @@ struct Study {
 
   /// @brief Reads and checks a study file. Throws SceneError (file, key, what was expected) for a
   /// missing scene, an unknown method or norm, a parameter without values, a bad design.
+  /// @param file the study file (TOML)
   static Study load(const std::filesystem::path& file);
 };
 
@@ -70,11 +71,14 @@ struct Point {
 /// @brief The points of the design: the full grid (first parameter slowest), or `samples`
 /// Latin hypercube points from the study's seed (the same on every machine: a 64-bit
 /// SplitMix generator, no library distribution).
+/// @param s the study
 std::vector<Point> design_points(const Study& s);
 
 /// @brief The --set overrides of one point: the study's fixed set, then each parameter's. The
 /// rake transform reads the scene (with the overrides before it) for the body's end, length and
 /// speed. Throws SceneError naming the study file and the parameter when it cannot apply.
+/// @param s the study
+/// @param p the point
 std::vector<std::string> overrides(const Study& s, const Point& p);
 
 }  // namespace beamimpact::study

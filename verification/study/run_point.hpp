@@ -47,10 +47,16 @@ struct PointResult {
 
 /// @brief Runs point `index` with the reference and every method; run directories go under
 /// runs_dir/INDEX.METHOD and are removed after the comparison unless the study keeps them.
+/// @param s the study
+/// @param p the point's parameter values
+/// @param index the point's index in the design (names its run directories)
+/// @param runs_dir where the run directories go
 PointResult run_point(const Study& s, const Point& p, std::size_t index, const std::filesystem::path& runs_dir);
 
 /// @brief Work estimate of a point for scheduling (longest first): steps x degrees of freedom,
 /// summed over the reference and the methods. 0 when the scene cannot be loaded.
+/// @param s the study
+/// @param p the point
 double point_cost(const Study& s, const Point& p);
 
 }  // namespace beamimpact::study

@@ -26,13 +26,20 @@ struct StudyResult {
 /// @brief Runs every point (longest first, over the MPI ranks when there are several), with one
 /// progress line per point on stderr (rank 0). Returns the results on rank 0, nullopt on the
 /// other ranks (they write nothing).
+/// @param s the study
+/// @param out the output directory (runs go to out/runs while they are compared)
 std::optional<StudyResult> execute_study(const Study& s, const std::filesystem::path& out);
 
 /// @brief True when the case counts as a breakdown of the method: not "ok", or the study's
 /// `breaks` metric above its bound.
+/// @param s the study (its rules)
+/// @param c the case
 bool broke(const Study& s, const CaseResult& c);
 
 /// @brief Writes out/study.csv, study.json, study.md, timing.csv and timing.json.
+/// @param s the study
+/// @param r its results
+/// @param out the output directory
 /// @param command how the study was started (for study.md)
 /// @param version `beamimpact --version`
 void write_study(const Study& s, const StudyResult& r, const std::filesystem::path& out,

@@ -3,7 +3,7 @@
 /// @brief Runs a whole study (every point, on every rank of the MPI job or in this process) and
 /// writes its table: study.csv and study.json (identical between runs and rank counts), the
 /// timing fields apart in timing.csv and timing.json, and study.md listing where the method
-/// broke (failed, diverged, created energy, or an error above the study's `breaks` bound).
+/// broke (failed, diverged, created energy, or a norm above one of the study's `breaks` bounds).
 
 #include <filesystem>
 #include <optional>
@@ -31,7 +31,7 @@ struct StudyResult {
 std::optional<StudyResult> execute_study(const Study& s, const std::filesystem::path& out);
 
 /// @brief True when the case counts as a breakdown of the method: not "ok", or the study's
-/// `breaks` metric above its bound.
+/// metric of one of its `breaks` rules above that rule's bound.
 /// @param s the study (its rules)
 /// @param c the case
 bool broke(const Study& s, const CaseResult& c);

@@ -27,6 +27,11 @@ bad=0
 for module in "${!folder[@]}"; do
   while IFS= read -r hit; do
     file=${hit%%:*}
+    owner=$module  # a file belongs to the module with the deepest folder holding it
+    for m in "${!folder[@]}"; do
+      [[ "$file" == "${folder[$m]}/"* && ${#folder[$m]} -gt ${#folder[$owner]} ]] && owner=$m
+    done
+    [[ "$owner" == "$module" ]] || continue
     used=$(sed -E 's|.*#include <beamimpact/([a-z_]+)/.*|\1|' <<<"$hit")
     [[ -n "${rank[$used]:-}" ]] || { echo "$file: includes unknown module '$used'"; bad=1; continue; }
     if [[ "$file" != *_test.cc && ${rank[$used]} -gt ${rank[$module]} ]]; then

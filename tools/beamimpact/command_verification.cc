@@ -11,6 +11,8 @@
 
 #include <beamimpact/api/registry.hpp>
 #include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/study/distributed_jobs.hpp>
+#include <beamimpact/study/task_farm.hpp>
 #include <beamimpact/verification/compare/compare_runs.hpp>
 #include <beamimpact/verification/matrix/VerificationMatrix.hpp>
 #include <beamimpact/verification/matrix/evaluate.hpp>
@@ -95,16 +97,22 @@ void verify(const VerifyArgs& a) {
       add(c->run);
       add(c->reference);
     }
-    for (const auto* v : ladders)
+    for (const auto* v : ladders) {
       for (const auto& s : v->runs) add(s);
+      if (v->reference) add(*v->reference);
+    }
     for (const auto* c : checks) add(c->run);
   }
   const fs::path out = a.out;
   fs::create_directories(out);
-  fmt::print(stderr,
-             "verify: {} case(s), {} convergence ladder(s), {} check(s), {} run(s), tier {}, {} job(s)\n",
-             cases.size(), ladders.size(), checks.size(), specs.size(), a.tier, a.jobs);
-  const auto runs = execute_jobs(specs, out / "runs", launcher(m.root), a.jobs, m.timeout);
+  if (study::World::rank() == 0)
+    fmt::print(stderr,
+               "verify: {} case(s), {} convergence ladder(s), {} check(s), {} run(s), tier {}, {} job(s){}\n",
+               cases.size(), ladders.size(), checks.size(), specs.size(), a.tier, a.jobs,
+               study::World::size() > 1 ? fmt::format(", {} MPI ranks", study::World::size()) : "");
+  const auto ran = study::distributed_jobs(specs, out / "runs", launcher(m.root), a.jobs, m.timeout);
+  if (!ran) return;  // an MPI worker rank: rank 0 evaluates and writes the reports
+  const auto& runs = *ran;
 
   std::vector<ItemResult> items;
   for (const auto* c : cases) items.push_back(evaluate_case(*c, runs));
@@ -153,7 +161,10 @@ void sweep(SweepArgs& a) {
   a.o.scene = a.scene;
   a.o.out = a.out;
   forward_interruptions();
-  const SweepResult r = execute_sweep(a.o, launcher(find_source_root(a.scene)));
+  a.o.executor = study::distributed_jobs;
+  const auto ran = execute_sweep(a.o, launcher(find_source_root(a.scene)));
+  if (!ran) return;  // an MPI worker rank: rank 0 compares and writes the outputs
+  const SweepResult& r = *ran;
   std::string dts, meshes;
   for (double d : a.o.fractions.empty() ? a.o.dts : a.o.fractions)
     dts += fmt::format("{}{:g}", dts.empty() ? "" : ",", d);

@@ -9,42 +9,56 @@
 #include <CLI/CLI.hpp>
 
 #include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/study/task_farm.hpp>
 #include <beamimpact/version.hpp>
 
 #include "CommandExit.hpp"
 #include "command_run.hpp"
+#include "command_study.hpp"
 #include "command_verification.hpp"
+
+namespace {
+
+/// An error on one rank of an MPI job ends every rank (the others would wait for it forever).
+int fail(int code) {
+  if (beamimpact::study::World::size() > 1) beamimpact::study::World::abort(code);
+  return code;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace beamimpact;
+  const study::World world(argc, argv);  // MPI, when started by mpirun
   CLI::App app{"beamimpact: dynamic beam-to-beam collision (Pu & Chi 2011) with independent references"};
   app.set_version_flag("--version", kVersion);
   app.require_subcommand(1);
   add_command_run(app);
   add_command_methods(app);        // methods, schema
   add_verification_commands(app);  // compare, verify, sweep
+  add_command_study(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
+    const int code = study::World::rank() == 0 ? app.exit(e) : e.get_exit_code();
+    return code == 0 ? 0 : fail(2);
   } catch (const CommandExit& e) {
     return e.code;
   } catch (const SceneError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
-    return 2;
+    return fail(2);
   } catch (const std::filesystem::filesystem_error& e) {
     // A path the file system refuses (too long, not writable, not a directory): the user's --out
     // or an input path, so bad input, named without the library's wording.
     std::fprintf(stderr, "error: %s: %s (check --out and the paths given)\n",
                  SceneError::clip(e.path1().string(), 160).c_str(), e.code().message().c_str());
-    return 2;
+    return fail(2);
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "error: out of memory: the run needs more memory than this machine has\n");
-    return 3;
+    return fail(3);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
-    return 3;
+    return fail(3);
   }
   return 0;
 }

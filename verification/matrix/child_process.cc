@@ -32,8 +32,15 @@ ProcessResult spawn_and_wait(const std::vector<std::string>& argv, const std::fi
   // Own process group, so that a time-out also ends the children (mpirun, python workers).
   posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
   posix_spawnattr_setpgroup(&attr, 0);
+  // A run started from a rank of an MPI job must not think it is one of its ranks (a FEniCSx run
+  // would join the job): the launcher's variables are left out, so it runs as its own job.
+  std::vector<char*> env;
+  for (char** e = environ; *e; ++e)
+    if (std::strncmp(*e, "OMPI_", 5) != 0 && std::strncmp(*e, "PMIX_", 5) != 0 && std::strncmp(*e, "PMI_", 4) != 0)
+      env.push_back(*e);
+  env.push_back(nullptr);
   pid_t pid = 0;
-  const int rc = posix_spawn(&pid, cargv[0], &fa, &attr, cargv.data(), environ);
+  const int rc = posix_spawn(&pid, cargv[0], &fa, &attr, cargv.data(), env.data());
   posix_spawn_file_actions_destroy(&fa);
   posix_spawnattr_destroy(&attr);
   if (rc != 0) {

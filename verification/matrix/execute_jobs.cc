@@ -14,10 +14,9 @@
 #include <beamimpact/verification/matrix/interruption.hpp>
 
 namespace beamimpact::verification {
-namespace {
 
-JobOutcome run_one(const JobSpec& spec, const std::filesystem::path& dir, const Launcher& launcher,
-                   const std::string& why, double timeout) {
+JobOutcome execute_job(const JobSpec& spec, const std::filesystem::path& dir, const Launcher& launcher,
+                       const std::string& why, double timeout) {
   JobOutcome o{spec, dir, JobOutcome::Status::kFailed, {}, 0.0, 0.0, 0, 0.0};
   if (!why.empty()) {
     o.status = JobOutcome::Status::kSkipped;
@@ -65,7 +64,24 @@ JobOutcome run_one(const JobSpec& spec, const std::filesystem::path& dir, const 
   return o;
 }
 
-}  // namespace
+std::vector<JobSpec> schedule_order(const std::vector<JobSpec>& specs) {
+  std::vector<JobSpec> order = specs;
+  auto slow = [](const JobSpec& s) {
+    const Method* m = find_method(s.method);
+    return m && m->slow;
+  };
+  std::stable_sort(order.begin(), order.end(), [&](const JobSpec& a, const JobSpec& b) {
+    const bool fa = slow(a), fb = slow(b);
+    if (fa != fb) return fa;
+    return a.dt.value_or(1e300) < b.dt.value_or(1e300);
+  });
+  return order;
+}
+
+std::string progress_line(std::size_t done, std::size_t total, const JobOutcome& o) {
+  return fmt::format("[{}/{}] {}: {}{} ({:.2f} s)\n", done, total, o.spec.label(), status_name(o.status),
+                     o.message.empty() ? "" : ": " + o.message, o.process_seconds);
+}
 
 const char* status_name(JobOutcome::Status s) {
   switch (s) {
@@ -79,18 +95,7 @@ const char* status_name(JobOutcome::Status s) {
 std::map<std::string, JobOutcome> execute_jobs(const std::vector<JobSpec>& specs,
                                                const std::filesystem::path& out_dir, const Launcher& launcher,
                                                int jobs, double timeout_seconds) {
-  // Likely-slow runs first (methods the registry marks slow, then small steps) so that the tail
-  // of the queue is short.
-  std::vector<JobSpec> order = specs;
-  auto slow = [](const JobSpec& s) {
-    const Method* m = find_method(s.method);
-    return m && m->slow;
-  };
-  std::stable_sort(order.begin(), order.end(), [&](const JobSpec& a, const JobSpec& b) {
-    const bool fa = slow(a), fb = slow(b);
-    if (fa != fb) return fa;
-    return a.dt.value_or(1e300) < b.dt.value_or(1e300);
-  });
+  const std::vector<JobSpec> order = schedule_order(specs);
   // Availability is checked up front, in this thread (the FEniCSx check starts Python once).
   std::vector<std::string> why;
   for (const auto& s : order) why.push_back(launcher.unavailable(s));
@@ -101,11 +106,9 @@ std::map<std::string, JobOutcome> execute_jobs(const std::vector<JobSpec>& specs
   auto worker = [&] {
     for (std::size_t i = next++; i < order.size(); i = next++) {
       const std::string skip = interruption() ? "not started: interrupted" : why[i];
-      JobOutcome o = run_one(order[i], out_dir / order[i].key(), launcher, skip, timeout_seconds);
+      JobOutcome o = execute_job(order[i], out_dir / order[i].key(), launcher, skip, timeout_seconds);
       std::lock_guard lock(mu);
-      ++done;
-      fmt::print(stderr, "[{}/{}] {}: {}{} ({:.2f} s)\n", done, order.size(), o.spec.label(),
-                 status_name(o.status), o.message.empty() ? "" : ": " + o.message, o.process_seconds);
+      fmt::print(stderr, "{}", progress_line(++done, order.size(), o));
       std::fflush(stderr);
       out.emplace(o.spec.key(), std::move(o));
     }

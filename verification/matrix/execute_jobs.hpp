@@ -4,7 +4,9 @@
 /// with one progress line per finished run on stderr.
 
 #include <filesystem>
+#include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,5 +36,23 @@ const char* status_name(JobOutcome::Status s);
 std::map<std::string, JobOutcome> execute_jobs(const std::vector<JobSpec>& specs,
                                                const std::filesystem::path& out_dir, const Launcher& launcher,
                                                int jobs, double timeout_seconds);
+
+/// @brief Where a set of runs is executed: execute_jobs (threads of this process) or spread over
+/// MPI ranks (study/distributed_jobs.hpp). Same arguments as execute_jobs; returns nullopt on a
+/// rank that is not rank 0 of an MPI job (its outcomes went to rank 0, which writes the outputs).
+using JobExecutor = std::function<std::optional<std::map<std::string, JobOutcome>>(
+    const std::vector<JobSpec>&, const std::filesystem::path&, const Launcher&, int, double)>;
+
+/// @brief The order runs are started in: methods the registry marks slow first, then small
+/// steps, so that the tail of the queue is short.
+std::vector<JobSpec> schedule_order(const std::vector<JobSpec>& specs);
+
+/// @brief Runs one spec into dir (emptied first) as its own process and reads its summary.json.
+/// @param why_not non-empty: the run is skipped with this reason (unavailable method, interrupted)
+JobOutcome execute_job(const JobSpec& spec, const std::filesystem::path& dir, const Launcher& launcher,
+                       const std::string& why_not, double timeout_seconds);
+
+/// @brief The progress line of a finished run ("[3/10] s1_central paper dt=0.01: ok (0.21 s)").
+std::string progress_line(std::size_t done, std::size_t total, const JobOutcome& o);
 
 }  // namespace beamimpact::verification

@@ -30,7 +30,7 @@ const std::vector<std::string>& sweep_norms() {
   return n;
 }
 
-SweepResult execute_sweep(const SweepOptions& o, const Launcher& launcher) {
+std::optional<SweepResult> execute_sweep(const SweepOptions& o, const Launcher& launcher) {
   const bool by_fraction = !o.fractions.empty();
   const std::string key = by_fraction ? "--fraction" : "--dt";
   const auto& steps = by_fraction ? o.fractions : o.dts;
@@ -81,7 +81,10 @@ SweepResult execute_sweep(const SweepOptions& o, const Launcher& launcher) {
   if (ref) all.push_back(*ref);
   // Bad input (a mesh multiplier of 0, an unknown reference method) is refused before any run.
   for (const JobSpec& s : all) (void)launcher.argv(s, o.out);
-  const auto outcomes = execute_jobs(all, o.out / "runs", launcher, o.jobs, o.timeout);
+  const auto ran = o.executor ? o.executor(all, o.out / "runs", launcher, o.jobs, o.timeout)
+                              : execute_jobs(all, o.out / "runs", launcher, o.jobs, o.timeout);
+  if (!ran) return std::nullopt;
+  const auto& outcomes = *ran;
   if (ref) {
     const JobOutcome& ro = outcomes.at(ref->key());
     if (ro.status != JobOutcome::Status::kOk)

@@ -23,6 +23,7 @@ struct SweepOptions {
   std::filesystem::path out;
   int jobs = 1;
   double timeout = 3600.0;  ///< s per run
+  JobExecutor executor;     ///< where the runs go (empty: execute_jobs, threads of this process)
 };
 
 /// @brief One point of the sweep.
@@ -40,7 +41,8 @@ struct SweepResult {
 
 /// @brief Runs the sweep (runs in parallel) and compares each point with the reference.
 /// Throws SceneError for bad options and std::runtime_error when the reference run fails.
-SweepResult execute_sweep(const SweepOptions& o, const Launcher& launcher);
+/// Returns nullopt on an MPI rank other than 0 (see JobExecutor).
+std::optional<SweepResult> execute_sweep(const SweepOptions& o, const Launcher& launcher);
 
 /// @brief Writes out/sweep.md, sweep.csv and sweep.json; `header` says how it was made.
 void write_sweep(const SweepOptions& o, const SweepResult& r, const std::string& header);

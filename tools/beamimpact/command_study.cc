@@ -1,0 +1,54 @@
+#include "command_study.hpp"
+
+#include <filesystem>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include <beamimpact/study/run_study.hpp>
+#include <beamimpact/study/task_farm.hpp>
+#include <beamimpact/version.hpp>
+
+namespace beamimpact {
+namespace {
+
+struct StudyArgs {
+  std::string file, out;
+  bool keep_runs = false;
+};
+
+void study_command(const StudyArgs& a) {
+  study::Study s = study::Study::load(a.file);
+  s.keep_runs = s.keep_runs || a.keep_runs;
+  const auto r = study::execute_study(s, a.out);
+  if (!r) return;  // an MPI worker rank: rank 0 writes the table
+  const std::string command =
+      fmt::format("beamimpact study {} --out {}{}", a.file, a.out, a.keep_runs ? " --keep-runs" : "");
+  study::write_study(s, *r, a.out, command, kVersion);
+  std::size_t cases = 0, broke = 0;
+  for (const auto& p : r->results)
+    for (const auto& c : p.cases) {
+      ++cases;
+      broke += study::broke(s, c);
+    }
+  const auto out = std::filesystem::path(a.out);
+  fmt::print("study {}: {} case(s) in {:.1f} s on {} rank(s) ({:.2f} cases/s), {} where the method broke\n", s.name,
+             cases, r->wall_seconds, r->ranks, static_cast<double>(cases) / std::max(r->wall_seconds, 1e-9), broke);
+  fmt::print("table: {} {}\nreport: {}\ntiming: {}\n", (out / "study.csv").string(), (out / "study.json").string(),
+             (out / "study.md").string(), (out / "timing.json").string());
+}
+
+}  // namespace
+
+void add_command_study(CLI::App& app) {
+  auto a = std::make_shared<StudyArgs>();
+  CLI::App* c = app.add_subcommand(
+      "study", "Parameter study: a scene over a grid or Latin hypercube of parameters, each point compared with its "
+               "reference (mpirun -n N spreads the points over N ranks)");
+  c->add_option("STUDY", a->file, "Study file (TOML, verification/studies/)")->required();
+  c->add_option("--out", a->out, "Output directory (study.csv, study.json, study.md, timing.*)")->required();
+  c->add_flag("--keep-runs", a->keep_runs, "Keep every run's history.csv and summary.json under OUT/runs");
+  c->callback([a] { study_command(*a); });
+}
+
+}  // namespace beamimpact

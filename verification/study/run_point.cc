@@ -1,0 +1,161 @@
+#include <beamimpact/study/run_point.hpp>
+
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include <beamimpact/api/registry.hpp>
+#include <beamimpact/api/run.hpp>
+#include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/scene/run_cost.hpp>
+#include <beamimpact/scene/scene_io.hpp>
+#include <beamimpact/verification/compare/compare_runs.hpp>
+#include <beamimpact/verification/compare/run_checks.hpp>
+
+namespace beamimpact::study {
+namespace {
+
+namespace fs = std::filesystem;
+using verification::StoredRun;
+
+/// Runs one method into dir; the stored run when it finished, else status and message set.
+std::optional<StoredRun> run_one(const Study& s, const std::vector<std::string>& set, const std::string& method,
+                                 const fs::path& dir, CaseResult& c) {
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<StoredRun> out;
+  try {
+    const Scene scene = load_scene(s.scene, set);
+    fs::create_directories(dir);
+    const SimulationResult r = beamimpact::run(scene, method, RunOptions{{}, dir});
+    c.steps = r.steps;
+    c.dt = r.dt;
+    out = StoredRun::read(dir);
+    c.status = "ok";
+  } catch (const SceneError& e) {
+    c.status = "error";
+    c.message = e.what();
+  } catch (const std::exception& e) {
+    c.status = "diverged";
+    c.message = e.what();
+  }
+  c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+nlohmann::json opt(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+std::optional<double> opt(const nlohmann::json& j) {
+  return j.is_null() ? std::nullopt : std::optional<double>(j.get<double>());
+}
+
+}  // namespace
+
+PointResult run_point(const Study& s, const Point& p, std::size_t index, const fs::path& runs_dir) {
+  PointResult pr;
+  pr.index = index;
+  std::vector<std::string> set;
+  try {
+    set = overrides(s, p);
+  } catch (const std::exception& e) {
+    pr.reference_message = e.what();
+    for (const auto& m : s.methods) pr.cases.push_back(CaseResult{m, "error", e.what(), 0, 0.0, {}, {}, 0.0});
+    return pr;
+  }
+  std::vector<std::string> ref_set = set;
+  ref_set.insert(ref_set.end(), s.reference.set.begin(), s.reference.set.end());
+  const fs::path ref_dir = runs_dir / fmt::format("{}.reference", index);
+  CaseResult ref;
+  const std::optional<StoredRun> reference = run_one(s, ref_set, s.reference.method, ref_dir, ref);
+  pr.reference_status = ref.status;
+  pr.reference_message = ref.message;
+  pr.reference_seconds = ref.seconds;
+  for (const auto& m : s.methods) {
+    CaseResult c;
+    c.method = m;
+    const fs::path dir = runs_dir / fmt::format("{}.{}", index, m);
+    const std::optional<StoredRun> run = run_one(s, set, m, dir, c);
+    c.norms.assign(s.norms.size(), std::nullopt);
+    if (run) {
+      const verification::Comparison health = verification::check_run(*run);
+      if (const auto* g = health.find("energy_growth")) c.energy_growth = g->value;
+      if (c.energy_growth && *c.energy_growth > s.energy_growth) {
+        c.status = "energy";
+        c.message = fmt::format("energy created {:.3g} of E0 > bound {:g}", *c.energy_growth, s.energy_growth);
+      }
+      if (reference) {
+        try {
+          const verification::Comparison cmp = verification::compare_runs(*run, *reference);
+          for (std::size_t k = 0; k < s.norms.size(); ++k)
+            if (const auto* n = cmp.find(s.norms[k])) c.norms[k] = n->value;
+        } catch (const std::exception& e) {
+          c.message += (c.message.empty() ? "" : "; ") + std::string("comparison failed: ") + e.what();
+        }
+      } else if (c.status == "ok") {
+        c.status = "no_reference";
+        c.message = "reference " + ref.status + ": " + ref.message;
+      }
+    }
+    if (!s.keep_runs) fs::remove_all(dir);
+    pr.cases.push_back(std::move(c));
+  }
+  if (!s.keep_runs) fs::remove_all(ref_dir);
+  return pr;
+}
+
+double point_cost(const Study& s, const Point& p) {
+  auto cost = [&](const std::vector<std::string>& set) {
+    const Scene sc = load_scene(s.scene, set);
+    double dofs = 0.0;
+    for (const auto& b : sc.bodies) dofs += 3.0 * b.nodes();
+    const double dt = sc.time.dt ? *sc.time.dt : estimate_auto_dt(sc);
+    return std::ceil(sc.time.end / dt) * dofs;
+  };
+  try {
+    std::vector<std::string> set = overrides(s, p);
+    double c = static_cast<double>(s.methods.size()) * cost(set);
+    set.insert(set.end(), s.reference.set.begin(), s.reference.set.end());
+    return c + cost(set);
+  } catch (const std::exception&) {
+    return 0.0;
+  }
+}
+
+nlohmann::json PointResult::to_json() const {
+  nlohmann::json cs = nlohmann::json::array();
+  for (const auto& c : cases) {
+    nlohmann::json n = nlohmann::json::array();
+    for (const auto& v : c.norms) n.push_back(opt(v));
+    cs.push_back({{"method", c.method}, {"status", c.status}, {"message", c.message}, {"steps", c.steps},
+                  {"dt", c.dt}, {"norms", n}, {"energy_growth", opt(c.energy_growth)}, {"seconds", c.seconds}});
+  }
+  return {{"index", index},
+          {"reference_status", reference_status},
+          {"reference_message", reference_message},
+          {"reference_seconds", reference_seconds},
+          {"rank", rank},
+          {"cases", cs}};
+}
+
+PointResult PointResult::from_json(const nlohmann::json& j) {
+  PointResult p;
+  p.index = j.at("index").get<std::size_t>();
+  p.reference_status = j.at("reference_status").get<std::string>();
+  p.reference_message = j.at("reference_message").get<std::string>();
+  p.reference_seconds = j.at("reference_seconds").get<double>();
+  p.rank = j.at("rank").get<int>();
+  for (const auto& c : j.at("cases")) {
+    CaseResult r;
+    r.method = c.at("method").get<std::string>();
+    r.status = c.at("status").get<std::string>();
+    r.message = c.at("message").get<std::string>();
+    r.steps = c.at("steps").get<long>();
+    r.dt = c.at("dt").get<double>();
+    for (const auto& v : c.at("norms")) r.norms.push_back(opt(v));
+    r.energy_growth = opt(c.at("energy_growth"));
+    r.seconds = c.at("seconds").get<double>();
+    p.cases.push_back(std::move(r));
+  }
+  return p;
+}
+
+}  // namespace beamimpact::study

@@ -1,0 +1,62 @@
+#pragma once
+/// @file run_point.hpp
+/// @brief One point of a study, run in-process: the reference once, then every method, each
+/// compared with the reference through verification/compare and checked for stability (energy
+/// created, divergence). A run that throws is recorded in the result, never thrown on.
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include <beamimpact/study/Study.hpp>
+
+namespace beamimpact::study {
+
+/// @brief One method at one point.
+struct CaseResult {
+  std::string method;
+  /// @brief "ok"; "energy": energy created above the study's bound; "diverged": the run failed
+  /// (non-finite state, solver failure); "error": the point's scene was refused (bad input, dt
+  /// above the stability limit); "no_reference": ok but the reference run failed.
+  std::string status = "error";
+  std::string message;
+  long steps = 0;
+  double dt = 0.0;                                 ///< s, the step used
+  std::vector<std::optional<double>> norms;        ///< Study::norms order; empty values: n/a
+  std::optional<double> energy_growth;             ///< check_run's energy_growth
+  double seconds = 0.0;                            ///< s, wall time of this run (timing field)
+};
+
+/// @brief Everything one point produced.
+struct PointResult {
+  std::size_t index = 0;
+  std::string reference_status = "error", reference_message;
+  double reference_seconds = 0.0;  ///< s (timing field)
+  std::vector<CaseResult> cases;   ///< one per Study::methods
+  int rank = 0;                    ///< the MPI rank that ran it (timing field)
+
+  /// @brief Lossless JSON (doubles round-trip), for sending between ranks.
+  nlohmann::json to_json() const;
+  /// @brief The inverse of to_json().
+  static PointResult from_json(const nlohmann::json& j);
+};
+
+/// @brief Runs point `index` with the reference and every method; run directories go under
+/// runs_dir/INDEX.METHOD and are removed after the comparison unless the study keeps them.
+/// @param s the study
+/// @param p the point's parameter values
+/// @param index the point's index in the design (names its run directories)
+/// @param runs_dir where the run directories go
+PointResult run_point(const Study& s, const Point& p, std::size_t index, const std::filesystem::path& runs_dir);
+
+/// @brief Work estimate of a point for scheduling (longest first): steps x degrees of freedom,
+/// summed over the reference and the methods. 0 when the scene cannot be loaded.
+/// @param s the study
+/// @param p the point
+double point_cost(const Study& s, const Point& p);
+
+}  // namespace beamimpact::study

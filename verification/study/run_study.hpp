@@ -1,0 +1,48 @@
+#pragma once
+/// @file run_study.hpp
+/// @brief Runs a whole study (every point, on every rank of the MPI job or in this process) and
+/// writes its table: study.csv and study.json (identical between runs and rank counts), the
+/// timing fields apart in timing.csv and timing.json, and study.md listing where the method
+/// broke (failed, diverged, created energy, or a norm above one of the study's `breaks` bounds).
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <beamimpact/study/Study.hpp>
+#include <beamimpact/study/run_point.hpp>
+
+namespace beamimpact::study {
+
+/// @brief The results of a study, in design order.
+struct StudyResult {
+  std::vector<Point> points;
+  std::vector<PointResult> results;  ///< results[i] belongs to points[i]
+  double wall_seconds = 0.0;         ///< s, the whole study (timing field)
+  int ranks = 1;
+};
+
+/// @brief Runs every point (longest first, over the MPI ranks when there are several), with one
+/// progress line per point on stderr (rank 0). Returns the results on rank 0, nullopt on the
+/// other ranks (they write nothing).
+/// @param s the study
+/// @param out the output directory (runs go to out/runs while they are compared)
+std::optional<StudyResult> execute_study(const Study& s, const std::filesystem::path& out);
+
+/// @brief True when the case counts as a breakdown of the method: not "ok", or the study's
+/// metric of one of its `breaks` rules above that rule's bound.
+/// @param s the study (its rules)
+/// @param c the case
+bool broke(const Study& s, const CaseResult& c);
+
+/// @brief Writes out/study.csv, study.json, study.md, timing.csv and timing.json.
+/// @param s the study
+/// @param r its results
+/// @param out the output directory
+/// @param command how the study was started (for study.md)
+/// @param version `beamimpact --version`
+void write_study(const Study& s, const StudyResult& r, const std::filesystem::path& out,
+                 const std::string& command, const std::string& version);
+
+}  // namespace beamimpact::study

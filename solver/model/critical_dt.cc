@@ -77,8 +77,9 @@ double subdomain_bound(const Model& model, int max_elements) {
   const std::vector<Model::Element>& els = model.elements();
   const int nel = static_cast<int>(els.size()), ne = 2 * model.dofs_per_node();
   double lam = 0.0, lam_last = 0.0;
-  Eigen::MatrixXd Kc, Mc, K_last, M_last;
+  Eigen::MatrixXd Kc, Mc;
   std::vector<int> eqs;
+  std::vector<double> key, key_last;
   for (int e = 0; e < nel;) {
     if (els[e].rigid) {  // a rigid body has no element stiffness
       ++e;
@@ -86,12 +87,26 @@ double subdomain_bound(const Model& model, int max_elements) {
     }
     int f = e;  // the subdomain: elements [e, f) of one elastic body
     while (f < nel && f - e < max_elements && els[f].body == els[e].body && !els[f].rigid) ++f;
+    // The run's key: each element's section, geometry and equation pattern relative to the
+    // run's first equation. An equal key gives equal matrices: reuse the last eigenvalue.
+    key.clear();
     eqs.clear();
+    const int first = model.element_equations(e).maxCoeff();
     for (int k = e; k < f; ++k) {
+      const Model::Element& el = els[k];
+      key.insert(key.end(), {el.E, el.area, el.inertia, el.rho, el.length, el.c, el.s});
       const Eigen::Matrix<int, 6, 1> eq = model.element_equations(k);
-      for (int i = 0; i < ne; ++i)
+      for (int i = 0; i < ne; ++i) {
+        key.push_back(eq(i) >= 0 ? eq(i) - first : -1e9);
         if (eq(i) >= 0) eqs.push_back(eq(i));
+      }
     }
+    if (key == key_last) {
+      lam = std::max(lam, lam_last);
+      e = f;
+      continue;
+    }
+    key_last = key;
     std::sort(eqs.begin(), eqs.end());
     eqs.erase(std::unique(eqs.begin(), eqs.end()), eqs.end());
     const int d = static_cast<int>(eqs.size());
@@ -114,15 +129,10 @@ double subdomain_bound(const Model& model, int max_elements) {
         }
       }
     }
-    if (d == 0) {
-      e = f;
-      continue;
-    }
-    if (Kc.rows() != K_last.rows() || Kc != K_last || Mc != M_last) {  // uniform bodies: one solve
+    lam_last = 0.0;  // no free DOF: nothing moves
+    if (d > 0) {
       Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(Kc, Mc, Eigen::EigenvaluesOnly);
       lam_last = es.info() == Eigen::Success ? es.eigenvalues().maxCoeff() : std::numeric_limits<double>::infinity();
-      K_last = Kc;
-      M_last = Mc;
     }
     lam = std::max(lam, lam_last);
     e = f;

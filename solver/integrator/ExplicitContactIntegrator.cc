@@ -107,17 +107,18 @@ void ExplicitContactIntegrator::solve_contacts() {
   apply_Minv(work2_, work_);
   Ubar_.noalias() = U_ + dt_ * Vbar_ + (0.5 * dt_ * dt_) * work_;
 
-  V_ = Vbar_;
   resolve_contacts();
 }
 
 void ExplicitContactIntegrator::resolve_contacts() {
   solver_.solve(Ubar_, U_);
+  v_is_vbar_ = true;  // V^p = Vbar^p unless a contact force acts
   if (solver_.any_force()) {
     fc_.setZero();
     solver_.add_forces(fc_);
     apply_Minv(fc_, work_);
-    V_.noalias() += (0.5 * dt_) * work_;
+    V_.noalias() = Vbar_ + (0.5 * dt_) * work_;
+    v_is_vbar_ = false;
     // Contact work of step p: f_c . (U^{p+1} - U^{p-1}) / 2 with this step's rows, i.e.
     // R (g_{p+1} - g_{p-1})/2 + tau (s_{p+1} - s_{p-1})/2. It is the exact change of the discrete
     // energy 1/2 v_{p+1/2} M v_{p+1/2} + 1/2 u_p K u_{p+1} (linear kinematics).
@@ -185,20 +186,18 @@ void ExplicitContactIntegrator::advance_fused() {
   }
   fint_.apply(U_next_, fint_next_);
   // One sweep: Vbar^{p+1} = Vbar^p + inv (-dt/2 (f(U^{p+1}) + f(U^p)) + dt f_c), then the next
-  // step's prediction Ubar = U^{p+1} + dt Vbar^{p+1} + dt^2/2 inv (-f(U^{p+1})) and V = Vbar.
+  // step's prediction Ubar = U^{p+1} + dt Vbar^{p+1} + dt^2/2 inv (-f(U^{p+1})).
   const double* un = U_next_.data();
   const double* fn = fint_next_.data();
   const double* fu = fint_U_.data();
   const double* fc = fc_.data();
   double* vb = Vbar_.data();
-  double* v = V_.data();
   double* ub = Ubar_.data();
   for (int i = 0; i < n; ++i) {
     double w2 = m_half_dt * (fn[i] + fu[i]);
     if (force) w2 += dt * fc[i];
     const double vbar = vb[i] + inv[i] * w2;
     vb[i] = vbar;
-    v[i] = vbar;
     ub[i] = (un[i] + dt * vbar) + half_dt2 * (inv[i] * -fn[i]);
   }
   std::swap(U_prev_, U_);
@@ -208,8 +207,9 @@ void ExplicitContactIntegrator::advance_fused() {
 }
 
 double ExplicitContactIntegrator::kinetic_energy() const {
-  if (model_.lumped()) return 0.5 * V_.dot(model_.lumped_mass().cwiseProduct(V_));
-  return 0.5 * V_.dot(mass() * V_);
+  const Eigen::VectorXd& v = V();
+  if (model_.lumped()) return 0.5 * v.dot(model_.lumped_mass().cwiseProduct(v));
+  return 0.5 * v.dot(mass() * v);
 }
 
 }  // namespace beamimpact::paper

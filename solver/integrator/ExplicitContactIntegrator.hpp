@@ -59,7 +59,7 @@ class ExplicitContactIntegrator {
   double dt() const { return dt_; }
   /// @brief U^p and physical V^p.
   const Eigen::VectorXd& U() const { return U_; }
-  const Eigen::VectorXd& V() const { return V_; }
+  const Eigen::VectorXd& V() const { return v_is_vbar_ ? Vbar_ : V_; }
   /// @brief Half-step velocity Vbar^p (for the discrete energy identity).
   const Eigen::VectorXd& Vbar() const { return Vbar_; }
   /// @brief Forces of the last solve, per contact.
@@ -73,7 +73,7 @@ class ExplicitContactIntegrator {
   double strain_energy() const { return fint_.strain_energy(U_); }
   /// @brief Linear momentum of body b along global axis c (0 = x, 1 = y) at step p (N s).
   double momentum(int b, int c) const {
-    return cmass_ ? cmass_->momentum(b, c, V_) : model_.momentum_covector(b, c).dot(V_);
+    return cmass_ ? cmass_->momentum(b, c, V()) : model_.momentum_covector(b, c).dot(V());
   }
   /// @brief The current mass: the model's, or M_A(t) when a rotating body has consistent mass.
   const SparseMatrix& mass() const { return cmass_ ? cmass_->M() : model_.M(); }
@@ -112,6 +112,7 @@ class ExplicitContactIntegrator {
   Eigen::VectorXd U_prev_, U_, U_next_,  // U^{p-1}, U^p, U^{p+1} (rotated by swaps)
       Vbar_, V_, fint_U_, fint_next_, Ubar_, fc_, work_, work2_, du_, scratch_, hwork_, c_du_;
   double dissipated_ = 0.0;
+  bool v_is_vbar_ = true;  ///< no contact force this step: V^p is Vbar^p (no copy)
 };
 
 }  // namespace beamimpact::paper

@@ -25,9 +25,13 @@ enum class CriticalBound {
   kNone,             ///< no stiffness (rigid bodies only): no stability limit
   kElement,    ///< the element bound (proven)
   kSubdomain,  ///< the subdomain bound (proven, runs of consecutive elements)
+  /// small models: the converged Lanczos Ritz value (a lower bound), used because the proven
+  /// bound is within kConfirmTol of it; the step exceeds the proven-safe one by at most
+  /// kConfirmTol/2 relative and keeps the last bit of earlier versions
+  kLanczosConfirmed,
 };
 
-/// @brief "none" | "element" | "subdomain" (summary.json critical_step.bound).
+/// @brief "none" | "element" | "subdomain" | "lanczos_confirmed" (summary.json critical_step.bound).
 const char* to_string(CriticalBound b);
 
 /// @brief Largest eigenvalue of M^-1 K estimated by Lanczos.
@@ -59,6 +63,12 @@ inline constexpr int kLanczosMaxIterations = 24;
 /// @brief Elements per subdomain of the subdomain bound (frame: a dense eigen-solve of up to 99
 /// DOFs; covers every body of the paper's scenes whole).
 inline constexpr int kSubdomainElements = 32;
+
+/// @brief Models of at most this many DOFs also run the converged Lanczos (dense T_k solves).
+inline constexpr int kConfirmDofs = 128;
+/// @brief Relative gap on omega^2 between the proven bound and the Ritz value within which the
+/// Ritz value sets the step (kLanczosConfirmed).
+inline constexpr double kConfirmTol = 2e-9;
 
 /// @brief Computes the critical step of `model` from the smaller of the element and subdomain
 /// bounds, and the Lanczos lower estimate (M-inner product, no reorthogonalisation: extreme

@@ -49,7 +49,8 @@ nlohmann::json critical_step_json(const CriticalStep& cs, double dt) {
     return {{k::kMethod, "none: no stiffness (rigid bodies only), no stability limit"},
             {k::kBound, to_string(cs.bound)}};
   return {{k::kMethod, "proven upper bound of omega_max: min of the element bound and the subdomain "
-                       "bound (runs of consecutive elements); Lanczos (M-inner product) gives the "
+                       "bound (runs of consecutive elements), or for small models the converged Lanczos "
+                       "Ritz value when that bound confirms it; Lanczos (M-inner product) gives the "
                        "lower bound ritz_omega"},
           {k::kBound, to_string(cs.bound)},
           {k::kOmegaMax, cs.omega_max},

@@ -1,12 +1,14 @@
 #!/usr/bin/env python3
 """Largest change of any verification norm between two `beamimpact verify` outputs.
 
-Usage: compare_norms.py BEFORE/norms.json AFTER/norms.json
+Usage: compare_norms.py BEFORE/norms.json AFTER/norms.json [--values]
+--values: only the norm values (comparisons[].norms[].value), not gates, orders or estimates.
 Walks both JSON trees item by item (every number except timings) and reports the largest
 absolute and relative change overall, with its path, and each item whose numbers moved or whose
 shape differs (a norm present on one side only).
 """
 import json
+import re
 import sys
 
 
@@ -24,15 +26,19 @@ def leaves(node, path=""):
 
 
 def main():
-    if len(sys.argv) != 3:
-        sys.exit("usage: compare_norms.py BEFORE/norms.json AFTER/norms.json")
-    before, after = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+    args = [a for a in sys.argv[1:] if a != "--values"]
+    values_only = "--values" in sys.argv[1:]
+    if len(args) != 2:
+        sys.exit("usage: compare_norms.py BEFORE/norms.json AFTER/norms.json [--values]")
+    before, after = json.load(open(args[0])), json.load(open(args[1]))
     worst = (0.0, 0.0, "", 0.0, 0.0)  # relative, absolute, path, before, after
     count = changed = 0
     for i, (x, y) in enumerate(zip(before["items"], after["items"])):
         a, b = dict(leaves(x)), dict(leaves(y))
         item = (0.0, "")
         for k in a.keys() & b.keys():
+            if values_only and not re.search(r"/norms\[\d+\]/value$", k):
+                continue
             count += 1
             d = abs(a[k] - b[k])
             r = d / max(abs(a[k]), abs(b[k]), 1e-300)
@@ -40,7 +46,7 @@ def main():
             item = max(item, (r, k))
             if r > worst[0]:
                 worst = (r, d, f"items[{i}]{k}", a[k], b[k])
-        if item[0] > 0 or a.keys() != b.keys():
+        if item[0] > 0 or (a.keys() != b.keys() and not values_only):
             print(f"items[{i}] {x.get('name', '')}: largest relative change {item[0]:.3g} at {item[1]}"
                   + ("; shape differs" if a.keys() != b.keys() else ""))
     print(f"{count} numbers compared, {changed} changed; largest relative change {worst[0]:.3g} "

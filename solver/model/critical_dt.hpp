@@ -59,7 +59,7 @@ struct CriticalStep {
 };
 
 /// @brief Lanczos iterations at most (each costs about one time step of the run).
-inline constexpr int kLanczosMaxIterations = 24;
+inline constexpr int kLanczosMaxIterations = 16;
 /// @brief Elements per subdomain of the subdomain bound (frame: a dense eigen-solve of up to 99
 /// DOFs; covers every body of the paper's scenes whole).
 inline constexpr int kSubdomainElements = 32;

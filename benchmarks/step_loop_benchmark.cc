@@ -24,7 +24,9 @@ namespace {
 using namespace beamimpact;
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
 
 /// Seconds per call of f, best of `rounds` rounds of at least min_seconds each.
 template <class F>
@@ -48,18 +50,21 @@ double per_call(F&& f, int rounds = 3, double min_seconds = 0.2) {
 
 int main(int argc, char** argv) {
   const double max_dofs = argc > 1 ? std::atof(argv[1]) : 1e6;
-  std::printf("step_loop_benchmark, beamimpact %s; scene s2_transverse refined (lumped frame, one "
-              "contact), kernel: StepKernel frame chain\n\n",
-              kVersion);
-  std::printf("| DOFs | kernel ns/DOF-step | integrator ns/DOF-step | ratio | set-up (s) | set-up (steps) |\n");
+  std::printf(
+      "step_loop_benchmark, beamimpact %s; scene s2_transverse refined (lumped frame, one "
+      "contact), kernel: StepKernel frame chain\n\n",
+      kVersion);
+  std::printf(
+      "| DOFs | kernel ns/DOF-step | integrator ns/DOF-step | ratio | set-up (s) | set-up (steps) |\n");
   std::printf("|---:|---:|---:|---:|---:|---:|\n");
   for (double target = 1e2; target <= max_dofs * 1.0001; target *= 10) {
     // Two bodies of n elements each: about 6 n DOFs.
     const int n = std::max(2, static_cast<int>(target / 6));
     const Clock::time_point t0 = Clock::now();
-    const Scene s = load_scene(std::string(BEAMIMPACT_SOURCE_DIR) + "/verification/scenes/paper/s2_transverse.toml",
-                               {"bodies.A.elements=" + std::to_string(n), "bodies.B.elements=" + std::to_string(n),
-                                "time.dt=\"auto\""});
+    const Scene s =
+        load_scene(std::string(BEAMIMPACT_SOURCE_DIR) + "/verification/scenes/paper/s2_transverse.toml",
+                   {"bodies.A.elements=" + std::to_string(n), "bodies.B.elements=" + std::to_string(n),
+                    "time.dt=\"auto\""});
     const Effects fx = derive_effects(s);
     const Model m(s, fx.bending);
     const double dt = 0.5 * critical_step(m).dt;

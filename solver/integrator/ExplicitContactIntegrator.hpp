@@ -105,7 +105,7 @@ class ExplicitContactIntegrator {
   MassSolver minv_;
   InternalForce fint_;
   std::unique_ptr<CorotationalMass> cmass_;  ///< only for consistent mass with rotating bodies
-  ContactPairs search_;  ///< the contact pairs and the scene contact of each
+  ContactPairs search_;                      ///< the contact pairs and the scene contact of each
   std::unique_ptr<SearchBoxes> boxes_;
   ContactSolver solver_;
   long p_ = 0;

@@ -25,8 +25,9 @@ TEST(InternalForce, ElementBlocksGiveTheAssembledProduct) {
   // The element-by-element product against Eigen's sparse K U on scenes with supports (S2's pin
   // and roller), rods (S1) and inclined frames: the same sums in another order, so equal to
   // roundoff (1e-13 of the largest term's size).
-  for (const Model& m : {Model(load_scene(testing::paper_scene("s2_transverse")), true),
-                         Model(load_scene(testing::paper_scene("s1_central")), false), Model(inclined(1.0472), true)}) {
+  for (const Model& m :
+       {Model(load_scene(testing::paper_scene("s2_transverse")), true),
+        Model(load_scene(testing::paper_scene("s1_central")), false), Model(inclined(1.0472), true)}) {
     const InternalForce f(m, std::vector<bool>(2, false));
     EXPECT_TRUE(f.element_blocks());  // else apply() is K U itself and this compares nothing
     Eigen::VectorXd U(m.size()), out(m.size());

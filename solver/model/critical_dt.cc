@@ -118,7 +118,8 @@ double element_bound(const Model& model) {
     if (Ke.size() != K_last.size() || Ke != K_last || Me != M_last) {
       Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(Ke, Me, Eigen::EigenvaluesOnly);
       // A singular element mass (no rotary inertia) leaves no finite bound.
-      lam_last = es.info() == Eigen::Success ? es.eigenvalues().maxCoeff() : std::numeric_limits<double>::infinity();
+      lam_last =
+          es.info() == Eigen::Success ? es.eigenvalues().maxCoeff() : std::numeric_limits<double>::infinity();
       K_last = std::move(Ke);
       M_last = std::move(Me);
     }
@@ -170,7 +171,8 @@ double subdomain_bound(const Model& model, int max_elements) {
     // only needs its free DOFs.
     for (int k = e; k < f; ++k) {
       const Model::Element& el = els[k];
-      const Eigen::MatrixXd Ke = model.element_stiffness(k, el.c, el.s), Me = model.element_mass(k, el.c, el.s);
+      const Eigen::MatrixXd Ke = model.element_stiffness(k, el.c, el.s),
+                            Me = model.element_mass(k, el.c, el.s);
       const Eigen::Matrix<int, 6, 1> eq = model.element_equations(k);
       for (int i = 0; i < ne; ++i) {
         if (eq(i) < 0) continue;
@@ -186,7 +188,8 @@ double subdomain_bound(const Model& model, int max_elements) {
     lam_last = 0.0;  // no free DOF: nothing moves
     if (d > 0) {
       Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(Kc, Mc, Eigen::EigenvaluesOnly);
-      lam_last = es.info() == Eigen::Success ? es.eigenvalues().maxCoeff() : std::numeric_limits<double>::infinity();
+      lam_last =
+          es.info() == Eigen::Success ? es.eigenvalues().maxCoeff() : std::numeric_limits<double>::infinity();
     }
     lam = std::max(lam, lam_last);
     e = f;

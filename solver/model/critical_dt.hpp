@@ -15,6 +15,9 @@
 /// a-posteriori residual (Ritz value + residual norm) is reported but not used for the step: it
 /// bounds the distance to *some* eigenvalue, not necessarily the largest (a mode with little
 /// weight in the start vector, such as a free end's, can be missing from the Krylov space).
+/// One exception to "never above the limit": for models of at most kConfirmDofs DOFs the
+/// converged Ritz value sets the step when the proven bound is within kConfirmTol of it
+/// (kLanczosConfirmed), so that the paper's small scenes keep their step to the last bit.
 
 #include <beamimpact/model/Model.hpp>
 
@@ -22,7 +25,7 @@ namespace beamimpact {
 
 /// @brief Which upper estimate of omega_max^2 a CriticalStep is based on.
 enum class CriticalBound {
-  kNone,             ///< no stiffness (rigid bodies only): no stability limit
+  kNone,       ///< no stiffness (rigid bodies only): no stability limit
   kElement,    ///< the element bound (proven)
   kSubdomain,  ///< the subdomain bound (proven, runs of consecutive elements)
   /// small models: the converged Lanczos Ritz value (a lower bound), used because the proven
@@ -71,9 +74,9 @@ inline constexpr int kConfirmDofs = 128;
 inline constexpr double kConfirmTol = 2e-9;
 
 /// @brief Computes the critical step of `model` from the smaller of the element and subdomain
-/// bounds, and the Lanczos lower estimate (M-inner product, no reorthogonalisation: extreme
-/// Ritz values converge first and lost orthogonality only duplicates them; at most
-/// kLanczosMaxIterations iterations, stopped once the residual is below 1e-12 of the Ritz value).
+/// bounds (or the confirmed Ritz value, kLanczosConfirmed), and the Lanczos lower estimate (M-inner product,
+/// no reorthogonalisation: extreme Ritz values converge first and lost orthogonality only duplicates them; at
+/// most kLanczosMaxIterations iterations, stopped once the residual is below 1e-12 of the Ritz value).
 CriticalStep critical_step(const Model& model);
 
 /// @brief Largest eigenvalue of M^-1 K by Lanczos with its residual bound (exposed for tests).

@@ -45,7 +45,8 @@ TEST(CriticalStep, PaperScenesGetTheDenseLimit) {
       EXPECT_EQ(c.bound, CriticalBound::kLanczosConfirmed) << scene << " " << mass;
       // Every body fits one subdomain and bodies are uncoupled in K: the subdomain bound is exact.
       EXPECT_NEAR(subdomain_bound(m, kSubdomainElements), std::pow(dense_omega_max(m), 2),
-                  1e-10 * std::pow(dense_omega_max(m), 2)) << scene << " " << mass;
+                  1e-10 * std::pow(dense_omega_max(m), 2))
+          << scene << " " << mass;
       // The top Ritz value is a Rayleigh quotient: a lower bound (roundoff of the products only).
       EXPECT_LE(c.ritz_omega, dense_omega_max(m) * (1 + 1e-12)) << scene << " " << mass;
     }

@@ -9,10 +9,10 @@
 #include <beamimpact/model/critical_dt.hpp>
 #include <beamimpact/model/deformed_geometry.hpp>
 #include <beamimpact/record/ResultRecorder.hpp>
-#include <beamimpact/schema/output_schema.hpp>
 #include <beamimpact/scene/SceneError.hpp>
 #include <beamimpact/scene/TableReader.hpp>
 #include <beamimpact/scene/run_cost.hpp>
+#include <beamimpact/schema/output_schema.hpp>
 #include <beamimpact/util/Progress.hpp>
 
 namespace beamimpact::paper {
@@ -33,11 +33,12 @@ double choose_dt(const Scene& scene, const CriticalStep& cs, SimulationResult& r
   }
   const double dt = *scene.time.dt;
   if (dt > cs.dt * (1.0 + 1e-12) && !scene.time.allow_above_critical)
-    throw SceneError(scene.file, "time.dt",
-                     fmt::format("expected at most the critical step {:.6g} s (2/omega_max, omega_max = "
-                                 "{:.6g} rad/s an upper estimate for M^-1 K), got {:.6g} s; use dt = \"auto\", a "
-                                 "smaller dt, or set time.allow_above_critical = true to run anyway",
-                                 cs.dt, cs.omega_max, dt));
+    throw SceneError(
+        scene.file, "time.dt",
+        fmt::format("expected at most the critical step {:.6g} s (2/omega_max, omega_max = "
+                    "{:.6g} rad/s an upper estimate for M^-1 K), got {:.6g} s; use dt = \"auto\", a "
+                    "smaller dt, or set time.allow_above_critical = true to run anyway",
+                    cs.dt, cs.omega_max, dt));
   return dt;
 }
 
@@ -48,10 +49,11 @@ nlohmann::json critical_step_json(const CriticalStep& cs, double dt) {
   if (cs.bound == CriticalBound::kNone)
     return {{k::kMethod, "none: no stiffness (rigid bodies only), no stability limit"},
             {k::kBound, to_string(cs.bound)}};
-  return {{k::kMethod, "proven upper bound of omega_max: min of the element bound and the subdomain "
-                       "bound (runs of consecutive elements), or for small models the converged Lanczos "
-                       "Ritz value when that bound confirms it; Lanczos (M-inner product) gives the "
-                       "lower bound ritz_omega"},
+  return {{k::kMethod,
+           "proven upper bound of omega_max: min of the element bound and the subdomain "
+           "bound (runs of consecutive elements), or for small models the converged Lanczos "
+           "Ritz value when that bound confirms it; Lanczos (M-inner product) gives the "
+           "lower bound ritz_omega"},
           {k::kBound, to_string(cs.bound)},
           {k::kOmegaMax, cs.omega_max},
           {k::kElementBoundDt, cs.element_bound_dt},
@@ -223,9 +225,10 @@ SimulationResult solve(const Scene& scene_in) {
     result.contacts[c].friction = scene.contacts[c].friction;  // as applied
     result.contacts[c].extra["contact_search"] =
         scene.contacts[c].search
-            ? fmt::format("all nodes: {} node pairs (every striker node off the target's axis, the "
-                          "target's end nodes against the striker); node {} reported while open",
-                          integ.pair_groups()[c].size(), scene.contacts[c].node)
+            ? fmt::format(
+                  "all nodes: {} node pairs (every striker node off the target's axis, the "
+                  "target's end nodes against the striker); node {} reported while open",
+                  integ.pair_groups()[c].size(), scene.contacts[c].node)
             : fmt::format("declared node {} only (the paper's method)", scene.contacts[c].node);
   }
   return result;

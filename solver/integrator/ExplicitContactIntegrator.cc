@@ -70,6 +70,7 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
   Vbar_ = V_ = model.initial_velocity();  // no contact force at t = 0: Vbar^0 = V^0
   fint_U_ = fint_next_ = Eigen::VectorXd::Zero(n);
   fint_.apply(U_, fint_U_);
+  fused_ = model.lumped() && !damped_ && !cmass_;
   solve_contacts();  // step 0 complete
 }
 
@@ -106,13 +107,18 @@ void ExplicitContactIntegrator::solve_contacts() {
   apply_Minv(work2_, work_);
   Ubar_.noalias() = U_ + dt_ * Vbar_ + (0.5 * dt_ * dt_) * work_;
 
+  resolve_contacts();
+}
+
+void ExplicitContactIntegrator::resolve_contacts() {
   solver_.solve(Ubar_, U_);
-  V_ = Vbar_;
+  v_is_vbar_ = true;  // V^p = Vbar^p unless a contact force acts
   if (solver_.any_force()) {
     fc_.setZero();
     solver_.add_forces(fc_);
     apply_Minv(fc_, work_);
-    V_.noalias() += (0.5 * dt_) * work_;
+    V_.noalias() = Vbar_ + (0.5 * dt_) * work_;
+    v_is_vbar_ = false;
     // Contact work of step p: f_c . (U^{p+1} - U^{p-1}) / 2 with this step's rows, i.e.
     // R (g_{p+1} - g_{p-1})/2 + tau (s_{p+1} - s_{p-1})/2. It is the exact change of the discrete
     // energy 1/2 v_{p+1/2} M v_{p+1/2} + 1/2 u_p K u_{p+1} (linear kinematics).
@@ -163,9 +169,47 @@ void ExplicitContactIntegrator::advance() {
   ++p_;
 }
 
+void ExplicitContactIntegrator::advance_fused() {
+  const int n = model_.size();
+  const double* inv = minv_.inverse_diagonal().data();
+  const double dt = dt_, dt2 = dt_ * dt_, half_dt2 = 0.5 * dt_ * dt_, m_half_dt = -0.5 * dt_;
+  const bool force = solver_.any_force();
+  // U^{p+1} = Ubar + dt^2 M^-1 f_c (apply_H undamped: (inv fc) dt^2); without force U^{p+1} is
+  // Ubar itself, whose buffer the prediction below overwrites: swap instead of copying.
+  if (force) {
+    const double* ub = Ubar_.data();
+    const double* fc = fc_.data();
+    double* un = U_next_.data();
+    for (int i = 0; i < n; ++i) un[i] = ub[i] + (inv[i] * fc[i]) * dt2;
+  } else {
+    U_next_.swap(Ubar_);
+  }
+  fint_.apply(U_next_, fint_next_);
+  // One sweep: Vbar^{p+1} = Vbar^p + inv (-dt/2 (f(U^{p+1}) + f(U^p)) + dt f_c), then the next
+  // step's prediction Ubar = U^{p+1} + dt Vbar^{p+1} + dt^2/2 inv (-f(U^{p+1})).
+  const double* un = U_next_.data();
+  const double* fn = fint_next_.data();
+  const double* fu = fint_U_.data();
+  const double* fc = fc_.data();
+  double* vb = Vbar_.data();
+  double* ub = Ubar_.data();
+  for (int i = 0; i < n; ++i) {
+    double w2 = m_half_dt * (fn[i] + fu[i]);
+    if (force) w2 += dt * fc[i];
+    const double vbar = vb[i] + inv[i] * w2;
+    vb[i] = vbar;
+    ub[i] = (un[i] + dt * vbar) + half_dt2 * (inv[i] * -fn[i]);
+  }
+  std::swap(U_prev_, U_);
+  std::swap(U_, U_next_);
+  std::swap(fint_U_, fint_next_);
+  ++p_;
+}
+
 double ExplicitContactIntegrator::kinetic_energy() const {
-  if (model_.lumped()) return 0.5 * V_.dot(model_.lumped_mass().cwiseProduct(V_));
-  return 0.5 * V_.dot(mass() * V_);
+  const Eigen::VectorXd& v = V();
+  if (model_.lumped()) return 0.5 * v.dot(model_.lumped_mass().cwiseProduct(v));
+  return 0.5 * v.dot(mass() * v);
 }
 
 }  // namespace beamimpact::paper

@@ -6,10 +6,16 @@ namespace beamimpact::paper {
 
 InternalForce::InternalForce(const Model& model, const std::vector<bool>& corotational)
     : model_(model), K_(&model.K()) {
-  if (model.dofs_per_node() != 3) return;  // rods never rotate
+  if (model.dofs_per_node() != 3) {  // rods never rotate
+    build_blocks();
+    return;
+  }
   for (int e = 0; e < static_cast<int>(model.elements().size()); ++e)
     if (corotational[model.elements()[e].body]) corot_elements_.push_back(e);
-  if (corot_elements_.empty()) return;
+  if (corot_elements_.empty()) {
+    build_blocks();
+    return;
+  }
   // Linear part: K minus the corotational elements' reference stiffness.
   std::vector<Eigen::Triplet<double>> t;
   for (int e : corot_elements_) {
@@ -25,6 +31,66 @@ InternalForce::InternalForce(const Model& model, const std::vector<bool>& corota
   K_linear_ = model.K() + Kc;
   K_linear_.prune(0.0);
   K_ = &K_linear_;
+}
+
+void InternalForce::build_blocks() {
+  const int w = 2 * model_.dofs_per_node();
+  for (int e = 0; e < static_cast<int>(model_.elements().size()); ++e) {
+    const Model::Element& el = model_.elements()[e];
+    if (el.rigid) continue;  // no element stiffness
+    const Eigen::MatrixXd Ke = model_.element_stiffness(e, el.c, el.s);
+    const Eigen::Matrix<int, 6, 1> eq = model_.element_equations(e);
+    BlockElement be{};
+    for (int i = 0; i < 6; ++i) be.eq[i] = i < w ? eq(i) : -1;
+    const std::size_t nb = blocks_.size() / (w * w);
+    bool same = nb > 0;
+    for (int i = 0; same && i < w; ++i)
+      for (int j = 0; same && j < w; ++j) same = blocks_[(nb - 1) * w * w + i * w + j] == Ke(i, j);
+    if (!same)
+      for (int i = 0; i < w; ++i)
+        for (int j = 0; j < w; ++j) blocks_.push_back(Ke(i, j));
+    be.block = static_cast<int>(blocks_.size() / (w * w)) - 1;
+    block_elements_.push_back(be);
+  }
+  // Kept only when the blocks are the whole of K (no other stiffness assembled into it): the
+  // two products agree on a vector with no special structure, to the roundoff of the sums
+  // (1e-12 of sum |K_ij| |x_j| per row; a missing or extra term of K shows at O(1)).
+  const int n = model_.size();
+  Eigen::VectorXd x(n), kx(n), bx(n), scale(n);
+  for (int i = 0; i < n; ++i) x(i) = std::sin(1.3 * i + 0.7) + 1.5;
+  kx.noalias() = model_.K() * x;
+  scale.noalias() = model_.K().cwiseAbs() * x.cwiseAbs();
+  use_blocks_ = n > 0;
+  if (use_blocks_) {
+    if (w == 6)
+      apply_blocks<6>(x, bx);
+    else
+      apply_blocks<2>(x, bx);
+    use_blocks_ = ((kx - bx).cwiseAbs().array() <= 1e-12 * scale.array()).all();
+  }
+  if (!use_blocks_) {
+    blocks_.clear();
+    block_elements_.clear();
+  }
+}
+
+template <int W>
+void InternalForce::apply_blocks(const Eigen::VectorXd& U, Eigen::VectorXd& f) const {
+  f.setZero();
+  const double* u = U.data();
+  double* out = f.data();
+  const double* blocks = blocks_.data();
+  for (const BlockElement& be : block_elements_) {
+    double x[W];
+    for (int i = 0; i < W; ++i) x[i] = be.eq[i] >= 0 ? u[be.eq[i]] : 0.0;
+    const double* k = blocks + be.block * W * W;
+    for (int i = 0; i < W; ++i) {
+      if (be.eq[i] < 0) continue;
+      double y = 0.0;
+      for (int j = 0; j < W; ++j) y += k[i * W + j] * x[j];
+      out[be.eq[i]] += y;
+    }
+  }
 }
 
 InternalForce::Local InternalForce::local(int e, const Eigen::VectorXd& U, Eigen::Matrix<int, 6, 1>& eq,
@@ -56,6 +122,13 @@ Vec2 InternalForce::chord_direction(int e, const Eigen::VectorXd& U) const {
 }
 
 void InternalForce::apply(const Eigen::VectorXd& U, Eigen::VectorXd& f) const {
+  if (use_blocks_) {
+    if (model_.dofs_per_node() == 3)
+      apply_blocks<6>(U, f);
+    else
+      apply_blocks<2>(U, f);
+    return;
+  }
   f.noalias() = (*K_) * U;
   Eigen::Matrix<int, 6, 1> eq;
   double x[6];

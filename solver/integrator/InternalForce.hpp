@@ -2,7 +2,9 @@
 /// @file InternalForce.hpp
 /// @brief f_int(U) and the strain energy: K U for linear bodies, and the 2D corotational beam
 /// (element frame rebuilt from the current chord every call) for bodies that rotate. Only bodies
-/// listed as corotational pay for the rebuild; with none, this is one sparse product K U.
+/// listed as corotational pay for the rebuild; with none, this is K U element by element (the
+/// blocks of identical consecutive elements stored once), or one sparse product when the element
+/// blocks do not reassemble K.
 
 #include <vector>
 
@@ -25,6 +27,8 @@ class InternalForce {
   Vec2 chord_direction(int e, const Eigen::VectorXd& U) const;
   /// @brief Elements that are corotational.
   const std::vector<int>& corotational_elements() const { return corot_elements_; }
+  /// @brief True when apply() runs element by element (the blocks reassemble K).
+  bool element_blocks() const { return use_blocks_; }
   /// @brief Stiffness of the linear part (all elements when nothing is corotational).
   const SparseMatrix& linear_stiffness() const { return *K_; }
 
@@ -34,8 +38,22 @@ class InternalForce {
     double u, th1, th2, ln, c, s;
   };
   Local local(int e, const Eigen::VectorXd& U, Eigen::Matrix<int, 6, 1>& eq, double x[6]) const;
+  /// One element of the block product: the equations of its two nodes (contiguous per node
+  /// when fast), and its stiffness block.
+  struct BlockElement {
+    int eq[6];
+    int block;
+  };
+  /// Builds the element blocks of K when nothing is corotational; keeps them only when they
+  /// reassemble K (to roundoff): then apply() is element by element, as the hand kernel.
+  void build_blocks();
+  template <int W>
+  void apply_blocks(const Eigen::VectorXd& U, Eigen::VectorXd& f) const;
   const Model& model_;
   const SparseMatrix* K_;
+  std::vector<double> blocks_;  ///< distinct element blocks, W x W row-major each
+  std::vector<BlockElement> block_elements_;
+  bool use_blocks_ = false;
   SparseMatrix K_linear_;  ///< used only when some elements are corotational
   std::vector<int> corot_elements_;
 };

@@ -2,16 +2,46 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include <Eigen/Eigenvalues>
-#include <Eigen/SparseCholesky>
 
 #include <beamimpact/model/MassSolver.hpp>
 
 namespace beamimpact {
 namespace {
 
-double largest_ritz(const std::vector<double>& alpha, const std::vector<double>& beta) {
+/// Every this many iterations the top Ritz pair of T_k is solved (O(k^2), negligible next to
+/// the O(n) iteration) and Lanczos stops once its residual is below kResidualTol of it.
+constexpr int kCheckEvery = 8;
+constexpr double kResidualTol = 1e-12;
+
+/// Top Ritz value of the Lanczos tridiagonal T_k (alpha on the diagonal, beta below it) and the
+/// residual norm beta_{k+1} |s_k| of its Ritz vector, by the tridiagonal QR method.
+void top_ritz_pair(const std::vector<double>& alpha, const std::vector<double>& beta, LanczosEstimate& est) {
+  const int k = static_cast<int>(alpha.size());
+  const Eigen::Map<const Eigen::VectorXd> diag(alpha.data(), k);
+  // beta[j] couples q_j and q_{j+1}; the first k-1 are T_k's sub-diagonal, beta[k-1] = beta_{k+1}.
+  Eigen::VectorXd sub(std::max(k - 1, 0));
+  for (int j = 0; j + 1 < k; ++j) sub(j) = beta[j];
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es;
+  es.computeFromTridiagonal(diag, sub, Eigen::ComputeEigenvectors);
+  est.ritz = es.eigenvalues()(k - 1);  // ascending
+  est.residual = beta[k - 1] * std::abs(es.eigenvectors()(k - 1, k - 1));
+  est.iterations = k;
+}
+
+/// The critical step of central differences for a mode of angular frequency omega under Rayleigh
+/// damping: 2/omega (sqrt(1 + xi^2) - xi), xi = a0/(2 omega) + a1 omega/2 (decreasing in omega).
+double step_of(const Model& model, double omega) {
+  if (!(omega > 0.0) || !std::isfinite(omega)) return 0.0;
+  const double xi = model.rayleigh_mass() / (2 * omega) + model.rayleigh_stiffness() * omega / 2;
+  return 2.0 / omega * (std::sqrt(1 + xi * xi) - xi);
+}
+
+/// Largest eigenvalue of T_k by a dense solve (small models only, see converged_ritz).
+double dense_top_ritz(const std::vector<double>& alpha, const std::vector<double>& beta) {
   const int m = static_cast<int>(alpha.size());
   Eigen::MatrixXd T = Eigen::MatrixXd::Zero(m, m);
   for (int i = 0; i < m; ++i) {
@@ -21,29 +51,15 @@ double largest_ritz(const std::vector<double>& alpha, const std::vector<double>&
   return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(T, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
 }
 
-/// Largest omega^2 of any single element with its own mass. Irons' element bound: the assembled
-/// omega_max^2 never exceeds it (and supports only lower the assembled value).
-double element_bound(const Model& model) {
-  double lam = 0.0;
-  for (int e = 0; e < static_cast<int>(model.elements().size()); ++e) {
-    const Model::Element& el = model.elements()[e];
-    if (el.rigid) continue;  // a rigid body has no element stiffness
-    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(
-        model.element_stiffness(e, el.c, el.s), model.element_mass(e, el.c, el.s), Eigen::EigenvaluesOnly);
-    if (es.info() == Eigen::Success) lam = std::max(lam, es.eigenvalues().maxCoeff());
-  }
-  return lam;
-}
-
-}  // namespace
-
-double largest_eigenvalue(const Model& model, int max_iter, int* iterations) {
+/// The Lanczos of earlier versions for models of at most kConfirmDofs DOFs (O(k^3) per
+/// iteration, k <= n): the top Ritz value once stable to 1e-12 for 5 iterations, 0 when it never
+/// settles. Kept operation for operation so that the step of a small scene keeps its last bit
+/// (the S4 comparisons with IDA are sensitive to it).
+double converged_ritz(const Model& model, int* iterations) {
   const int n = model.size();
-  if (n == 0) return 0.0;
   const MassSolver minv(model);
   const SparseMatrix& K = model.K();
   const SparseMatrix& M = model.M();
-  // Deterministic start vector with energy in every DOF.
   Eigen::VectorXd q(n), q_prev = Eigen::VectorXd::Zero(n), w(n), Mq(n);
   unsigned s = 12345u;
   for (int i = 0; i < n; ++i) {
@@ -54,37 +70,213 @@ double largest_eigenvalue(const Model& model, int max_iter, int* iterations) {
   std::vector<double> alpha, beta = {0.0};
   double last = 0.0;
   int stable = 0, it = 0;
-  const int m = std::min(max_iter, n);
-  for (it = 0; it < m; ++it) {
+  bool settled = false;
+  for (it = 0; it < n; ++it) {
     const Eigen::VectorXd Kq = K * q;
     alpha.push_back(q.dot(Kq));
     minv.apply(Kq, w);  // w = M^-1 K q
     w -= alpha.back() * q + beta.back() * q_prev;
     Mq = M * w;
     const double b = std::sqrt(std::max(0.0, w.dot(Mq)));
-    const double ritz = largest_ritz(alpha, beta);
+    const double ritz = dense_top_ritz(alpha, beta);
     stable = std::abs(ritz - last) <= 1e-12 * std::abs(ritz) ? stable + 1 : 0;
     last = ritz;
-    if (stable >= 5 || b <= 1e-14 * std::sqrt(std::abs(alpha.back()) + 1e-300)) break;
+    if (stable >= 5 || b <= 1e-14 * std::sqrt(std::abs(alpha.back()) + 1e-300)) {
+      settled = true;
+      break;
+    }
     beta.push_back(b);
     q_prev = q;
     q = w / b;
   }
-  if (iterations) *iterations = it + 1;
-  return last;
+  *iterations = it + 1;
+  return settled || it == n ? last : 0.0;
+}
+
+}  // namespace
+
+const char* to_string(CriticalBound b) {
+  switch (b) {
+    case CriticalBound::kElement: return "element";
+    case CriticalBound::kSubdomain: return "subdomain";
+    case CriticalBound::kLanczosConfirmed: return "lanczos_confirmed";
+    case CriticalBound::kNone: break;
+  }
+  return "none";
+}
+
+double element_bound(const Model& model) {
+  // Consecutive elements of a body are usually identical: their matrices are compared and the
+  // eigenvalue reused, so a uniform body costs one 6x6 eigen-solve.
+  double lam = 0.0;
+  Eigen::MatrixXd K_last, M_last;
+  double lam_last = 0.0;
+  for (int e = 0; e < static_cast<int>(model.elements().size()); ++e) {
+    const Model::Element& el = model.elements()[e];
+    if (el.rigid) continue;  // a rigid body has no element stiffness
+    Eigen::MatrixXd Ke = model.element_stiffness(e, el.c, el.s), Me = model.element_mass(e, el.c, el.s);
+    if (Ke.size() != K_last.size() || Ke != K_last || Me != M_last) {
+      Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(Ke, Me, Eigen::EigenvaluesOnly);
+      // A singular element mass (no rotary inertia) leaves no finite bound.
+      lam_last =
+          es.info() == Eigen::Success ? es.eigenvalues().maxCoeff() : std::numeric_limits<double>::infinity();
+      K_last = std::move(Ke);
+      M_last = std::move(Me);
+    }
+    lam = std::max(lam, lam_last);
+  }
+  return lam;
+}
+
+double subdomain_bound(const Model& model, int max_elements) {
+  const std::vector<Model::Element>& els = model.elements();
+  const int nel = static_cast<int>(els.size()), ne = 2 * model.dofs_per_node();
+  double lam = 0.0, lam_last = 0.0;
+  Eigen::MatrixXd Kc, Mc;
+  std::vector<int> eqs;
+  std::vector<double> key, key_last;
+  for (int e = 0; e < nel;) {
+    if (els[e].rigid) {  // a rigid body has no element stiffness
+      ++e;
+      continue;
+    }
+    int f = e;  // the subdomain: elements [e, f) of one elastic body
+    while (f < nel && f - e < max_elements && els[f].body == els[e].body && !els[f].rigid) ++f;
+    // The run's key: each element's section, geometry and equation pattern relative to the
+    // run's first equation. An equal key gives equal matrices: reuse the last eigenvalue.
+    key.clear();
+    eqs.clear();
+    const int first = model.element_equations(e).maxCoeff();
+    for (int k = e; k < f; ++k) {
+      const Model::Element& el = els[k];
+      key.insert(key.end(), {el.E, el.area, el.inertia, el.rho, el.length, el.c, el.s});
+      const Eigen::Matrix<int, 6, 1> eq = model.element_equations(k);
+      for (int i = 0; i < ne; ++i) {
+        key.push_back(eq(i) >= 0 ? eq(i) - first : -1e9);
+        if (eq(i) >= 0) eqs.push_back(eq(i));
+      }
+    }
+    if (key == key_last) {
+      lam = std::max(lam, lam_last);
+      e = f;
+      continue;
+    }
+    key_last = key;
+    std::sort(eqs.begin(), eqs.end());
+    eqs.erase(std::unique(eqs.begin(), eqs.end()), eqs.end());
+    const int d = static_cast<int>(eqs.size());
+    Kc.setZero(d, d);
+    Mc.setZero(d, d);
+    // Supported DOFs stay out: the model's vectors are zero there, so the subdomain's quotient
+    // only needs its free DOFs.
+    for (int k = e; k < f; ++k) {
+      const Model::Element& el = els[k];
+      const Eigen::MatrixXd Ke = model.element_stiffness(k, el.c, el.s),
+                            Me = model.element_mass(k, el.c, el.s);
+      const Eigen::Matrix<int, 6, 1> eq = model.element_equations(k);
+      for (int i = 0; i < ne; ++i) {
+        if (eq(i) < 0) continue;
+        const auto li = std::lower_bound(eqs.begin(), eqs.end(), eq(i)) - eqs.begin();
+        for (int j = 0; j < ne; ++j) {
+          if (eq(j) < 0) continue;
+          const auto lj = std::lower_bound(eqs.begin(), eqs.end(), eq(j)) - eqs.begin();
+          Kc(li, lj) += Ke(i, j);
+          Mc(li, lj) += Me(i, j);
+        }
+      }
+    }
+    lam_last = 0.0;  // no free DOF: nothing moves
+    if (d > 0) {
+      Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(Kc, Mc, Eigen::EigenvaluesOnly);
+      lam_last =
+          es.info() == Eigen::Success ? es.eigenvalues().maxCoeff() : std::numeric_limits<double>::infinity();
+    }
+    lam = std::max(lam, lam_last);
+    e = f;
+  }
+  return lam;
+}
+
+LanczosEstimate lanczos_largest(const Model& model, int max_iter) {
+  LanczosEstimate est;
+  const int n = model.size();
+  if (n == 0 || max_iter <= 0) return est;
+  const MassSolver minv(model);
+  const bool lumped = model.lumped();
+  const Eigen::VectorXd& m = model.lumped_mass();
+  const Eigen::VectorXd& minv_diag = minv.inverse_diagonal();
+  const SparseMatrix& K = model.K();
+  const SparseMatrix& M = model.M();
+  auto m_norm2 = [&](const Eigen::VectorXd& x, Eigen::VectorXd& scratch) {
+    if (lumped) return x.dot(m.cwiseProduct(x));
+    scratch.noalias() = M * x;
+    return x.dot(scratch);
+  };
+  // Deterministic start vector with energy in every DOF.
+  Eigen::VectorXd q(n), q_prev = Eigen::VectorXd::Zero(n), w(n), Kq(n), scratch(n);
+  unsigned s = 12345u;
+  for (int i = 0; i < n; ++i) {
+    s = s * 1103515245u + 12345u;
+    q(i) = 0.5 + static_cast<double>((s >> 8) & 0xffff) / 65536.0;
+  }
+  q /= std::sqrt(m_norm2(q, scratch));
+  std::vector<double> alpha, beta;
+  double b_prev = 0.0, a_max = 0.0;
+  const int iters = std::min(max_iter, n);
+  for (int j = 0; j < iters; ++j) {
+    Kq.noalias() = K * q;
+    const double a = q.dot(Kq);
+    // w = M^-1 K q - a q - b_prev q_prev: the three-term recurrence in the M-inner product.
+    if (lumped) {
+      w.array() = Kq.array() * minv_diag.array() - a * q.array() - b_prev * q_prev.array();
+    } else {
+      minv.apply(Kq, w);
+      w -= a * q + b_prev * q_prev;
+    }
+    const double b = std::sqrt(std::max(0.0, m_norm2(w, scratch)));
+    alpha.push_back(a);
+    beta.push_back(b);
+    a_max = std::max(a_max, std::abs(a));
+    const bool exhausted = b <= 1e-14 * a_max;  // invariant subspace: T_k holds exact eigenvalues
+    if (exhausted || j + 1 == iters || (j + 1) % kCheckEvery == 0) {
+      top_ritz_pair(alpha, beta, est);
+      if (exhausted || est.residual <= kResidualTol * std::abs(est.ritz)) break;
+    }
+    q_prev.swap(q);
+    q = w / b;
+    b_prev = b;
+  }
+  return est;
 }
 
 CriticalStep critical_step(const Model& model) {
   CriticalStep c;
-  const double lam = largest_eigenvalue(model, 400, &c.iterations);
-  c.omega_max = std::sqrt(std::max(lam, 0.0));
-  // Central difference with Rayleigh damping: dt <= 2/omega (sqrt(1 + xi^2) - xi).
-  const double xi = c.omega_max > 0 ? model.rayleigh_mass() / (2 * c.omega_max) +
-                                          model.rayleigh_stiffness() * c.omega_max / 2
-                                    : 0.0;
-  c.dt = c.omega_max > 0 ? 2.0 / c.omega_max * (std::sqrt(1 + xi * xi) - xi) : 0.0;
   const double lam_e = element_bound(model);
-  c.element_bound_dt = lam_e > 0 ? 2.0 / std::sqrt(lam_e) : 0.0;
+  const double lam_s = subdomain_bound(model, kSubdomainElements);
+  const LanczosEstimate lz = lanczos_largest(model, kLanczosMaxIterations);
+  c.iterations = lz.iterations;
+  c.ritz_omega = std::sqrt(std::max(lz.ritz, 0.0));
+  c.residual = lz.residual;
+  c.element_bound_dt = step_of(model, std::sqrt(lam_e));
+  c.lanczos_dt = step_of(model, std::sqrt(std::max(lz.upper(), 0.0)));
+  if (lam_e <= 0.0) return c;  // no stiffness: no limit
+  // Both bounds are proven; the subdomain one is never above the element one in exact
+  // arithmetic, the min guards against its roundoff.
+  const double lam = std::min(lam_s, lam_e);
+  c.bound = lam_s < lam_e ? CriticalBound::kSubdomain : CriticalBound::kElement;
+  c.omega_max = std::sqrt(lam);
+  if (model.size() <= kConfirmDofs) {
+    int iterations = 0;
+    const double ritz = converged_ritz(model, &iterations);
+    // The true omega_max^2 lies in [ritz, lam]: within kConfirmTol, take the Ritz value.
+    if (ritz > 0.0 && lam <= ritz * (1 + kConfirmTol)) {
+      c.bound = CriticalBound::kLanczosConfirmed;
+      c.omega_max = std::sqrt(ritz);
+      c.iterations = iterations;
+      c.ritz_omega = std::max(c.ritz_omega, c.omega_max);
+    }
+  }
+  c.dt = step_of(model, c.omega_max);
   return c;
 }
 

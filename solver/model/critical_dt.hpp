@@ -1,29 +1,98 @@
 #pragma once
 /// @file critical_dt.hpp
 /// @brief Stability limit of explicit central differences for the assembled model:
-/// dt_crit = 2 / omega_max (reduced for Rayleigh damping), omega_max^2 the largest eigenvalue of
-/// M^-1 K from Lanczos on the sparse operator: O(nnz) per iteration, no dense eigen-solve.
-
-#include <string>
+/// dt_crit = 2 / omega_max (reduced for Rayleigh damping), from proven upper bounds of
+/// omega_max^2 (the largest eigenvalue of M^-1 K), O(n) in time and memory:
+///  - the element bound (Irons): K = sum K_e and M = sum M_e (+ rigid-body masses), so the
+///    Rayleigh quotient of the assembled pair is a ratio of sums of element quotients and no
+///    assembled eigenvalue exceeds max_e lambda_max(K_e, M_e) (lumped and consistent mass);
+///  - the subdomain bound: the same argument with runs of up to kSubdomainElements consecutive
+///    elements of a body in place of single elements (dense eigen-solve of each run, one per
+///    distinct run). It is never above the element bound, and exact for bodies of at most
+///    kSubdomainElements elements (bodies are not coupled in K);
+/// and a lower estimate by Lanczos (a fixed small number of iterations): the top Ritz value is
+/// a Rayleigh quotient, so omega_max lies in [ritz_omega, omega_max bound]. Lanczos's
+/// a-posteriori residual (Ritz value + residual norm) is reported but not used for the step: it
+/// bounds the distance to *some* eigenvalue, not necessarily the largest (a mode with little
+/// weight in the start vector, such as a free end's, can be missing from the Krylov space).
+/// One exception to "never above the limit": for models of at most kConfirmDofs DOFs the
+/// converged Ritz value sets the step when the proven bound is within kConfirmTol of it
+/// (kLanczosConfirmed), so that the paper's small scenes keep their step to the last bit.
 
 #include <beamimpact/model/Model.hpp>
 
 namespace beamimpact {
 
-/// @brief The critical step and how it was found.
-struct CriticalStep {
-  double omega_max = 0.0;         ///< rad/s, largest undamped natural frequency (Lanczos)
-  double dt = 0.0;                ///< s, 2/omega_max, reduced by damping when present
-  double element_bound_dt = 0.0;  ///< s, 2/max element omega (lumped mass: a lower bound of dt)
-  int iterations = 0;             ///< Lanczos iterations used
+/// @brief Which upper estimate of omega_max^2 a CriticalStep is based on.
+enum class CriticalBound {
+  kNone,       ///< no stiffness (rigid bodies only): no stability limit
+  kElement,    ///< the element bound (proven)
+  kSubdomain,  ///< the subdomain bound (proven, runs of consecutive elements)
+  /// small models: the converged Lanczos Ritz value (a lower bound), used because the proven
+  /// bound is within kConfirmTol of it; the step exceeds the proven-safe one by at most
+  /// kConfirmTol/2 relative and keeps the last bit of earlier versions
+  kLanczosConfirmed,
 };
 
-/// @brief Computes the critical step of `model`. Lanczos (M-inner product, no reorthogonalisation:
-/// extreme Ritz values converge first and lost orthogonality only duplicates them) until the
-/// largest Ritz value is stable to 1e-12 relative, at most 400 iterations.
+/// @brief "none" | "element" | "subdomain" | "lanczos_confirmed" (summary.json critical_step.bound).
+const char* to_string(CriticalBound b);
+
+/// @brief Largest eigenvalue of M^-1 K estimated by Lanczos.
+struct LanczosEstimate {
+  double ritz = 0.0;      ///< rad^2/s^2, largest Ritz value (a lower estimate)
+  double residual = 0.0;  ///< rad^2/s^2, beta_{k+1} |s_k|, the residual norm of the top Ritz pair
+  int iterations = 0;     ///< Lanczos iterations used
+  /// @brief ritz + residual: an eigenvalue of M^-1 K lies in [ritz - residual, ritz + residual].
+  double upper() const { return ritz + residual; }
+};
+
+/// @brief The critical step and how it was found.
+struct CriticalStep {
+  double omega_max = 0.0;         ///< rad/s, the proven upper bound of omega_max the step uses
+  double dt = 0.0;                ///< s, 2/omega_max, reduced by damping when present
+  double element_bound_dt = 0.0;  ///< s, the step of the element bound (proven, never above the limit)
+  double lanczos_dt = 0.0;        ///< s, the step of Ritz value + residual (not safe: reported only)
+  double ritz_omega = 0.0;        ///< rad/s, sqrt of the top Ritz value: a lower bound of omega_max
+  double residual = 0.0;          ///< rad^2/s^2, residual norm of the top Ritz pair
+  int iterations = 0;             ///< Lanczos iterations used
+  CriticalBound bound = CriticalBound::kNone;  ///< which estimate set dt
+  /// @brief omega_max / ritz_omega - 1 (>= 0): the true omega_max lies in [ritz_omega,
+  /// omega_max], so the step is at most this fraction below the true (undamped) limit.
+  double margin() const { return ritz_omega > 0.0 ? omega_max / ritz_omega - 1.0 : 0.0; }
+};
+
+/// @brief Lanczos iterations at most (each costs about one time step of the run).
+inline constexpr int kLanczosMaxIterations = 16;
+/// @brief Elements per subdomain of the subdomain bound (frame: a dense eigen-solve of up to 99
+/// DOFs; covers every body of the paper's scenes whole).
+inline constexpr int kSubdomainElements = 32;
+
+/// @brief Models of at most this many DOFs also run the converged Lanczos (dense T_k solves).
+inline constexpr int kConfirmDofs = 128;
+/// @brief Relative gap on omega^2 between the proven bound and the Ritz value within which the
+/// Ritz value sets the step (kLanczosConfirmed).
+inline constexpr double kConfirmTol = 2e-9;
+
+/// @brief Computes the critical step of `model` from the smaller of the element and subdomain
+/// bounds (or the confirmed Ritz value, kLanczosConfirmed), and the Lanczos lower estimate (M-inner product,
+/// no reorthogonalisation: extreme Ritz values converge first and lost orthogonality only duplicates them; at
+/// most kLanczosMaxIterations iterations, stopped once the residual is below 1e-12 of the Ritz value).
 CriticalStep critical_step(const Model& model);
 
-/// @brief Largest eigenvalue of M^-1 K by Lanczos (exposed for tests).
-double largest_eigenvalue(const Model& model, int max_iter, int* iterations = nullptr);
+/// @brief Largest eigenvalue of M^-1 K by Lanczos with its residual bound (exposed for tests).
+/// @param model the assembled model
+/// @param max_iter iteration cap
+LanczosEstimate lanczos_largest(const Model& model, int max_iter);
+
+/// @brief The subdomain bound on omega_max^2 (rad^2/s^2): the largest eigenvalue of the free
+/// DOFs of any run of at most max_elements consecutive elements of one elastic body.
+/// @param model the assembled model
+/// @param max_elements elements per run (>= 1; 1 gives the element bound on free DOFs)
+double subdomain_bound(const Model& model, int max_elements);
+
+/// @brief The element bound on omega_max^2 (rad^2/s^2): the largest eigenvalue of any single
+/// element's (K_e, M_e); 0 without elastic elements.
+/// @param model the assembled model
+double element_bound(const Model& model);
 
 }  // namespace beamimpact

@@ -1,4 +1,4 @@
-// The critical step from Lanczos on the sparse operator, against closed forms and a dense solve.
+// The critical step from the element and subdomain bounds, against closed forms and a dense solve.
 #include <beamimpact/model/critical_dt.hpp>
 
 #include <cmath>
@@ -28,8 +28,8 @@ TEST(CriticalStep, LumpedRodsGiveTheCourantLimit) {
   EXPECT_NEAR(c.element_bound_dt, 0.1, 1e-12);  // the single bar element has the same limit
 }
 
-TEST(CriticalStep, LanczosMatchesADenseEigenSolve) {
-  // Tolerance 1e-10 relative: Lanczos stops when the top Ritz value is stable to 1e-12.
+TEST(CriticalStep, PaperScenesGetTheDenseLimit) {
+  // Tolerance 1e-10 relative: dense solves of the same matrices in other orders (roundoff).
   for (const char* mass : {"\"lumped\"", "\"consistent\""})
     for (const char* scene : {"s2_transverse", "s3_surface_20", "s4_oblique_60"}) {
       const Scene s =
@@ -39,7 +39,33 @@ TEST(CriticalStep, LanczosMatchesADenseEigenSolve) {
       EXPECT_NEAR(c.omega_max, dense_omega_max(m), 1e-10 * c.omega_max) << scene << " " << mass;
       // Irons' element bound: no assembled frequency exceeds the largest element frequency.
       EXPECT_LE(c.element_bound_dt, c.dt * (1 + 1e-12)) << scene << " " << mass;
+      // At most kConfirmTol/2 above the true limit 2/omega_max of the dense solve (the converged
+      // Ritz value, confirmed by the proven bound, sets the step of these small scenes).
+      EXPECT_LE(c.dt, 2 / dense_omega_max(m) * (1 + kConfirmTol / 2)) << scene << " " << mass;
+      EXPECT_EQ(c.bound, CriticalBound::kLanczosConfirmed) << scene << " " << mass;
+      // Every body fits one subdomain and bodies are uncoupled in K: the subdomain bound is exact.
+      EXPECT_NEAR(subdomain_bound(m, kSubdomainElements), std::pow(dense_omega_max(m), 2),
+                  1e-10 * std::pow(dense_omega_max(m), 2))
+          << scene << " " << mass;
+      // The top Ritz value is a Rayleigh quotient: a lower bound (roundoff of the products only).
+      EXPECT_LE(c.ritz_omega, dense_omega_max(m) * (1 + 1e-12)) << scene << " " << mass;
     }
+}
+
+TEST(CriticalStep, SubdomainsShorterThanABodyStillBoundTheLimit) {
+  // S3's 20-element target split into runs of 1, 3 and 7 elements: each bound is at or above the
+  // dense omega_max^2 (the theorem), and longer runs are tighter here (one run: exact).
+  const Model m(load_scene(paper_scene("s3_surface_20")), true);
+  const double w2 = std::pow(dense_omega_max(m), 2);
+  double last = INFINITY;
+  for (int run : {1, 3, 7, 32}) {
+    const double lam = subdomain_bound(m, run);
+    EXPECT_GE(lam, w2 * (1 - 1e-12)) << run;
+    EXPECT_LE(lam, last * (1 + 1e-12)) << run;
+    last = lam;
+  }
+  EXPECT_NEAR(last, w2, 1e-10 * w2);
+  EXPECT_NEAR(subdomain_bound(m, 1), element_bound(m), 1e-10 * element_bound(m));
 }
 
 TEST(CriticalStep, BendingAndRotaryInertiaSetTheLimitNotTheRodWaveSpeed) {

@@ -12,6 +12,7 @@
 #include <beamimpact/scene/SceneError.hpp>
 #include <beamimpact/scene/TableReader.hpp>
 #include <beamimpact/scene/run_cost.hpp>
+#include <beamimpact/schema/output_schema.hpp>
 #include <beamimpact/util/Progress.hpp>
 
 namespace beamimpact::paper {
@@ -19,7 +20,7 @@ namespace {
 
 /// The step: given, or "auto" = fraction x critical; refused above critical unless allowed.
 double choose_dt(const Scene& scene, const CriticalStep& cs, SimulationResult& r) {
-  if (cs.omega_max == 0.0) {  // only rigid bodies: no stiffness, no stability limit
+  if (cs.bound == CriticalBound::kNone) {  // only rigid bodies: no stiffness, no stability limit
     if (!scene.time.dt)
       throw SceneError(scene.file, "time.dt",
                        "\"auto\" takes a fraction of the critical step, and a scene of rigid bodies has none "
@@ -32,12 +33,36 @@ double choose_dt(const Scene& scene, const CriticalStep& cs, SimulationResult& r
   }
   const double dt = *scene.time.dt;
   if (dt > cs.dt * (1.0 + 1e-12) && !scene.time.allow_above_critical)
-    throw SceneError(scene.file, "time.dt",
-                     fmt::format("expected at most the critical step {:.6g} s (2/omega_max of the full "
-                                 "M^-1 K, omega_max = {:.6g} rad/s), got {:.6g} s; use dt = \"auto\", a "
-                                 "smaller dt, or set time.allow_above_critical = true to run anyway",
-                                 cs.dt, cs.omega_max, dt));
+    throw SceneError(
+        scene.file, "time.dt",
+        fmt::format("expected at most the critical step {:.6g} s (2/omega_max, omega_max = "
+                    "{:.6g} rad/s an upper estimate for M^-1 K), got {:.6g} s; use dt = \"auto\", a "
+                    "smaller dt, or set time.allow_above_critical = true to run anyway",
+                    cs.dt, cs.omega_max, dt));
   return dt;
+}
+
+/// summary.json's "critical_step": which upper estimate of omega_max set the step, and its margin
+/// over the proven element bound.
+nlohmann::json critical_step_json(const CriticalStep& cs, double dt) {
+  namespace k = critical_step_key;
+  if (cs.bound == CriticalBound::kNone)
+    return {{k::kMethod, "none: no stiffness (rigid bodies only), no stability limit"},
+            {k::kBound, to_string(cs.bound)}};
+  return {{k::kMethod,
+           "proven upper bound of omega_max: min of the element bound and the subdomain "
+           "bound (runs of consecutive elements), or for small models the converged Lanczos "
+           "Ritz value when that bound confirms it; Lanczos (M-inner product) gives the "
+           "lower bound ritz_omega"},
+          {k::kBound, to_string(cs.bound)},
+          {k::kOmegaMax, cs.omega_max},
+          {k::kElementBoundDt, cs.element_bound_dt},
+          {k::kLanczosDt, cs.lanczos_dt},
+          {k::kRitzOmega, cs.ritz_omega},
+          {k::kResidual, cs.residual},
+          {k::kIterations, cs.iterations},
+          {k::kMargin, cs.margin()},
+          {k::kDtOverCritical, cs.dt > 0.0 ? dt / cs.dt : 0.0}};
 }
 
 /// The chatter merge rule: a gap in seconds when given (comparable across dt and methods), else
@@ -190,13 +215,7 @@ SimulationResult solve(const Scene& scene_in) {
   for (int b = 0; b < model.num_bodies(); ++b)
     rec.set_final_velocity(scene.bodies[b].name, {integ.momentum(b, 0) / model.body_mass(b),
                                                   integ.momentum(b, 1) / model.body_mass(b)});
-  r.extra["critical_step"] = {{"method", "Lanczos on the sparse M^-1 K (M-inner product)"},
-                              {"omega_max", cs.omega_max},
-                              {"lanczos_iterations", cs.iterations},
-                              {"element_bound_dt", cs.element_bound_dt},
-                              {"dt_over_critical", cs.dt > 0.0 ? r.dt / cs.dt : 0.0}};
-  if (cs.omega_max == 0.0)
-    r.extra["critical_step"] = {{"method", "none: no stiffness (rigid bodies only), no stability limit"}};
+  r.extra["critical_step"] = critical_step_json(cs, r.dt);
   r.extra["dofs"] = model.size();
   r.extra["dofs_per_node"] = model.dofs_per_node();
   std::vector<ContactKind> kinds;
@@ -206,9 +225,10 @@ SimulationResult solve(const Scene& scene_in) {
     result.contacts[c].friction = scene.contacts[c].friction;  // as applied
     result.contacts[c].extra["contact_search"] =
         scene.contacts[c].search
-            ? fmt::format("all nodes: {} node pairs (every striker node off the target's axis, the "
-                          "target's end nodes against the striker); node {} reported while open",
-                          integ.pair_groups()[c].size(), scene.contacts[c].node)
+            ? fmt::format(
+                  "all nodes: {} node pairs (every striker node off the target's axis, the "
+                  "target's end nodes against the striker); node {} reported while open",
+                  integ.pair_groups()[c].size(), scene.contacts[c].node)
             : fmt::format("declared node {} only (the paper's method)", scene.contacts[c].node);
   }
   return result;

@@ -90,6 +90,14 @@ const std::vector<std::string>& contact_summary_keys() {
   return k;
 }
 
+const std::vector<std::string>& critical_step_keys() {
+  namespace k = critical_step_key;
+  static const std::vector<std::string> keys = {
+      k::kMethod,    k::kBound,    k::kOmegaMax,   k::kElementBoundDt, k::kLanczosDt,
+      k::kRitzOmega, k::kResidual, k::kIterations, k::kMargin,         k::kDtOverCritical};
+  return keys;
+}
+
 nlohmann::json schema_json() {
   using nlohmann::json;
   json states = json::object();
@@ -108,6 +116,7 @@ nlohmann::json schema_json() {
       {"contact_kinds", kinds},
       {"summary_keys", summary_keys()},
       {"contact_summary_keys", contact_summary_keys()},
+      {"critical_step_keys", critical_step_keys()},
       {"units",
        {{"t", "s"},
         {"R", "N"},

@@ -50,6 +50,24 @@ std::vector<std::string> history_columns(int n_contacts);
 /// "critical_step", "ida", "exact", "fenicsx", ...).
 const std::vector<std::string>& summary_keys();
 
+/// @brief Keys of summary.json's "critical_step" object (methods that step explicitly).
+namespace critical_step_key {
+inline constexpr const char* kMethod = "method";  ///< how omega_max was estimated
+inline constexpr const char* kBound = "bound";    ///< "element" | "subdomain" | "lanczos_confirmed" | "none"
+inline constexpr const char* kOmegaMax = "omega_max";               ///< rad/s, the proven upper bound used
+inline constexpr const char* kElementBoundDt = "element_bound_dt";  ///< s, the proven step
+inline constexpr const char* kLanczosDt = "lanczos_dt";       ///< s, step of Ritz value + residual (unsafe)
+inline constexpr const char* kRitzOmega = "ritz_omega";       ///< rad/s, top Ritz value: lower bound
+inline constexpr const char* kResidual = "lanczos_residual";  ///< rad^2/s^2, residual of the top Ritz pair
+inline constexpr const char* kIterations = "lanczos_iterations";
+inline constexpr const char* kMargin =
+    "margin";  ///< omega_max / ritz_omega - 1: dt at most this far below the limit
+inline constexpr const char* kDtOverCritical = "dt_over_critical";
+}  // namespace critical_step_key
+
+/// @brief Every key of summary.json's "critical_step" object, in file order.
+const std::vector<std::string>& critical_step_keys();
+
 /// @brief The keys every entry of summary.json's "contacts" array has.
 const std::vector<std::string>& contact_summary_keys();
 

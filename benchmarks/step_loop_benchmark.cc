@@ -1,0 +1,90 @@
+/// @file step_loop_benchmark.cc
+/// @brief The paper integrator's step loop against the hand-written kernel, in one run:
+/// ns per DOF-step of ExplicitContactIntegrator (S2 refined: two lumped frame bodies, one
+/// contact, linear kinematics) as a ratio to beamimpact::bench::StepKernel (a lumped frame chain
+/// of about the same DOFs), from 1e2 to 1e6 DOFs, and the set-up (model assembly, critical step,
+/// integrator construction) in units of the integrator's steps.
+/// Run: build/benchmarks/step_loop_benchmark [max_dofs]  (prints a Markdown table)
+/// Each timing is the best of 3 interleaved rounds of at least 0.2 s (this machine is shared).
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "step_kernel.hpp"
+
+#include <beamimpact/integrator/ExplicitContactIntegrator.hpp>
+#include <beamimpact/model/critical_dt.hpp>
+#include <beamimpact/scene/scene_io.hpp>
+#include <beamimpact/version.hpp>
+
+namespace {
+
+using namespace beamimpact;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+/// Seconds per call of f, best of `rounds` rounds of at least min_seconds each.
+template <class F>
+double per_call(F&& f, int rounds = 3, double min_seconds = 0.2) {
+  double best = 1e300;
+  for (int r = 0; r < rounds; ++r) {
+    long calls = 0;
+    const Clock::time_point t0 = Clock::now();
+    double t = 0.0;
+    do {
+      for (int i = 0; i < 16; ++i) f();
+      calls += 16;
+      t = seconds_since(t0);
+    } while (t < min_seconds);
+    best = std::min(best, t / static_cast<double>(calls));
+  }
+  return best;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const double max_dofs = argc > 1 ? std::atof(argv[1]) : 1e6;
+  std::printf(
+      "step_loop_benchmark, beamimpact %s; scene s2_transverse refined (lumped frame, one "
+      "contact), kernel: StepKernel frame chain\n\n",
+      kVersion);
+  std::printf(
+      "| DOFs | kernel ns/DOF-step | integrator ns/DOF-step | ratio | set-up (s) | set-up (steps) |\n");
+  std::printf("|---:|---:|---:|---:|---:|---:|\n");
+  for (double target = 1e2; target <= max_dofs * 1.0001; target *= 10) {
+    // Two bodies of n elements each: about 6 n DOFs.
+    const int n = std::max(2, static_cast<int>(target / 6));
+    const Clock::time_point t0 = Clock::now();
+    const Scene s =
+        load_scene(std::string(BEAMIMPACT_SOURCE_DIR) + "/verification/scenes/paper/s2_transverse.toml",
+                   {"bodies.A.elements=" + std::to_string(n), "bodies.B.elements=" + std::to_string(n),
+                    "time.dt=\"auto\""});
+    const Effects fx = derive_effects(s);
+    const Model m(s, fx.bending);
+    const double dt = 0.5 * critical_step(m).dt;
+    paper::ExplicitContactIntegrator integ(m, s, fx, dt);
+    const double setup = seconds_since(t0);
+    bench::StepKernel kernel(static_cast<std::size_t>(m.size() / 3), true);
+    const double dofs = m.size(), kdofs = static_cast<double>(kernel.dofs());
+    double t_int = 1e300, t_ker = 1e300;
+    for (int round = 0; round < 3; ++round) {  // interleaved: both see the same machine load
+      t_ker = std::min(t_ker, per_call([&] { kernel.step(); }, 1));
+      t_int = std::min(t_int, per_call([&] { integ.step(); }, 1));
+    }
+    if (!std::isfinite(integ.U().norm()) || !std::isfinite(kernel.displacement()[0])) {
+      std::fprintf(stderr, "step_loop_benchmark: a run went unstable at %g DOFs\n", dofs);
+      return 1;
+    }
+    const double ns_int = t_int / dofs * 1e9, ns_ker = t_ker / kdofs * 1e9;
+    std::printf("| %.0f | %.2f | %.2f | %.2f | %.4f | %.0f |\n", dofs, ns_ker, ns_int, ns_int / ns_ker, setup,
+                setup / t_int);
+    std::fflush(stdout);
+  }
+  return 0;
+}

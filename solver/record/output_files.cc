@@ -66,7 +66,8 @@ nlohmann::json summary_json(const Scene& scene, const SimulationResult& r) {
                      {"rotary_inertia", to_string(scene.model.rotary_inertia)},
                      {"kinematics", to_string(scene.model.kinematics)},
                      {"rayleigh_mass", scene.model.rayleigh_mass},
-                     {"rayleigh_stiffness", scene.model.rayleigh_stiffness}}}};
+                     {"rayleigh_stiffness", scene.model.rayleigh_stiffness}}},
+                   {"output", {{"history", scene.output.history}, {"fields", scene.output.fields}}}};
   json s = {{"scene", scene.name},
             {"scene_file", scene.file},
             {"scene_sha256", scene.sha256},
@@ -130,7 +131,10 @@ void write_outputs(const Scene& scene, const SimulationResult& r, const std::fil
         append(b, v, "energy/momentum column", row.t);
       b.push_back('\n');
     }
-    write_file_atomic(history, fmt::to_string(b));
+    if (scene.output.history)
+      write_file_atomic(history, fmt::to_string(b));
+    else
+      std::filesystem::remove(history);  // [output] history = false: no rows were kept
     write_file_atomic(summary, summary_json(scene, r).dump(2) + "\n");
   } catch (...) {
     std::filesystem::remove(history);

@@ -13,7 +13,7 @@ namespace beamimpact {
 /// @brief The summary.json document of a run (scene identity, settings, defaults, results).
 nlohmann::json summary_json(const Scene& scene, const SimulationResult& result);
 
-/// @brief Writes dir/history.csv then dir/summary.json. summary.json is written last and
+/// @brief Writes dir/history.csv (not with [output] history = false) then dir/summary.json. summary.json is written last and
 /// atomically: its presence marks a complete run. A stale summary.json in dir is removed first.
 /// Throws std::runtime_error if the result holds a non-finite number (nothing complete is left).
 void write_outputs(const Scene& scene, const SimulationResult& result, const std::filesystem::path& dir);

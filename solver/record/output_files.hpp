@@ -3,12 +3,16 @@
 /// @brief Writes one run's history.csv and summary.json (columns and keys of interface.md).
 
 #include <filesystem>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include <beamimpact/record/SimulationResult.hpp>
 
 namespace beamimpact {
+
+/// @brief One history.csv row as numbers, in the order of history_columns() (state as its code).
+std::vector<double> history_values(const HistoryRow& row);
 
 /// @brief The summary.json document of a run (scene identity, settings, defaults, results).
 nlohmann::json summary_json(const Scene& scene, const SimulationResult& result);

@@ -14,8 +14,10 @@ import sys
 
 from . import _core
 from ._core import SceneError
+from .fields import read_fields
 
-__all__ = ["SceneError", "Scene", "Run", "load_scene", "run", "read_run", "compare", "sweep", "methods"]
+__all__ = ["SceneError", "Scene", "Run", "load_scene", "run", "read_run", "read_fields", "compare", "norm",
+           "sweep", "methods"]
 __version__ = _core.__version__
 
 

@@ -160,3 +160,15 @@ def test_no_history_no_memory_growth_over_a_million_steps():
     small, big = peak_kb(10_000, False), peak_kb(1_000_000, False)
     assert big - small < 10_000
     assert peak_kb(100_000, True) - small > 10_000
+
+
+def test_fields_from_python_read_back(tmp_path):
+    # run(fields=True) writes the same VTK fields as `beamimpact run --fields`; read_fields streams
+    # them: one frame per history row, the striker node (A's end, node 10) moving as ua in history.
+    r = beamimpact.run(PAPER / "s1_central.toml", out=tmp_path / "s1", fields=True, progress=False)
+    frames = list(beamimpact.read_fields(tmp_path / "s1"))
+    assert [t for t, _ in frames] == list(r.columns["t"])
+    assert [f["displacement"][10, 0] for _, f in frames] == list(r.columns["ua_x"])
+    assert all(len(f["points"]) == 22 for _, f in frames)
+    with pytest.raises(beamimpact.SceneError, match="output.fields.*output directory"):
+        beamimpact.run(PAPER / "s1_central.toml", fields=True, progress=False)

@@ -58,7 +58,10 @@ class Scene:
         return Scene(self._source, self._overrides + extra, _is_dict=self._is_dict)
 
     def __getattr__(self, name):
-        return getattr(self.__dict__["_scene"], name)
+        scene = self.__dict__.get("_scene")
+        if scene is None:
+            raise AttributeError(name)
+        return getattr(scene, name)
 
     def __repr__(self):
         return f"<beamimpact.Scene {self.name!r} from {self.file}>"

@@ -32,8 +32,12 @@ void print_result(const SimulationResult& r, const std::string& out) {
     fmt::print("\n");
   }
   fmt::print("  energy {:.6g} -> {:.6g} J\n", r.energy_initial, r.energy_final);
-  fmt::print("  wrote {}/history.csv and {}/summary.json\n", out, out);
-  if (std::filesystem::exists(FieldWriter::collection(out))) fmt::print("  wrote {}/fields.pvd and {}/fields/\n", out, out);
+  if (std::filesystem::exists(std::filesystem::path(out) / "history.csv"))
+    fmt::print("  wrote {}/history.csv and {}/summary.json\n", out, out);
+  else
+    fmt::print("  wrote {}/summary.json (no history.csv: [output] history = false)\n", out);
+  if (std::filesystem::exists(FieldWriter::collection(out)))
+    fmt::print("  wrote {}/fields.pvd and {}/fields/\n", out, out);
 }
 
 void simulate(const RunArgs& a) {

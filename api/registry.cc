@@ -18,7 +18,8 @@ const std::vector<Method>& methods() {
     paper.name = "paper";
     paper.summary = "Pu & Chi (2011) explicit dynamic-contact integrator (solver/)";
     paper.options_table = "paper";
-    paper.solve = paper::solve;
+    paper.solve = [](const Scene& scene) { return paper::solve(scene); };
+    paper.solve_with_fields = paper::solve;
     t.push_back(paper);
 #ifdef BEAMIMPACT_HAVE_exact
     Method exact;

@@ -4,6 +4,7 @@
 /// style of Ceres' LinearSolver::Create). The CLI, verify, sweep and the C++ API reach methods
 /// only through it. Adding a method touches this table (registry.cc) and the method's own folder.
 
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <string_view>
@@ -32,6 +33,9 @@ struct Method {
   bool slow = false;  ///< typically seconds or more per run: scheduled first, never timed in tests
   /// @brief In-process solver; empty for an external program.
   std::function<SimulationResult(const Scene&)> solve;
+  /// @brief In-process solver that also writes VTK fields ([output] fields = true) into the run
+  /// directory given; empty for a method without field output.
+  std::function<SimulationResult(const Scene&, const std::filesystem::path&)> solve_with_fields;
   /// @brief External program: argv prefix, paths relative to the source root (or the installed
   /// share/beamimpact); it is run as PREFIX SCENE --out DIR --quiet [ARGS].
   std::vector<std::string> command;

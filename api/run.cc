@@ -1,6 +1,7 @@
 #include <beamimpact/api/run.hpp>
 
 #include <beamimpact/api/registry.hpp>
+#include <beamimpact/record/FieldWriter.hpp>
 #include <beamimpact/record/output_files.hpp>
 #include <beamimpact/scene/SceneError.hpp>
 #include <beamimpact/scene/run_cost.hpp>
@@ -17,10 +18,25 @@ SimulationResult run(const Scene& scene, std::string_view method_name, const Run
     throw SceneError(scene.file, "--method",
                      "'" + m.name + "' is an external program, not callable in-process; it runs as: " +
                          m.command.front() + " " + m.command.back() + " SCENE --out DIR");
-  if (options.out) std::filesystem::remove(*options.out / "summary.json");
+  if (options.out) {  // nothing of an earlier run in the directory may vouch for this one
+    std::filesystem::remove(*options.out / "summary.json");
+    std::filesystem::remove(FieldWriter::collection(*options.out));
+  }
   // Before anything is allocated: refuse a run far beyond the ordinary (the estimate is printed).
   check_run_cost(scene, scene.time.dt ? *scene.time.dt : estimate_auto_dt(scene));
-  SimulationResult r = m.solve(scene);
+  SimulationResult r;
+  if (scene.output.fields) {
+    if (!m.solve_with_fields)
+      throw SceneError(scene.file, "output.fields",
+                       "expected false for method '" + m.name +
+                           "': fields are written by the methods paper and fenicsx");
+    if (!options.out)
+      throw SceneError(scene.file, "output.fields",
+                       "expected an output directory to write the fields into (--out)");
+    r = m.solve_with_fields(scene, *options.out);
+  } else {
+    r = m.solve(scene);
+  }
   if (options.out) write_outputs(scene, r, *options.out);
   return r;
 }

@@ -18,4 +18,13 @@ echo "$out"
 # S1, two equal free rods (references.md 1): the exact impulse is m v0 / 2 = 4 N s.
 grep -q "impulse 4 N s (exact)" <<<"$out" || { echo "install test: expected impulse 4 N s"; exit 1; }
 "$prefix/bin/beamimpact" methods > /dev/null
+# The Python package, when the build has it: importable from the prefix, same impulse.
+pkg=$prefix/lib/python3/dist-packages
+if [[ -d $pkg/beamimpact ]]; then
+  imp=$(PYTHONPATH=$pkg PYTHONDONTWRITEBYTECODE=1 /usr/bin/python3 -c "import beamimpact
+r = beamimpact.run('$scene', method='exact', progress=False)
+print(round(r.summary['contacts'][0]['impulse_normal'], 9))")
+  [[ $imp == 4.0 ]] || { echo "install test: the installed Python package gave impulse $imp, expected 4 N s"; exit 1; }
+  echo "install test: Python package imported from $pkg, impulse $imp N s"
+fi
 echo "install test: passed (prefix $prefix)"

@@ -59,9 +59,11 @@ class Continuum:
         msh = self.mesh
         W = fem.FunctionSpace(msh, ("DG", 0))
         Eb, rhob = fem.Function(W), fem.Function(W)            # E * b (N/m), rho * b (kg/m^2)
+        self.E, self.nu = fem.Function(W), nu                 # E (N/m^2) and nu, for the stress field
         mid = W.tabulate_dof_coordinates()[:, :2]             # DG0 dofs sit at cell midpoints
         for r in self.rects:
             inside = r.contains(mid, self.tol)
+            self.E.x.array[inside] = r.E
             Eb.x.array[inside] = r.E * r.b
             rhob.x.array[inside] = r.rho * r.b
         u, v = ufl.TrialFunction(self.V), ufl.TestFunction(self.V)

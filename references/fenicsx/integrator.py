@@ -98,8 +98,9 @@ def setup(scene, opts, cont, contacts):
                 end=nsteps * dt, cn=cn, csets=csets)
 
 
-def run(cont, st, stats, progress=True):
-    """The time loop. Returns history rows, summaries of energy/momentum and final velocities."""
+def run(cont, st, stats, progress=True, fields=None):
+    """The time loop. Returns history rows, summaries of energy/momentum and final velocities.
+    fields: a fields.FieldOutput that receives the displacement at every output row, or None."""
     comm, n2 = cont.comm, 2 * cont.n_own
     dt, minv, mass = st["dt"], st["minv"], cont.mass
     cn, csets = st["cn"], st["csets"]
@@ -176,6 +177,8 @@ def run(cont, st, stats, progress=True):
                 row += [infos[k]["R"], infos[k]["tau"], gap, *uc[c.centre], *vnc_mid[c.centre], *ub, *vb,
                         STATE_CODES[infos[k]["state"]]]
             rows.append(row + [kin, strain, diss_row, px, py])
+            if fields is not None:
+                fields.write(t, u)
         work_sum += w_n
         g_prev = uc
         u_prev[:] = u

@@ -51,6 +51,8 @@ def _parse(argv):
     p.add_argument("--output-interval", type=float, help="s between history rows")
     p.add_argument("--end", type=float, help="end time (s), overrides the scene's time.end")
     p.add_argument("--quiet", action="store_true", help="no progress messages on stderr")
+    p.add_argument("--fields", action="store_true",
+                   help="also write VTK fields OUT/fields.pvd (as [output] fields = true in the scene)")
     return p.parse_args(argv)
 
 
@@ -119,7 +121,16 @@ def main(argv):
     rule = (f"gaps shorter than {merge_gap:.6g} s (3 scene steps) are merged" if scene.dt else
             f"gaps shorter than {merge_gap:.6g} s (3 output intervals) are merged")
     stats = [ContactStats(merge_gap, rule) for _ in contacts]
-    res = integrator.run(cont, st, stats, progress=not args.quiet)
+    fields = None
+    if args.fields or scene.fields:
+        from fields import FieldOutput, remove_stale_fields
+        if comm.rank == 0:
+            remove_stale_fields(args.out)
+        comm.Barrier()
+        fields = FieldOutput(cont, args.out)
+    res = integrator.run(cont, st, stats, progress=not args.quiet, fields=fields)
+    if fields is not None:
+        fields.close()
     wall = time.time() - wall0
 
     assumed = dict(scene.assumed)

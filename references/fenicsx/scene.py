@@ -77,9 +77,10 @@ class Scene:
     effects: dict
     fenicsx: dict
     assumed: dict
+    fields: bool = False  # [output] fields: VTK fields (fields.py)
 
 
-_TOP = {"name", "description", "time", "model", "bodies", "contacts", "effects",
+_TOP = {"name", "description", "time", "model", "bodies", "contacts", "effects", "output",
         "fenicsx", "paper", "ida", "exact"}
 
 
@@ -315,6 +316,12 @@ def load_scene(path, overrides=None):
     for tbl in ("paper", "ida", "exact"):
         if tbl in doc and not isinstance(doc[tbl], dict):
             raise SceneError(file, tbl, "expected a table")
+    o = _Table(doc.get("output", {}), file, "output", assumed)
+    fields = o.boolean("fields", False)
+    if not o.boolean("history", True):
+        o.fail("history", "the FEniCSx reference keeps its history rows (its summary is made from "
+                          "them); expected true")
+    o.finish()
     fen = doc.get("fenicsx", {})
     if not isinstance(fen, dict):
         raise SceneError(file, "fenicsx", "expected a table")
@@ -322,7 +329,7 @@ def load_scene(path, overrides=None):
     return Scene(file=file, sha256=hashlib.sha256(data).hexdigest(), name=name,
                  description=description, dt=dt, fraction=fraction, end=end,
                  output_every=output_every, model=model, bodies=bodies, contacts=contacts,
-                 effects=effects, fenicsx=fen, assumed=assumed)
+                 effects=effects, fenicsx=fen, assumed=assumed, fields=fields)
 
 
 def _default_vec(b, key):

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 
 #include <beamimpact/integrator/ExplicitContactIntegrator.hpp>
 #include <beamimpact/model/critical_dt.hpp>
 #include <beamimpact/model/deformed_geometry.hpp>
+#include <beamimpact/record/FieldWriter.hpp>
 #include <beamimpact/record/ResultRecorder.hpp>
 #include <beamimpact/scene/SceneError.hpp>
 #include <beamimpact/scene/TableReader.hpp>
@@ -139,11 +141,31 @@ HistoryRow make_row(const ExplicitContactIntegrator& in) {
   return row;
 }
 
-/// Records the complete step p: contact samples and real gaps every step, a row every
-/// output_every-th step and at the last one. Throws when the energy is no longer finite or has grown
-/// 1e6-fold.
+/// The contact forces of every pair on the nodes: R n + tau t on the striker node, the reaction
+/// on the target's two nodes by the struck point's weights.
+std::vector<NodalForce> contact_forces(const ExplicitContactIntegrator& in) {
+  const Model& m = in.model();
+  std::vector<NodalForce> out;
+  for (std::size_t p = 0; p < in.pairs().size(); ++p) {
+    const ContactPair& pair = in.pairs()[p];
+    const ContactForce& f = in.forces()[p];
+    if (f.R == 0.0 && f.tau == 0.0) continue;
+    const Vec2 F{f.R * pair.normal()[0] + f.tau * pair.tangent()[0],
+                 f.R * pair.normal()[1] + f.tau * pair.tangent()[1]};
+    out.push_back({pair.striker_node(), F});
+    const int n1 = m.node_id(pair.target_body(), pair.element());
+    out.push_back({n1, {-pair.xi1() * F[0], -pair.xi1() * F[1]}});
+    out.push_back({n1 + 1, {-pair.xi2() * F[0], -pair.xi2() * F[1]}});
+  }
+  return out;
+}
+
+/// Records the complete step p: contact samples and real gaps every step, a row (and the fields,
+/// when asked for) every output_every-th step and at the last one. Throws when the energy is no
+/// longer finite or has grown 1e6-fold.
 void record_step(const ExplicitContactIntegrator& integ, long p, long N, const Scene& scene,
-                 double critical_dt, std::vector<DeformedSurface>& surfaces, ResultRecorder& rec) {
+                 double critical_dt, std::vector<DeformedSurface>& surfaces, ResultRecorder& rec,
+                 FieldWriter* fields) {
   const auto& groups = integ.pair_groups();
   for (std::size_t c = 0; c < groups.size(); ++c) {
     const ContactForce f = view(integ, groups[c]).f;
@@ -160,6 +182,7 @@ void record_step(const ExplicitContactIntegrator& integ, long p, long N, const S
         "step {:.6g} s",
         row.t, E, E0, integ.dt(), critical_dt));
   rec.track_momentum(row.momentum);
+  if (fields) fields->write(row.t, integ.U(), integ.V(), contact_forces(integ));
   rec.add_row(std::move(row));
 }
 
@@ -183,7 +206,7 @@ Options Options::read(const Scene& scene, std::map<std::string, std::string>* as
   return o;
 }
 
-SimulationResult solve(const Scene& scene_in) {
+SimulationResult solve(const Scene& scene_in, const std::filesystem::path& fields_dir) {
   ResultRecorder rec(scene_in, "paper", ContactSampling::kFixedSteps);
   SimulationResult& r = rec.result();
   const Effects effects = derive_effects(scene_in);
@@ -204,13 +227,16 @@ SimulationResult solve(const Scene& scene_in) {
   std::vector<DeformedSurface> surfaces;  // the real gap of each pair, from the deformed geometry
   for (const ContactPair& pair : integ.pairs())
     surfaces.emplace_back(model, pair.target_body(), pair.striker_node());
+  std::optional<FieldWriter> fields;
+  if (!fields_dir.empty()) fields.emplace(model, scene, fields_dir);
   Progress progress("paper", scene.time.end);
   for (long p = 0;; ++p) {
-    record_step(integ, p, N, scene, cs.dt, surfaces, rec);
+    record_step(integ, p, N, scene, cs.dt, surfaces, rec, fields ? &*fields : nullptr);
     if (p == N) break;
     integ.step();
     progress.update(integ.time());
   }
+  if (fields) fields->finish();
 
   for (int b = 0; b < model.num_bodies(); ++b)
     rec.set_final_velocity(scene.bodies[b].name, {integ.momentum(b, 0) / model.body_mass(b),

@@ -3,6 +3,7 @@
 /// @brief The method "paper": the Pu & Chi (2011) explicit dynamic-contact integrator run on a
 /// scene, start to end.
 
+#include <filesystem>
 #include <string>
 
 #include <beamimpact/contact/ContactPair.hpp>
@@ -25,6 +26,9 @@ struct Options {
 
 /// @brief Runs the scene with the paper's integrator. Throws SceneError for bad settings
 /// (dt above the critical step) and std::runtime_error if the run diverges.
-SimulationResult solve(const Scene& scene);
+/// @param scene the scene
+/// @param fields_dir when not empty, the run directory that receives the VTK fields of every
+/// output row (record/FieldWriter.hpp; the API passes it when [output] fields = true)
+SimulationResult solve(const Scene& scene, const std::filesystem::path& fields_dir = {});
 
 }  // namespace beamimpact::paper

@@ -43,9 +43,9 @@ void ResultRecorder::track_momentum(const Vec2& p) {
 
 void ResultRecorder::add_row(HistoryRow row) {
   const double E = row.kinetic + row.strain;
-  if (r_.history.empty()) r_.energy_initial = E;
+  if (rows_++ == 0) r_.energy_initial = E;
   r_.energy_final = E;
-  r_.history.push_back(std::move(row));
+  if (scene_.output.history) r_.history.push_back(std::move(row));
 }
 
 SimulationResult ResultRecorder::finish(const std::vector<ContactKind>& kinds) {

@@ -58,7 +58,7 @@ class ResultRecorder {
   void track_momentum(const Vec2& p);
 
   /// @brief One output row: the first row's kinetic + strain energy is E0, the last one's is the
-  /// final energy.
+  /// final energy. The row is kept for history.csv unless the scene says [output] history = false.
   void add_row(HistoryRow row);
 
   /// @brief Centre-of-mass velocity (m/s) of a body at the end of the run.
@@ -78,6 +78,7 @@ class ResultRecorder {
   SimulationResult r_;
   std::vector<ContactStats> stats_;
   std::vector<std::pair<double, double>> real_gap_;  ///< per contact: smallest real gap (m) and its time (s)
+  long rows_ = 0;  ///< output rows seen (kept or not: [output] history)
   bool momentum_started_ = false;
   Vec2 p0_{};
   std::chrono::steady_clock::time_point wall0_;

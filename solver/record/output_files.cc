@@ -12,20 +12,20 @@
 namespace beamimpact {
 namespace {
 
-void append(fmt::memory_buffer& b, double v, const char* name, double t) {
-  if (!std::isfinite(v))
-    throw std::runtime_error(
-        fmt::format("non-finite value of '{}' at t = {} s: the run diverged "
-                    "(a dt above the stability limit?)",
-                    name, t));
-  fmt::format_to(std::back_inserter(b), ",{}", v);
-}
-
 void check_finite(double v, const char* what) {
   if (!std::isfinite(v)) throw std::runtime_error(fmt::format("non-finite {} in the result", what));
 }
 
 }  // namespace
+
+std::vector<double> history_values(const HistoryRow& row) {
+  std::vector<double> v{row.t};
+  for (const ContactSample& c : row.contacts)
+    v.insert(v.end(), {c.R, c.tau, c.gap, c.ua[0], c.ua[1], c.va[0], c.va[1], c.ub[0], c.ub[1], c.vb[0],
+                       c.vb[1], static_cast<double>(static_cast<int>(c.state))});
+  v.insert(v.end(), {row.kinetic, row.strain, row.dissipated, row.momentum[0], row.momentum[1]});
+  return v;
+}
 
 nlohmann::json summary_json(const Scene& scene, const SimulationResult& r) {
   using nlohmann::json;
@@ -66,7 +66,8 @@ nlohmann::json summary_json(const Scene& scene, const SimulationResult& r) {
                      {"rotary_inertia", to_string(scene.model.rotary_inertia)},
                      {"kinematics", to_string(scene.model.kinematics)},
                      {"rayleigh_mass", scene.model.rayleigh_mass},
-                     {"rayleigh_stiffness", scene.model.rayleigh_stiffness}}}};
+                     {"rayleigh_stiffness", scene.model.rayleigh_stiffness}}},
+                   {"output", {{"history", scene.output.history}, {"fields", scene.output.fields}}}};
   json s = {{"scene", scene.name},
             {"scene_file", scene.file},
             {"scene_sha256", scene.sha256},
@@ -119,18 +120,21 @@ void write_outputs(const Scene& scene, const SimulationResult& r, const std::fil
     const auto cols = history_columns(nc);
     fmt::format_to(std::back_inserter(b), "{}\n", fmt::join(cols, ","));
     for (const HistoryRow& row : r.history) {
-      fmt::format_to(std::back_inserter(b), "{}", row.t);
-      for (const ContactSample& c : row.contacts) {
-        for (double v :
-             {c.R, c.tau, c.gap, c.ua[0], c.ua[1], c.va[0], c.va[1], c.ub[0], c.ub[1], c.vb[0], c.vb[1]})
-          append(b, v, "contact column", row.t);
-        fmt::format_to(std::back_inserter(b), ",{}", static_cast<int>(c.state));
+      const std::vector<double> values = history_values(row);
+      for (std::size_t i = 0; i < values.size(); ++i) {
+        if (!std::isfinite(values[i]))
+          throw std::runtime_error(
+              fmt::format("non-finite value of '{}' at t = {} s: the run diverged "
+                          "(a dt above the stability limit?)",
+                          cols[i], row.t));
+        fmt::format_to(std::back_inserter(b), "{}{}", i ? "," : "", values[i]);
       }
-      for (double v : {row.kinetic, row.strain, row.dissipated, row.momentum[0], row.momentum[1]})
-        append(b, v, "energy/momentum column", row.t);
       b.push_back('\n');
     }
-    write_file_atomic(history, fmt::to_string(b));
+    if (scene.output.history)
+      write_file_atomic(history, fmt::to_string(b));
+    else
+      std::filesystem::remove(history);  // [output] history = false: no rows were kept
     write_file_atomic(summary, summary_json(scene, r).dump(2) + "\n");
   } catch (...) {
     std::filesystem::remove(history);

@@ -3,6 +3,7 @@
 /// @brief Writes one run's history.csv and summary.json (columns and keys of interface.md).
 
 #include <filesystem>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -10,10 +11,13 @@
 
 namespace beamimpact {
 
+/// @brief One history.csv row as numbers, in the order of history_columns() (state as its code).
+std::vector<double> history_values(const HistoryRow& row);
+
 /// @brief The summary.json document of a run (scene identity, settings, defaults, results).
 nlohmann::json summary_json(const Scene& scene, const SimulationResult& result);
 
-/// @brief Writes dir/history.csv then dir/summary.json. summary.json is written last and
+/// @brief Writes dir/history.csv (not with [output] history = false) then dir/summary.json. summary.json is written last and
 /// atomically: its presence marks a complete run. A stale summary.json in dir is removed first.
 /// Throws std::runtime_error if the result holds a non-finite number (nothing complete is left).
 void write_outputs(const Scene& scene, const SimulationResult& result, const std::filesystem::path& dir);

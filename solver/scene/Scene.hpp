@@ -23,6 +23,16 @@ struct TimeSettings {
   bool allow_long_run = false;        ///< accept a run beyond the ordinary cost (run_cost.hpp)
 };
 
+/// @brief What a run writes besides summary.json: [output] table.
+struct OutputSettings {
+  /// history.csv rows kept and written (false: only the first and last rows' energies reach the
+  /// summary; memory no longer grows with the number of steps).
+  bool history = true;
+  /// VTK XML fields (one .vtu per output row and a .pvd collection) in the run directory's
+  /// fields/ folder, for ParaView (record/FieldWriter.hpp).
+  bool fields = false;
+};
+
 /// @brief Mass lumping choice for the element mass matrix.
 enum class MassKind { kLumped, kConsistent };
 /// @brief Lumped rotary inertia: HRZ (m le^2/78) or section (rho I le/2).
@@ -101,6 +111,7 @@ struct Scene {
   std::string name, description;
   TimeSettings time;
   ModelSettings model;
+  OutputSettings output;
   std::vector<Body> bodies;
   std::vector<Contact> contacts;
   EffectOverrides effects;

@@ -305,6 +305,15 @@ void apply_overrides(toml::table& root, const std::vector<std::string>& override
   }
 }
 
+/// @brief Reads the optional [output] table.
+void read_output(TableReader& top, Scene& sc) {
+  const toml::table empty;
+  TableReader r(sub_table(top, "output", false, empty), sc.file, "output", &sc.assumed);
+  sc.output.history = r.boolean_or("history", true);
+  sc.output.fields = r.boolean_or("fields", false);
+  r.finish();
+}
+
 /// @brief Reads the required [time] and the optional [model] table.
 void read_time_and_model(TableReader& top, Scene& sc) {
   const toml::table empty;
@@ -469,10 +478,11 @@ void check_whole_scene(const Scene& sc) {
 
 }  // namespace
 
-Scene load_scene(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
-  Scene sc;
-  sc.file = path.string();
-  toml::table root = parse_scene_text(read_scene_file(path, sc), sc);
+namespace {
+
+/// @brief Reads and validates the scene whose file, sha256 and text are given.
+Scene read_scene(Scene sc, const std::string& text, const std::vector<std::string>& overrides) {
+  toml::table root = parse_scene_text(text, sc);
   apply_overrides(root, overrides, sc);
 
   TableReader top(root, sc.file, "", &sc.assumed);
@@ -482,10 +492,28 @@ Scene load_scene(const std::filesystem::path& path, const std::vector<std::strin
   read_bodies(top, sc);
   read_contacts(top, sc);
   read_effects(top, sc);
+  read_output(top, sc);
   keep_method_tables(top, sc);
   top.finish();
   check_whole_scene(sc);
   return sc;
+}
+
+}  // namespace
+
+Scene load_scene(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
+  Scene sc;
+  sc.file = path.string();
+  const std::string text = read_scene_file(path, sc);
+  return read_scene(std::move(sc), text, overrides);
+}
+
+Scene load_scene_text(const std::string& text, const std::string& label,
+                      const std::vector<std::string>& overrides) {
+  Scene sc;
+  sc.file = label;
+  sc.sha256 = sha256_hex(text);
+  return read_scene(std::move(sc), text, overrides);
 }
 
 }  // namespace beamimpact

@@ -15,4 +15,13 @@ namespace beamimpact {
 /// and validates everything. Throws SceneError naming the file, the key and what was expected.
 Scene load_scene(const std::filesystem::path& path, const std::vector<std::string>& overrides = {});
 
+/// @brief As load_scene(), from TOML text already in memory (the Python module's
+/// Scene.from_dict). `label` stands for the file name in messages and in summary.json;
+/// scene_sha256 is that of `text`.
+/// @param text the scene as TOML
+/// @param label what messages name as the file ("<dict>")
+/// @param overrides as for load_scene()
+Scene load_scene_text(const std::string& text, const std::string& label,
+                      const std::vector<std::string>& overrides = {});
+
 }  // namespace beamimpact

@@ -34,6 +34,27 @@ TEST(SceneIo, RecordsAssumedDefaults) {
   const Scene s = load_scene(paper_scene("s1_central"));
   EXPECT_EQ(s.assumed.at("time.allow_above_critical"), "false");
   EXPECT_EQ(s.assumed.at("model.rayleigh_mass"), "0");
+  EXPECT_EQ(s.assumed.at("output.fields"), "false");
+  EXPECT_EQ(s.assumed.at("output.history"), "true");
+  EXPECT_FALSE(s.output.fields);
+}
+
+TEST(SceneIo, SceneTextLoadsAsTheFileDoes) {
+  std::ifstream in(paper_scene("s1_central"));
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const Scene file = load_scene(paper_scene("s1_central"), {"output.fields=true"});
+  const Scene mem = load_scene_text(text, "<dict>", {"output.fields=true"});
+  EXPECT_EQ(mem.sha256, file.sha256);  // the same bytes
+  EXPECT_EQ(mem.file, "<dict>");
+  EXPECT_TRUE(mem.output.fields);
+  EXPECT_EQ(mem.assumed, file.assumed);
+  try {
+    load_scene_text("name = 3\n", "<dict>");
+    FAIL() << "a bad scene text loaded";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.key(), "name");
+    EXPECT_NE(std::string(e.what()).find("<dict>"), std::string::npos) << e.what();
+  }
 }
 
 TEST(SceneIo, SetOverridesByPathIndexAndName) {
@@ -103,6 +124,8 @@ TEST(SceneIo, BadInputNamesFileKeyAndExpectation) {
        "one of \"lumped\" \"consistent\""},
       {"syntax", replace(g, "[time]", "[time"), "", "TOML syntax error at line"},
       {"bad dt", replace(g, "dt = 0.01", "dt = \"fast\""), "time.dt", "\"auto\""},
+      {"fields not a boolean", g + "\n[output]\nfields = \"yes\"\n", "output.fields", "expected true or false"},
+      {"unknown output key", g + "\n[output]\nvtk = true\n", "output.vtk", "unknown key"},
   };
   for (const BadCase& c : cases) {
     const SceneError e = error_of(c.text);

@@ -6,9 +6,14 @@
 namespace beamimpact {
 namespace {
 bool g_enabled = true;  // set once by the CLI before any run starts
+std::function<void(const std::string&, double, double)> g_listener;
 }  // namespace
 
 void Progress::set_enabled(bool enabled) { g_enabled = enabled; }
+
+void Progress::set_listener(std::function<void(const std::string&, double, double)> listener) {
+  g_listener = std::move(listener);
+}
 
 Progress::Progress(std::string label, double total)
     : label_(std::move(label)), total_(total), start_(std::chrono::steady_clock::now()), last_(start_) {}
@@ -18,6 +23,10 @@ void Progress::report(double value) {
   const auto now = steady_clock::now();
   if (!g_enabled || now - start_ < seconds(1) || now - last_ < milliseconds(500)) return;
   last_ = now;
+  if (g_listener) {
+    g_listener(label_, value, total_);
+    return;
+  }
   const double pct = total_ > 0 ? 100.0 * value / total_ : 0.0;
   // On a terminal, one line rewritten in place; in a log, one line per update.
   const bool tty = isatty(fileno(stderr));

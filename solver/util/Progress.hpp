@@ -4,6 +4,7 @@
 /// updates per second; never on stdout (which carries results).
 
 #include <chrono>
+#include <functional>
 #include <string>
 
 namespace beamimpact {
@@ -21,6 +22,9 @@ class Progress {
   ~Progress();
   /// @brief Silences every Progress of this process (the CLI's --quiet); on by default.
   static void set_enabled(bool enabled);
+  /// @brief Sends the updates to `listener` (label, value, total) instead of stderr (the Python
+  /// module shows them in a notebook); an empty function restores stderr. Set before a run.
+  static void set_listener(std::function<void(const std::string&, double, double)> listener);
 
  private:
   void report(double value);

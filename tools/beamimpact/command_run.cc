@@ -6,6 +6,7 @@
 
 #include <beamimpact/api/registry.hpp>
 #include <beamimpact/api/run.hpp>
+#include <beamimpact/record/FieldWriter.hpp>
 #include <beamimpact/schema/output_schema.hpp>
 #include <beamimpact/util/Progress.hpp>
 
@@ -17,6 +18,7 @@ struct RunArgs {
   std::vector<std::string> sets;
   bool quiet = false;
   bool allow_long = false;
+  bool fields = false;
 };
 
 void print_result(const SimulationResult& r, const std::string& out) {
@@ -30,13 +32,19 @@ void print_result(const SimulationResult& r, const std::string& out) {
     fmt::print("\n");
   }
   fmt::print("  energy {:.6g} -> {:.6g} J\n", r.energy_initial, r.energy_final);
-  fmt::print("  wrote {}/history.csv and {}/summary.json\n", out, out);
+  if (std::filesystem::exists(std::filesystem::path(out) / "history.csv"))
+    fmt::print("  wrote {}/history.csv and {}/summary.json\n", out, out);
+  else
+    fmt::print("  wrote {}/summary.json (no history.csv: [output] history = false)\n", out);
+  if (std::filesystem::exists(FieldWriter::collection(out)))
+    fmt::print("  wrote {}/fields.pvd and {}/fields/\n", out, out);
 }
 
 void simulate(const RunArgs& a) {
   Progress::set_enabled(!a.quiet);
   std::vector<std::string> sets = a.sets;
   if (a.allow_long) sets.push_back("time.allow_long_run=true");
+  if (a.fields) sets.push_back("output.fields=true");
   const SimulationResult r = beamimpact::run(a.scene, a.method, RunOptions{sets, a.out});
   if (!a.quiet) print_result(r, a.out);
 }
@@ -65,6 +73,8 @@ void add_command_run(CLI::App& app) {
   sub->add_flag("--quiet", args->quiet, "Print nothing on success (no progress either)");
   sub->add_flag("--allow-long", args->allow_long,
                 "Run even when the cost estimate is far beyond the ordinary (as time.allow_long_run = true)");
+  sub->add_flag("--fields", args->fields,
+                "Also write VTK fields for ParaView: DIR/fields.pvd and DIR/fields/*.vtu (as output.fields = true)");
   sub->callback([args] { simulate(*args); });
 }
 

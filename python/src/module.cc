@@ -1,0 +1,146 @@
+/// @file module.cc
+/// @brief The compiled part of the Python package `beamimpact` (beamimpact._core): scene loading,
+/// runs through the method registry, reading run directories and the compare command's norms,
+/// each a thin call into the C++ library. The package's __init__.py builds the Python API on it.
+
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <beamimpact/api/registry.hpp>
+#include <beamimpact/api/run.hpp>
+#include <beamimpact/record/output_files.hpp>
+#include <beamimpact/scene/SceneError.hpp>
+#include <beamimpact/scene/scene_io.hpp>
+#include <beamimpact/schema/output_schema.hpp>
+#include <beamimpact/util/Progress.hpp>
+#include <beamimpact/verification/compare/compare_runs.hpp>
+#include <beamimpact/verification/matrix/sweep.hpp>
+#include <beamimpact/version.hpp>
+
+#include "dict_to_toml.hpp"
+
+namespace py = pybind11;
+
+namespace beamimpact::python {
+namespace {
+
+using verification::StoredRun;
+
+/// Columns as a dict of 1-D float64 arrays, in the order of `names`.
+py::dict columns_dict(const std::vector<std::string>& names,
+                      const std::map<std::string, std::vector<double>>& columns) {
+  py::dict d;
+  for (const std::string& n : names)
+    if (auto it = columns.find(n); it != columns.end())
+      d[py::str(n)] = py::array_t<double>(static_cast<py::ssize_t>(it->second.size()), it->second.data());
+  return d;
+}
+
+/// Runs a loaded scene with the GIL released; returns (summary as JSON text, column names,
+/// rows x columns array).
+py::tuple run_scene(const Scene& scene, const std::string& method, std::optional<std::filesystem::path> out,
+                    std::optional<py::function> progress) {
+  if (progress)
+    Progress::set_listener([progress](const std::string& label, double value, double total) {
+      py::gil_scoped_acquire gil;
+      (*progress)(label, value, total);
+    });
+  else
+    Progress::set_enabled(false);
+  struct Restore {  // the listener holds a Python object: dropped (with the GIL held) on every path
+    ~Restore() {
+      Progress::set_listener({});
+      Progress::set_enabled(true);
+    }
+  } restore;
+  SimulationResult r;
+  {
+    py::gil_scoped_release nogil;
+    r = beamimpact::run(scene, method, RunOptions{{}, out});
+  }
+  const auto names = history_columns(static_cast<int>(scene.contacts.size()));
+  py::array_t<double> rows({static_cast<py::ssize_t>(r.history.size()), static_cast<py::ssize_t>(names.size())});
+  auto w = rows.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < r.history.size(); ++i) {
+    const std::vector<double> v = history_values(r.history[i]);
+    for (std::size_t c = 0; c < v.size(); ++c) w(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(c)) = v[c];
+  }
+  return py::make_tuple(summary_json(scene, r).dump(), names, rows);
+}
+
+/// A StoredRun from a Python run: its columns (dict of arrays) and summary (JSON text).
+StoredRun stored(const std::map<std::string, std::vector<double>>& columns, const std::string& summary,
+                 const std::string& label) {
+  return StoredRun::from_columns(columns, nlohmann::json::parse(summary), label);
+}
+
+}  // namespace
+}  // namespace beamimpact::python
+
+PYBIND11_MODULE(_core, m) {
+  using namespace beamimpact;
+  using namespace beamimpact::python;
+  m.doc() = "beamimpact's compiled core; use the package `beamimpact`, not this module";
+  py::register_exception<SceneError>(m, "SceneError", PyExc_ValueError);
+  m.attr("__version__") = kVersion;
+
+  py::class_<Scene>(m, "_Scene")
+      .def_readonly("name", &Scene::name)
+      .def_readonly("file", &Scene::file)
+      .def_readonly("sha256", &Scene::sha256)
+      .def_readonly("description", &Scene::description)
+      .def_readonly("assumed", &Scene::assumed)
+      .def_readonly("overrides", &Scene::overrides)
+      .def_property_readonly("bodies",
+                             [](const Scene& s) {
+                               std::vector<std::string> n;
+                               for (const Body& b : s.bodies) n.push_back(b.name);
+                               return n;
+                             })
+      .def_property_readonly("contacts", [](const Scene& s) { return s.contacts.size(); })
+      .def_property_readonly("end_time", [](const Scene& s) { return s.time.end; });
+
+  m.def("load_scene", &load_scene, py::arg("path"), py::arg("overrides") = std::vector<std::string>{},
+        "Loads and validates a scene file (raises SceneError as the CLI reports it)");
+  m.def(
+      "load_scene_dict",
+      [](const std::string& json_text, const std::string& label, const std::vector<std::string>& overrides) {
+        return load_scene_text(toml_from_json(json_text, label), label, overrides);
+      },
+      py::arg("json_text"), py::arg("label"), py::arg("overrides") = std::vector<std::string>{},
+      "Loads a scene given as JSON text of the scene's tables (Scene.from_dict)");
+  m.def("run", &run_scene, py::arg("scene"), py::arg("method"), py::arg("out") = py::none(),
+        py::arg("progress") = py::none(),
+        "Runs a scene with a registry method; returns (summary JSON, column names, rows array)");
+  m.def("methods", [] {
+    std::vector<std::string> names;
+    for (const Method& me : methods()) names.push_back(me.name);
+    return names;
+  });
+  m.def(
+      "read_run",
+      [](const std::filesystem::path& dir) {
+        const StoredRun r = StoredRun::read(dir);
+        return py::make_tuple(r.summary().dump(), columns_dict(history_columns(r.contacts()), r.columns()));
+      },
+      py::arg("dir"), "Reads a run directory; returns (summary JSON, dict of columns)");
+  m.def(
+      "compare",
+      [](const std::map<std::string, std::vector<double>>& a, const std::string& summary_a, const std::string& label_a,
+         const std::map<std::string, std::vector<double>>& b, const std::string& summary_b, const std::string& label_b,
+         double grid_step, double window, double merge_gap, double threshold) {
+        verification::CompareOptions o;
+        o.grid_step = grid_step;
+        o.window = window;
+        o.merge_gap = merge_gap;
+        o.threshold = threshold;
+        return verification::compare_runs(stored(a, summary_a, label_a), stored(b, summary_b, label_b), o)
+            .to_json()
+            .dump();
+      },
+      "The compare command's norms of run a against reference b, as JSON text");
+  m.def("sweep_norms", &verification::sweep_norms, "The norms the sweep command tabulates");
+}

@@ -1,0 +1,174 @@
+"""The Python module against the CLI: the same numbers bit for bit (S1, S4-45), the same error
+messages, run directories read back, the compare command's norms, and memory that does not grow
+with the steps when no history is kept. Run from ctest (PYTHONPATH=build/python,
+BEAMIMPACT_EXE, BEAMIMPACT_SOURCE)."""
+import csv
+import json
+import os
+import subprocess
+import sys
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import beamimpact
+
+EXE = os.environ["BEAMIMPACT_EXE"]
+PAPER = Path(os.environ["BEAMIMPACT_SOURCE"]) / "verification" / "scenes" / "paper"
+
+
+def cli(*args):
+    return subprocess.run([EXE, *map(str, args)], capture_output=True, text=True)
+
+
+def cli_run(tmp_path, scene, method="paper", *sets):
+    out = tmp_path / f"{Path(scene).stem}-{method}"
+    args = ["run", scene, "--out", out, "--method", method, "--quiet"]
+    for s in sets:
+        args += ["--set", s]
+    p = cli(*args)
+    assert p.returncode == 0, p.stderr
+    return out
+
+
+def csv_columns(out):
+    with open(out / "history.csv") as f:
+        rows = list(csv.reader(f))
+    return {name: np.array([float(r[i]) for r in rows[1:]]) for i, name in enumerate(rows[0])}
+
+
+def same_summary(a, b):
+    """Every key equal except the wall time (a measurement, not a result)."""
+    a, b = dict(a), dict(b)
+    for s in (a, b):
+        s.pop("wall_seconds")
+    assert a == b
+
+
+@pytest.mark.parametrize("scene,method", [("s1_central", "paper"), ("s4_oblique_45", "paper"),
+                                          ("s1_central", "exact")])
+def test_module_equals_cli_bit_for_bit(tmp_path, scene, method):
+    path = PAPER / f"{scene}.toml"
+    out = cli_run(tmp_path, path, method)
+    r = beamimpact.run(beamimpact.load_scene(path), method=method, progress=False)
+    expected = csv_columns(out)
+    assert list(r.columns) == list(expected)  # the same columns in the same order
+    for name, col in expected.items():
+        assert np.array_equal(r.columns[name], col), name  # exact: CSV holds round-trip decimals
+    same_summary(r.summary, json.loads((out / "summary.json").read_text()))
+
+
+def test_set_overrides_equal_cli_set(tmp_path):
+    out = cli_run(tmp_path, PAPER / "s1_central.toml", "paper", "time.dt=0.005", "bodies.B.elements=20")
+    r = beamimpact.run(PAPER / "s1_central.toml", set={"time.dt": 0.005, "bodies.B.elements": 20}, progress=False)
+    assert np.array_equal(r.columns["R"], csv_columns(out)["R"])
+    assert r.summary["overrides"] == {"time.dt": "0.005", "bodies.B.elements": "20"}
+    same_summary(r.summary, json.loads((out / "summary.json").read_text()))
+
+
+def test_from_dict_runs_as_the_file_does():
+    path = PAPER / "s1_central.toml"
+    tables = tomllib.loads(path.read_text())
+    a = beamimpact.run(beamimpact.Scene.from_dict(tables), progress=False)
+    b = beamimpact.run(path, progress=False)
+    for name in b.columns:
+        assert np.array_equal(a.columns[name], b.columns[name])
+    assert a.summary["scene_file"] == "<dict>"
+
+
+def test_bad_scene_raises_the_cli_message(tmp_path):
+    path = PAPER / "s1_central.toml"
+    p = cli("run", path, "--out", tmp_path / "bad", "--set", "bodies.A.area=-0.4")
+    assert p.returncode == 2
+    with pytest.raises(beamimpact.SceneError) as e:
+        beamimpact.load_scene(path, set={"bodies.A.area": -0.4})
+    assert str(e.value) in p.stderr  # the CLI prints the same message (with its "error: " prefix)
+    assert "bodies[0].area" in str(e.value) and "positive" in str(e.value)
+
+
+def test_bad_dict_names_the_key():
+    tables = tomllib.loads((PAPER / "s1_central.toml").read_text())
+    tables["time"]["dt"] = "fast"
+    with pytest.raises(beamimpact.SceneError, match=r"<dict>: key 'time.dt'.*auto"):
+        beamimpact.Scene.from_dict(tables)
+    tables["time"]["dt"] = None
+    with pytest.raises(beamimpact.SceneError, match=r"time.dt.*None"):
+        beamimpact.Scene.from_dict(tables)
+    with pytest.raises(beamimpact.SceneError, match="expected a method name"):
+        beamimpact.run(PAPER / "s1_central.toml", method="nope", progress=False)
+
+
+def test_read_run_of_a_cli_directory(tmp_path):
+    out = cli_run(tmp_path, PAPER / "s4_oblique_45.toml")
+    r = beamimpact.read_run(out)
+    for name, col in csv_columns(out).items():
+        assert np.array_equal(r.columns[name], col), name
+    assert r.summary == json.loads((out / "summary.json").read_text())
+    with pytest.raises(beamimpact.SceneError, match="summary.json|history.csv"):
+        beamimpact.read_run(tmp_path / "missing")
+
+
+def test_compare_gives_the_compare_commands_norms(tmp_path):
+    a = cli_run(tmp_path, PAPER / "s1_central.toml", "paper", "time.dt=0.02")
+    b = cli_run(tmp_path, PAPER / "s1_central.toml", "exact")
+    p = cli("compare", a, b, "--json", tmp_path / "c.json")
+    assert p.returncode == 0, p.stderr
+    expected = json.loads((tmp_path / "c.json").read_text())
+    got = beamimpact.compare(beamimpact.run(PAPER / "s1_central.toml", set={"time.dt": 0.02}, progress=False),
+                             beamimpact.read_run(b))
+    strip = lambda c: [{k: v for k, v in n.items()} for n in c["norms"]]  # noqa: E731
+    assert strip(got) == strip(expected)
+    # The exact solution's impulse is 4 N s (references.md); the paper's run is within 5 %.
+    assert beamimpact.norm(got, "impulse") < 0.05
+
+
+def test_sweep_ladder_converges_to_its_finest_run():
+    # The default reference is the finest dt's run. The scheme converges in dt (its S1 error
+    # against the exact solution is set by the 10-element mesh, not by dt), so the errors
+    # against the finest run must fall along the ladder and vanish at the reference itself.
+    dts = [0.04, 0.02, 0.01, 0.0025]
+    rows = beamimpact.sweep(PAPER / "s1_central.toml", dts)
+    errors = [r["impulse"] for r in rows]
+    assert errors[0] > errors[1] > errors[2] > 0.0 and errors[3] == 0.0
+    assert [r["steps"] for r in rows] == [100, 200, 400, 1600]
+    assert set(beamimpact._core.sweep_norms()) <= set(rows[0])  # the sweep command's columns
+
+
+MEMORY = r"""
+import resource, sys, beamimpact
+steps, keep = int(sys.argv[1]), sys.argv[2] == "1"
+r = beamimpact.run(sys.argv[3], set={"time.dt": 4.0 / steps, "time.allow_long_run": True},
+                   history=keep, progress=False)
+assert r.summary["steps"] == steps
+print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)  # kB
+"""
+
+
+def peak_kb(steps, keep):
+    p = subprocess.run([sys.executable, "-c", MEMORY, str(steps), "1" if keep else "0", str(PAPER / "s1_central.toml")],
+                       capture_output=True, text=True, env=os.environ)
+    assert p.returncode == 0, p.stderr
+    return int(p.stdout)
+
+
+def test_no_history_no_memory_growth_over_a_million_steps():
+    # A kept row costs >= 150 bytes (18 doubles plus its vector of contact samples), so 1e6 kept
+    # rows would add >= 150 MB; without history the peak may differ from a 1e4-step run only by
+    # allocator noise (10 MB). The 1e5-step run that keeps its rows shows the measure bites.
+    small, big = peak_kb(10_000, False), peak_kb(1_000_000, False)
+    assert big - small < 10_000
+    assert peak_kb(100_000, True) - small > 10_000
+
+
+def test_fields_from_python_read_back(tmp_path):
+    # run(fields=True) writes the same VTK fields as `beamimpact run --fields`; read_fields streams
+    # them: one frame per history row, the striker node (A's end, node 10) moving as ua in history.
+    r = beamimpact.run(PAPER / "s1_central.toml", out=tmp_path / "s1", fields=True, progress=False)
+    frames = list(beamimpact.read_fields(tmp_path / "s1"))
+    assert [t for t, _ in frames] == list(r.columns["t"])
+    assert [f["displacement"][10, 0] for _, f in frames] == list(r.columns["ua_x"])
+    assert all(len(f["points"]) == 22 for _, f in frames)
+    with pytest.raises(beamimpact.SceneError, match="output.fields.*output directory"):
+        beamimpact.run(PAPER / "s1_central.toml", fields=True, progress=False)

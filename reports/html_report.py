@@ -3,10 +3,11 @@
 committed figure sets (work-precision, the paper's figures, benchmarks), every figure embedded
 as base64 with the command, scene and version that made it.
 
-Usage: html_report.py --verify DIR [--figures DIR ...] --out FILE
+Usage: html_report.py --verify DIR [--committed] [--figures DIR ...] --out FILE
 
 --verify DIR   a `beamimpact verify` output directory (its norms.json)
---figures DIR  a committed figure set: DIR/figures.json, the manifest its generator wrote:
+--committed    every committed set of FIGURE_SETS below (reports/NAME), after those of --figures
+--figures DIR  a figure set: DIR/figures.json, the manifest its generator wrote:
                {"title", "about", "figures": [{"png", "title", "command", "scene", "version",
                "caption"}], "tables": [{"title", "columns", "rows"}]}
 A figure set whose manifest is missing is reported as "not generated" with the command that makes
@@ -24,6 +25,8 @@ FIGURE_SETS = {
     "work_precision": "/usr/bin/python3 reports/work_precision.py",
     "paper_figures": "/usr/bin/python3 reports/paper_figures.py",
     "benchmarks": "/usr/bin/python3 reports/plot_effects_benchmark.py --run",
+    "figures": "build/beamimpact study verification/studies/s4_angle_friction.toml --out DIR; "
+               "/usr/bin/python3 reports/study_maps.py DIR (see README)",
 }
 FIGURE_KEYS = ("png", "title", "command", "scene", "version")
 
@@ -137,6 +140,9 @@ def figure_set_section(set_dir):
 
 
 def write(args):
+    here = os.path.dirname(os.path.abspath(__file__))
+    if args.committed:
+        args.figures += [os.path.join(here, name) for name in FIGURE_SETS]
     sections = [verify_section(args.verify)] + [figure_set_section(d) for d in args.figures]
     body = "".join(f"<section id=\"s{i}\"><h2>{esc(t)}</h2>{c}</section>\n" for i, (t, c) in enumerate(sections))
     toc = "".join(f"<li><a href=\"#s{i}\">{esc(t)}</a></li>" for i, (t, _) in enumerate(sections))
@@ -155,5 +161,7 @@ if __name__ == "__main__":
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--verify", required=True)
     p.add_argument("--figures", action="append", default=[])
+    p.add_argument("--committed", action="store_true",
+                   help="add every committed set of FIGURE_SETS (reports/NAME), in report order")
     p.add_argument("--out", required=True)
     write(p.parse_args())

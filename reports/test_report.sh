@@ -8,7 +8,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:?usage: reports/test_report.sh OUT_DIR}
 rm -rf "$out" && mkdir -p "$out"
-sets=(--figures reports/testdata/figure_set)
-for d in work_precision paper_figures benchmarks; do sets+=(--figures "reports/$d"); done
-/usr/bin/python3 reports/html_report.py --verify reports/testdata/verify "${sets[@]}" --out "$out/report.html"
+/usr/bin/python3 reports/html_report.py --verify reports/testdata/verify --figures reports/testdata/figure_set \
+  --committed --out "$out/report.html"
 /usr/bin/python3 reports/check_report.py "$out/report.html" --screenshot "$out/report.png" --self-test

@@ -15,7 +15,6 @@ rm -f out/verify/norms.json out/verify/report.html  # never a stale report from 
 "$build"/beamimpact verify verification/matrix.toml --out out/verify --jobs "$(nproc)" "${args[@]}" || status=$?
 # The report shows a failing run too (its verdicts say so); an interrupted or refused run wrote no norms.json.
 if [[ -f out/verify/norms.json ]]; then
-  /usr/bin/python3 reports/html_report.py --verify out/verify --figures reports/work_precision \
-    --figures reports/paper_figures --figures reports/benchmarks --out out/verify/report.html
+  /usr/bin/python3 reports/html_report.py --verify out/verify --committed --out out/verify/report.html
 fi
 exit "$status"

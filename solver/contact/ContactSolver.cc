@@ -169,4 +169,13 @@ void ContactSolver::add_forces(Eigen::VectorXd& f) const {
   }
 }
 
+void ContactSolver::force_equations(std::vector<int>& eqs) const {
+  for (std::size_t c = 0; c < pairs_.size(); ++c) {
+    if (out_[c].state == ContactState::kOpen) continue;
+    for (const DofTerm& t : pairs_[c].normal_row()) eqs.push_back(t.eq);
+    if (friction_)
+      for (const DofTerm& t : pairs_[c].tangent_row()) eqs.push_back(t.eq);
+  }
+}
+
 }  // namespace beamimpact::paper

@@ -65,12 +65,16 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
     minv_.factorize_pattern(cmass_->M());  // M_A(t) may hold entries the model's M never stored
   }
   const int n = model.size();
-  U_prev_ = U_ = U_next_ = Ubar_ = fc_ = work_ = work2_ = du_ = scratch_ = hwork_ = c_du_ =
+  U_prev_ = U_ = U_next_ = Ubar_ = fc_ = work_ = work2_ = du_ = scratch_ = hwork_ = c_du_ = vwork_ =
       Eigen::VectorXd::Zero(n);
   Vbar_ = V_ = model.initial_velocity();  // no contact force at t = 0: Vbar^0 = V^0
   fint_U_ = fint_next_ = Eigen::VectorXd::Zero(n);
   fint_.apply(U_, fint_U_);
   fused_ = model.lumped() && !damped_ && !cmass_;
+  // Room for every equation a contact force can touch (a surface contact's rows move with the
+  // struck point, so their size now is no bound): no allocation while stepping.
+  fc_dofs_.reserve(static_cast<std::size_t>(n));
+  vbar_saved_.reserve(static_cast<std::size_t>(n));
   solve_contacts();  // step 0 complete
 }
 
@@ -113,12 +117,17 @@ void ExplicitContactIntegrator::solve_contacts() {
 void ExplicitContactIntegrator::resolve_contacts() {
   solver_.solve(Ubar_, U_);
   v_is_vbar_ = true;  // V^p = Vbar^p unless a contact force acts
+  v_stale_ = false;
   if (solver_.any_force()) {
-    fc_.setZero();
-    solver_.add_forces(fc_);
-    apply_Minv(fc_, work_);
-    V_.noalias() = Vbar_ + (0.5 * dt_) * work_;
     v_is_vbar_ = false;
+    if (fused_) {
+      gather_contact_force();
+      v_stale_ = true;
+    } else {
+      fc_.setZero();
+      solver_.add_forces(fc_);
+      form_velocity();
+    }
     // Contact work of step p: f_c . (U^{p+1} - U^{p-1}) / 2 with this step's rows, i.e.
     // R (g_{p+1} - g_{p-1})/2 + tau (s_{p+1} - s_{p-1})/2. It is the exact change of the discrete
     // energy 1/2 v_{p+1/2} M v_{p+1/2} + 1/2 u_p K u_{p+1} (linear kinematics).
@@ -174,36 +183,58 @@ void ExplicitContactIntegrator::advance_fused() {
   const double* inv = minv_.inverse_diagonal().data();
   const double dt = dt_, dt2 = dt_ * dt_, half_dt2 = 0.5 * dt_ * dt_, m_half_dt = -0.5 * dt_;
   const bool force = solver_.any_force();
-  // U^{p+1} = Ubar + dt^2 M^-1 f_c (apply_H undamped: (inv fc) dt^2); without force U^{p+1} is
-  // Ubar itself, whose buffer the prediction below overwrites: swap instead of copying.
-  if (force) {
-    const double* ub = Ubar_.data();
-    const double* fc = fc_.data();
-    double* un = U_next_.data();
-    for (int i = 0; i < n; ++i) un[i] = ub[i] + (inv[i] * fc[i]) * dt2;
-  } else {
-    U_next_.swap(Ubar_);
-  }
+  // U^{p+1} = Ubar + dt^2 M^-1 f_c (apply_H undamped: (inv fc) dt^2). f_c is zero outside
+  // fc_dofs_, where U^{p+1} is Ubar itself, whose buffer the prediction below overwrites: swap
+  // instead of copying, then add the force at its equations.
+  U_next_.swap(Ubar_);
+  if (force)
+    for (int i : fc_dofs_) U_next_[i] = U_next_[i] + (inv[i] * fc_[i]) * dt2;
   fint_.apply(U_next_, fint_next_);
   // One sweep: Vbar^{p+1} = Vbar^p + inv (-dt/2 (f(U^{p+1}) + f(U^p)) + dt f_c), then the next
   // step's prediction Ubar = U^{p+1} + dt Vbar^{p+1} + dt^2/2 inv (-f(U^{p+1})).
   const double* un = U_next_.data();
   const double* fn = fint_next_.data();
   const double* fu = fint_U_.data();
-  const double* fc = fc_.data();
   double* vb = Vbar_.data();
   double* ub = Ubar_.data();
+  if (force) {  // the sweep below leaves out f_c; the contact equations are redone after it
+    vbar_saved_.resize(fc_dofs_.size());
+    for (std::size_t k = 0; k < fc_dofs_.size(); ++k) vbar_saved_[k] = vb[fc_dofs_[k]];
+  }
   for (int i = 0; i < n; ++i) {
-    double w2 = m_half_dt * (fn[i] + fu[i]);
-    if (force) w2 += dt * fc[i];
+    const double w2 = m_half_dt * (fn[i] + fu[i]);
     const double vbar = vb[i] + inv[i] * w2;
     vb[i] = vbar;
     ub[i] = (un[i] + dt * vbar) + half_dt2 * (inv[i] * -fn[i]);
   }
+  if (force)
+    for (std::size_t k = 0; k < fc_dofs_.size(); ++k) {
+      const int i = fc_dofs_[k];
+      double w2 = m_half_dt * (fn[i] + fu[i]);
+      w2 += dt * fc_[i];
+      const double vbar = vbar_saved_[k] + inv[i] * w2;
+      vb[i] = vbar;
+      ub[i] = (un[i] + dt * vbar) + half_dt2 * (inv[i] * -fn[i]);
+    }
   std::swap(U_prev_, U_);
   std::swap(U_, U_next_);
   std::swap(fint_U_, fint_next_);
   ++p_;
+}
+
+void ExplicitContactIntegrator::form_velocity() const {
+  apply_Minv(fc_, vwork_);
+  V_.noalias() = Vbar_ + (0.5 * dt_) * vwork_;
+  v_stale_ = false;
+}
+
+void ExplicitContactIntegrator::gather_contact_force() {
+  for (int i : fc_dofs_) fc_[i] = 0.0;
+  fc_dofs_.clear();
+  solver_.add_forces(fc_);
+  solver_.force_equations(fc_dofs_);
+  std::sort(fc_dofs_.begin(), fc_dofs_.end());  // each equation once (add_forces summed them)
+  fc_dofs_.erase(std::unique(fc_dofs_.begin(), fc_dofs_.end()), fc_dofs_.end());
 }
 
 double ExplicitContactIntegrator::kinetic_energy() const {

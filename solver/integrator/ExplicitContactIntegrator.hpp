@@ -59,7 +59,10 @@ class ExplicitContactIntegrator {
   double dt() const { return dt_; }
   /// @brief U^p and physical V^p.
   const Eigen::VectorXd& U() const { return U_; }
-  const Eigen::VectorXd& V() const { return v_is_vbar_ ? Vbar_ : V_; }
+  const Eigen::VectorXd& V() const {
+    if (v_stale_) form_velocity();
+    return v_is_vbar_ ? Vbar_ : V_;
+  }
   /// @brief Half-step velocity Vbar^p (for the discrete energy identity).
   const Eigen::VectorXd& Vbar() const { return Vbar_; }
   /// @brief Forces of the last solve, per contact.
@@ -96,6 +99,11 @@ class ExplicitContactIntegrator {
   void advance();
   void apply_Minv(const Eigen::VectorXd& in, Eigen::VectorXd& out) const { minv_.apply(in, out); }
   void apply_H(const Eigen::VectorXd& f, Eigen::VectorXd& out);
+  /// V^p = Vbar^p + dt/2 M^-1 f_c (Eq. 5) on demand: the fused path reads V only on output rows.
+  void form_velocity() const;
+  /// The fused path's contact force: zeroes the last step's entries, adds this step's, and lists
+  /// the equations it touches in fc_dofs_ (sorted, unique), so that the contact costs O(pairs).
+  void gather_contact_force();
   void subtract_damping_force(const Eigen::VectorXd& v, Eigen::VectorXd& f);
 
   const Model& model_;
@@ -110,9 +118,13 @@ class ExplicitContactIntegrator {
   ContactSolver solver_;
   long p_ = 0;
   Eigen::VectorXd U_prev_, U_, U_next_,  // U^{p-1}, U^p, U^{p+1} (rotated by swaps)
-      Vbar_, V_, fint_U_, fint_next_, Ubar_, fc_, work_, work2_, du_, scratch_, hwork_, c_du_;
+      Vbar_, fint_U_, fint_next_, Ubar_, fc_, work_, work2_, du_, scratch_, hwork_, c_du_;
+  mutable Eigen::VectorXd V_, vwork_;  ///< V^p when a contact force acts (formed by form_velocity)
+  std::vector<int> fc_dofs_;           ///< fused path: the equations where fc_ may be non-zero
+  std::vector<double> vbar_saved_;     ///< fused path: Vbar^p at fc_dofs_ during the sweep
   double dissipated_ = 0.0;
   bool v_is_vbar_ = true;  ///< no contact force this step: V^p is Vbar^p (no copy)
+  mutable bool v_stale_ = false;  ///< V_ is still to be formed from Vbar_ and fc_
 };
 
 }  // namespace beamimpact::paper

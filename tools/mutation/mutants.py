@@ -51,7 +51,7 @@ MUTANTS = [
                  "const double sigma = Rs > 0.0 ? (Ts >= 0 ? -1.0 : 1.0) : (s > 0 ? 1.0 : -1.0);")]),
     dict(name="no_half_step_velocity", ci=False,
          what="the dt/2 M^-1 f_c velocity correction of V^p dropped (V^p = Vbar^p during contact)",
-         edits=[(INTEG, "    V_.noalias() = Vbar_ + (0.5 * dt_) * work_;", "    V_.noalias() = Vbar_;")]),
+         edits=[(INTEG, "  V_.noalias() = Vbar_ + (0.5 * dt_) * vwork_;", "  V_.noalias() = Vbar_;")]),
     dict(name="stale_response", ci=False,
          what="the response columns H n, H t are not recomputed after the contact point moves",
          edits=[(CS, "if (out_[c].state != ContactState::kStick && pairs_[c].relocate(Ubar)) fresh_[c] = 0;",

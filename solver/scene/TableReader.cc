@@ -129,6 +129,23 @@ std::optional<bool> TableReader::boolean_opt(const std::string& key) {
   return b->get();
 }
 
+std::vector<std::string> TableReader::strings(const std::string& key, bool required) {
+  std::vector<std::string> out;
+  const toml::node* n = find(key);
+  if (!n) {
+    if (required) fail(key, "missing; expected an array of strings");
+    return out;
+  }
+  const toml::array* a = n->as_array();
+  if (!a) fail(key, "expected an array of strings");
+  for (const auto& e : *a) {
+    const auto v = e.value<std::string>();
+    if (!v) fail(key, "expected an array of strings");
+    out.push_back(*v);
+  }
+  return out;
+}
+
 Vec2 TableReader::vec2(const std::string& key, const std::string& what) {
   const toml::node* n = find(key);
   if (!n) fail(key, "missing; expected " + what);

@@ -41,6 +41,9 @@ class TableReader {
   bool boolean_or(const std::string& key, bool fallback);
   /// @brief An optional boolean with no default (empty when absent).
   std::optional<bool> boolean_opt(const std::string& key);
+  /// @brief An array of strings; empty when absent unless `required` (then a missing key fails).
+  /// @param key the key in this table; @param required whether the key must be present
+  std::vector<std::string> strings(const std::string& key, bool required = false);
   /// @brief A required array of two numbers.
   Vec2 vec2(const std::string& key, const std::string& what);
   /// @brief True when the key is present (marks it as known).

@@ -18,20 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<std::string> strings(TableReader& r, const std::string& key) {
-  std::vector<std::string> out;
-  const toml::node* n = r.raw(key);
-  if (!n) return out;
-  const toml::array* a = n->as_array();
-  if (!a) r.fail(key, "expected an array of strings");
-  for (const auto& e : *a) {
-    const auto s = e.value<std::string>();
-    if (!s) r.fail(key, "expected an array of strings");
-    out.push_back(*s);
-  }
-  return out;
-}
-
 std::vector<double> numbers(TableReader& r, const std::string& key) {
   std::vector<double> out;
   const toml::node* n = r.raw(key);
@@ -140,8 +126,8 @@ class Loader {
       else
         r.fail("mesh", "expected an element multiplier or a method's mesh preset name");
     }
-    s.set = strings(r, "set");
-    s.args = strings(r, "args");
+    s.set = r.strings("set");
+    s.args = r.strings("args");
     if ((s.dt && !m->accepts.dt) || (!s.set.empty() && !m->accepts.overrides))
       r.fail(s.dt ? "dt" : "set", "the method '" + s.method + "' takes no " + (s.dt ? "dt" : "set") +
                                       "; use its own options in args = [...]");

@@ -20,23 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<std::string> strings(TableReader& r, const std::string& key, bool required) {
-  std::vector<std::string> out;
-  const toml::node* n = r.raw(key);
-  if (!n) {
-    if (required) r.fail(key, "expected an array of strings");
-    return out;
-  }
-  const toml::array* a = n->as_array();
-  if (!a) r.fail(key, "expected an array of strings");
-  for (const auto& e : *a) {
-    const auto v = e.value<std::string>();
-    if (!v) r.fail(key, "expected an array of strings");
-    out.push_back(*v);
-  }
-  return out;
-}
-
 Parameter parameter(const toml::table& t, const std::string& file, std::size_t i, Study::Design design) {
   TableReader r(t, file, fmt::format("parameter[{}]", i), nullptr);
   Parameter p;
@@ -114,17 +97,17 @@ Study Study::load(const fs::path& file_in) {
   if (r.has("description")) s.description = r.string("description", "one line");
   s.scene = (s.file.parent_path() / r.string("scene", "a scene file relative to the study file")).lexically_normal();
   if (!fs::exists(s.scene)) r.fail("scene", "scene file " + s.scene.string() + " not found");
-  s.methods = strings(r, "methods", true);
+  s.methods = r.strings("methods", true);
   if (s.methods.empty()) r.fail("methods", "expected at least one method (" + method_names() + ")");
   for (const auto& m : s.methods) (void)method(m, file, "methods");
-  s.set = strings(r, "set", false);
+  s.set = r.strings("set");
   {
     const toml::node* n = r.raw("reference");
     if (!n || !n->as_table()) r.fail("reference", "expected a table such as { method = \"ida\", set = [...] }");
     TableReader rr(*n->as_table(), file, "reference", nullptr);
     s.reference.method = rr.string("method", "a method name (" + method_names() + ")");
     (void)method(s.reference.method, file, "reference.method");
-    s.reference.set = strings(rr, "set", false);
+    s.reference.set = rr.strings("set");
     rr.finish();
   }
   if (const toml::node* n = r.raw("design")) {
@@ -141,7 +124,7 @@ Study Study::load(const fs::path& file_in) {
   s.energy_growth = r.number_or("energy_growth", s.energy_growth,
                                 "the stability bound: energy created / initial energy (e.g. 0.01)");
   if (!(s.energy_growth > 0.0)) r.fail("energy_growth", "expected a positive fraction");
-  s.norms = strings(r, "norms", false);
+  s.norms = r.strings("norms");
   if (s.norms.empty()) s.norms = verification::sweep_norms();
   for (const auto& n : s.norms)
     if (!verification::known_norm(n)) r.fail("norms", "unknown norm '" + n + "' (see `beamimpact compare`)");

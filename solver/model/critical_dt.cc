@@ -40,6 +40,18 @@ double step_of(const Model& model, double omega) {
   return 2.0 / omega * (std::sqrt(1 + xi * xi) - xi);
 }
 
+/// Lanczos start vector, the same on every machine: entries in [0.5, 1.5) from a linear
+/// congruential sequence, so that every DOF (every mode) carries energy.
+Eigen::VectorXd lanczos_start(int n) {
+  Eigen::VectorXd q(n);
+  unsigned s = 12345u;
+  for (int i = 0; i < n; ++i) {
+    s = s * 1103515245u + 12345u;
+    q(i) = 0.5 + static_cast<double>((s >> 8) & 0xffff) / 65536.0;
+  }
+  return q;
+}
+
 /// Largest eigenvalue of T_k by a dense solve (small models only, see converged_ritz).
 double dense_top_ritz(const std::vector<double>& alpha, const std::vector<double>& beta) {
   const int m = static_cast<int>(alpha.size());
@@ -60,12 +72,7 @@ double converged_ritz(const Model& model, int* iterations) {
   const MassSolver minv(model);
   const SparseMatrix& K = model.K();
   const SparseMatrix& M = model.M();
-  Eigen::VectorXd q(n), q_prev = Eigen::VectorXd::Zero(n), w(n), Mq(n);
-  unsigned s = 12345u;
-  for (int i = 0; i < n; ++i) {
-    s = s * 1103515245u + 12345u;
-    q(i) = 0.5 + static_cast<double>((s >> 8) & 0xffff) / 65536.0;
-  }
+  Eigen::VectorXd q = lanczos_start(n), q_prev = Eigen::VectorXd::Zero(n), w(n), Mq(n);
   q /= std::sqrt(q.dot(M * q));
   std::vector<double> alpha, beta = {0.0};
   double last = 0.0;
@@ -212,13 +219,7 @@ LanczosEstimate lanczos_largest(const Model& model, int max_iter) {
     scratch.noalias() = M * x;
     return x.dot(scratch);
   };
-  // Deterministic start vector with energy in every DOF.
-  Eigen::VectorXd q(n), q_prev = Eigen::VectorXd::Zero(n), w(n), Kq(n), scratch(n);
-  unsigned s = 12345u;
-  for (int i = 0; i < n; ++i) {
-    s = s * 1103515245u + 12345u;
-    q(i) = 0.5 + static_cast<double>((s >> 8) & 0xffff) / 65536.0;
-  }
+  Eigen::VectorXd q = lanczos_start(n), q_prev = Eigen::VectorXd::Zero(n), w(n), Kq(n), scratch(n);
   q /= std::sqrt(m_norm2(q, scratch));
   std::vector<double> alpha, beta;
   double b_prev = 0.0, a_max = 0.0;

@@ -132,6 +132,7 @@ bool ContactPair::relocate(const Eigen::VectorXd& U) {
   const Vec2 xs{X[0] + us[0], X[1] + us[1]};
   // Walk from the current element toward the striker's projection (deformed target chord).
   int e = element_;
+  int walked = 0;  // direction of the walk so far: -1, 0 or +1
   for (int guard = 0; guard <= target_elements_; ++guard) {
     const int n1 = target_first_ + e;
     const Vec2 p1 = model_.node_position(n1), p2 = model_.node_position(n1 + 1);
@@ -139,12 +140,19 @@ bool ContactPair::relocate(const Eigen::VectorXd& U) {
     const Vec2 a{p1[0] + u1[0], p1[1] + u1[1]}, b{p2[0] + u2[0], p2[1] + u2[1]};
     const Vec2 ab = sub(b, a);
     const double x = dot(sub(xs, a), ab) / dot(ab, ab);
+    // A walk that turns back has found the node between two elements, which roundoff puts just
+    // outside both (x < 0 in one, x > 1 in the other): it would go back and forth until the
+    // guard runs out and keep the pair where it is. Keep it there at once (O(1), not O(elements)).
     if (x < 0.0 && e > 0) {
+      if (walked > 0) return false;
       --e;
+      walked = -1;
       continue;
     }
     if (x > 1.0 && e < target_elements_ - 1) {
+      if (walked < 0) return false;
       ++e;
+      walked = 1;
       continue;
     }
     on_surface_ = x >= -kSnap && x <= 1.0 + kSnap;

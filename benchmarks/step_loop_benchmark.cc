@@ -55,21 +55,29 @@ int main(int argc, char** argv) {
       "contact), kernel: StepKernel frame chain\n\n",
       kVersion);
   std::printf(
-      "| DOFs | kernel ns/DOF-step | integrator ns/DOF-step | ratio | set-up (s) | set-up (steps) |\n");
-  std::printf("|---:|---:|---:|---:|---:|---:|\n");
+      "| DOFs | kernel ns/DOF-step | integrator ns/DOF-step | ratio | set-up (s) | set-up (steps) | "
+      "model / critical step / integrator (steps) | scene file read (steps) |\n");
+  std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (double target = 1e2; target <= max_dofs * 1.0001; target *= 10) {
     // Two bodies of n elements each: about 6 n DOFs.
     const int n = std::max(2, static_cast<int>(target / 6));
-    const Clock::time_point t0 = Clock::now();
+    Clock::time_point t0 = Clock::now();
     const Scene s =
         load_scene(std::string(BEAMIMPACT_SOURCE_DIR) + "/verification/scenes/paper/s2_transverse.toml",
                    {"bodies.A.elements=" + std::to_string(n), "bodies.B.elements=" + std::to_string(n),
                     "time.dt=\"auto\""});
+    const double t_scene = seconds_since(t0);
+    t0 = Clock::now();
     const Effects fx = derive_effects(s);
     const Model m(s, fx.bending);
+    const double t_model = seconds_since(t0);
+    t0 = Clock::now();
     const double dt = 0.5 * critical_step(m).dt;
+    const double t_crit = seconds_since(t0);
+    t0 = Clock::now();
     paper::ExplicitContactIntegrator integ(m, s, fx, dt);
-    const double setup = seconds_since(t0);
+    const double t_integ = seconds_since(t0);
+    const double setup = t_model + t_crit + t_integ;
     bench::StepKernel kernel(static_cast<std::size_t>(m.size() / 3), true);
     const double dofs = m.size(), kdofs = static_cast<double>(kernel.dofs());
     double t_int = 1e300, t_ker = 1e300;
@@ -82,8 +90,9 @@ int main(int argc, char** argv) {
       return 1;
     }
     const double ns_int = t_int / dofs * 1e9, ns_ker = t_ker / kdofs * 1e9;
-    std::printf("| %.0f | %.2f | %.2f | %.2f | %.4f | %.0f |\n", dofs, ns_ker, ns_int, ns_int / ns_ker, setup,
-                setup / t_int);
+    std::printf("| %.0f | %.2f | %.2f | %.2f | %.4f | %.0f | %.0f / %.0f / %.0f | %.0f |\n", dofs, ns_ker, ns_int,
+                ns_int / ns_ker, setup, setup / t_int, t_model / t_int, t_crit / t_int, t_integ / t_int,
+                t_scene / t_int);
     std::fflush(stdout);
   }
   return 0;

@@ -43,6 +43,20 @@ std::unique_ptr<SearchBoxes> search_boxes(const Model& model, const Scene& scene
   return any ? std::make_unique<SearchBoxes>(model, boxed, margin) : nullptr;
 }
 
+/// The fused path's velocity update and next prediction on equations [lo, hi) (the vectors do
+/// not overlap): Vbar += inv (-dt/2 (fn + fu)), ub = (un + dt Vbar) + dt^2/2 (inv -fn).
+void velocity_sweep(int lo, int hi, double dt, const double* __restrict un, const double* __restrict fn,
+                    const double* __restrict fu, const double* __restrict inv, double* __restrict vb,
+                    double* __restrict ub) {
+  const double half_dt2 = 0.5 * dt * dt, m_half_dt = -0.5 * dt;
+  for (int i = lo; i < hi; ++i) {
+    const double w2 = m_half_dt * (fn[i] + fu[i]);
+    const double vbar = vb[i] + inv[i] * w2;
+    vb[i] = vbar;
+    ub[i] = (un[i] + dt * vbar) + half_dt2 * (inv[i] * -fn[i]);
+  }
+}
+
 }  // namespace
 
 ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const Scene& scene,
@@ -179,7 +193,6 @@ void ExplicitContactIntegrator::advance() {
 }
 
 void ExplicitContactIntegrator::advance_fused() {
-  const int n = model_.size();
   const double* inv = minv_.inverse_diagonal().data();
   const double dt = dt_, dt2 = dt_ * dt_, half_dt2 = 0.5 * dt_ * dt_, m_half_dt = -0.5 * dt_;
   const bool force = solver_.any_force();
@@ -189,9 +202,9 @@ void ExplicitContactIntegrator::advance_fused() {
   U_next_.swap(Ubar_);
   if (force)
     for (int i : fc_dofs_) U_next_[i] = U_next_[i] + (inv[i] * fc_[i]) * dt2;
-  fint_.apply(U_next_, fint_next_);
-  // One sweep: Vbar^{p+1} = Vbar^p + inv (-dt/2 (f(U^{p+1}) + f(U^p)) + dt f_c), then the next
-  // step's prediction Ubar = U^{p+1} + dt Vbar^{p+1} + dt^2/2 inv (-f(U^{p+1})).
+  // One sweep: f(U^{p+1}) and, on each range of equations as soon as f is final there,
+  // Vbar^{p+1} = Vbar^p + inv (-dt/2 (f(U^{p+1}) + f(U^p)) + dt f_c), then the next step's
+  // prediction Ubar = U^{p+1} + dt Vbar^{p+1} + dt^2/2 inv (-f(U^{p+1})).
   const double* un = U_next_.data();
   const double* fn = fint_next_.data();
   const double* fu = fint_U_.data();
@@ -201,12 +214,8 @@ void ExplicitContactIntegrator::advance_fused() {
     vbar_saved_.resize(fc_dofs_.size());
     for (std::size_t k = 0; k < fc_dofs_.size(); ++k) vbar_saved_[k] = vb[fc_dofs_[k]];
   }
-  for (int i = 0; i < n; ++i) {
-    const double w2 = m_half_dt * (fn[i] + fu[i]);
-    const double vbar = vb[i] + inv[i] * w2;
-    vb[i] = vbar;
-    ub[i] = (un[i] + dt * vbar) + half_dt2 * (inv[i] * -fn[i]);
-  }
+  fint_.apply_streamed(U_next_, fint_next_,
+                       [=](int lo, int hi) { velocity_sweep(lo, hi, dt, un, fn, fu, inv, vb, ub); });
   if (force)
     for (std::size_t k = 0; k < fc_dofs_.size(); ++k) {
       const int i = fc_dofs_[k];

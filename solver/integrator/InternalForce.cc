@@ -1,5 +1,6 @@
 #include <beamimpact/integrator/InternalForce.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace beamimpact::paper {
@@ -35,13 +36,27 @@ InternalForce::InternalForce(const Model& model, const std::vector<bool>& corota
 
 void InternalForce::build_blocks() {
   const int w = 2 * model_.dofs_per_node();
+  std::vector<std::array<int, 6>> eqs;
+  std::vector<int> block_of;
+  eqs.reserve(model_.elements().size());
+  block_of.reserve(model_.elements().size());
+  Eigen::MatrixXd Ke;
+  int last = -1;  // the element whose stiffness Ke is
   for (int e = 0; e < static_cast<int>(model_.elements().size()); ++e) {
     const Model::Element& el = model_.elements()[e];
     if (el.rigid) continue;  // no element stiffness
-    const Eigen::MatrixXd Ke = model_.element_stiffness(e, el.c, el.s);
     const Eigen::Matrix<int, 6, 1> eq = model_.element_equations(e);
-    BlockElement be{};
-    for (int i = 0; i < 6; ++i) be.eq[i] = i < w ? eq(i) : -1;
+    if (last >= 0 && model_.same_element_matrices(e, last)) {  // the same block as the last
+      std::array<int, 6> be{};
+      for (int i = 0; i < 6; ++i) be[i] = i < w ? eq(i) : -1;
+      eqs.push_back(be);
+      block_of.push_back(block_of.back());
+      continue;
+    }
+    Ke = model_.element_stiffness(e, el.c, el.s);
+    last = e;
+    std::array<int, 6> be{};
+    for (int i = 0; i < 6; ++i) be[i] = i < w ? eq(i) : -1;
     const std::size_t nb = blocks_.size() / (w * w);
     bool same = nb > 0;
     for (int i = 0; same && i < w; ++i)
@@ -49,48 +64,107 @@ void InternalForce::build_blocks() {
     if (!same)
       for (int i = 0; i < w; ++i)
         for (int j = 0; j < w; ++j) blocks_.push_back(Ke(i, j));
-    be.block = static_cast<int>(blocks_.size() / (w * w)) - 1;
-    block_elements_.push_back(be);
+    eqs.push_back(be);
+    block_of.push_back(static_cast<int>(blocks_.size() / (w * w)) - 1);
   }
+  const int n = model_.size();
+  use_blocks_ = n > 0 && build_spans(eqs, block_of, w);
   // Kept only when the blocks are the whole of K (no other stiffness assembled into it): the
   // two products agree on a vector with no special structure, to the roundoff of the sums
-  // (1e-12 of sum |K_ij| |x_j| per row; a missing or extra term of K shows at O(1)).
-  const int n = model_.size();
-  Eigen::VectorXd x(n), kx(n), bx(n), scale(n);
-  for (int i = 0; i < n; ++i) x(i) = std::sin(1.3 * i + 0.7) + 1.5;
-  kx.noalias() = model_.K() * x;
-  scale.noalias() = model_.K().cwiseAbs() * x.cwiseAbs();
-  use_blocks_ = n > 0;
+  // (1e-12 of sum |K_ij| |x_j| per row; a missing or extra term of K shows at O(1)), and every
+  // equation is finished exactly once.
   if (use_blocks_) {
+    Eigen::VectorXd x(n), kx(n), bx(n), scale(n);
+    for (int i = 0; i < n; ++i) x(i) = std::sin(1.3 * i + 0.7) + 1.5;
+    kx.noalias() = model_.K() * x;
+    scale.noalias() = model_.K().cwiseAbs() * x.cwiseAbs();
+    std::vector<int> finished(n, 0);
+    auto count = [&](int lo, int hi) {
+      for (int i = lo; i < hi; ++i) ++finished[i];
+    };
     if (w == 6)
-      apply_blocks<6>(x, bx);
+      apply_spans<6>(x, bx, count);
     else
-      apply_blocks<2>(x, bx);
-    use_blocks_ = ((kx - bx).cwiseAbs().array() <= 1e-12 * scale.array()).all();
+      apply_spans<2>(x, bx, count);
+    use_blocks_ = ((kx - bx).cwiseAbs().array() <= 1e-12 * scale.array()).all() &&
+                  std::all_of(finished.begin(), finished.end(), [](int c) { return c == 1; });
   }
   if (!use_blocks_) {
     blocks_.clear();
-    block_elements_.clear();
+    spans_.clear();
+    untouched_.clear();
   }
 }
 
-template <int W>
-void InternalForce::apply_blocks(const Eigen::VectorXd& U, Eigen::VectorXd& f) const {
-  f.setZero();
-  const double* u = U.data();
-  double* out = f.data();
-  const double* blocks = blocks_.data();
-  for (const BlockElement& be : block_elements_) {
-    double x[W];
-    for (int i = 0; i < W; ++i) x[i] = be.eq[i] >= 0 ? u[be.eq[i]] : 0.0;
-    const double* k = blocks + be.block * W * W;
-    for (int i = 0; i < W; ++i) {
-      if (be.eq[i] < 0) continue;
-      double y = 0.0;
-      for (int j = 0; j < W; ++j) y += k[i * W + j] * x[j];
-      out[be.eq[i]] += y;
+bool InternalForce::build_spans(const std::vector<std::array<int, 6>>& eqs, const std::vector<int>& block_of,
+                                int w) {
+  const int n = model_.size(), ne = static_cast<int>(eqs.size()), per = w / 2;
+  // The first and the last element (in model order) that touch each equation.
+  std::vector<int> first(n, -1), last(n, -1);
+  for (int e = 0; e < ne; ++e)
+    for (int i = 0; i < w; ++i)
+      if (const int q = eqs[e][i]; q >= 0) {
+        if (first[q] < 0) first[q] = e;
+        last[q] = e;
+      }
+  untouched_.clear();
+  for (int q = 0; q < n; ++q)
+    if (first[q] < 0) {
+      if (!untouched_.empty() && untouched_.back()[1] == q)
+        ++untouched_.back()[1];
+      else
+        untouched_.push_back({q, q + 1});
     }
+  // The equations whose first (or last) element is e, as one range [lo, hi); lo = hi = 0 when
+  // there are none. False when they are not one range.
+  auto owned = [&](int e, const std::vector<int>& owner, int& lo, int& hi) {
+    lo = hi = 0;
+    int members = 0, mn = n, mx = -1;
+    for (int i = 0; i < w; ++i)
+      if (const int q = eqs[e][i]; q >= 0 && owner[q] == e) {
+        ++members;
+        mn = std::min(mn, q);
+        mx = std::max(mx, q);
+      }
+    if (members == 0) return true;
+    lo = mn;
+    hi = mx + 1;
+    return hi - lo == members;
+  };
+  spans_.clear();
+  for (int e = 0; e < ne; ++e) {
+    Span s{};
+    s.count = 1;
+    s.block = block_of[e];
+    for (int i = 0; i < 6; ++i) s.eq[i] = eqs[e][i];
+    if (!owned(e, first, s.zero_lo, s.zero_hi) || !owned(e, last, s.done_lo, s.done_hi)) {
+      spans_.clear();
+      untouched_.clear();
+      return false;
+    }
+    s.contiguous = true;
+    for (int i = 0; i < w; ++i) s.contiguous = s.contiguous && s.eq[i] >= 0 && s.eq[i] == s.eq[0] + i;
+    // Element e joins the last span when it is that span's next element: the same block, and
+    // equations and ranges advanced by one node's DOFs.
+    if (!spans_.empty()) {
+      Span& p = spans_.back();
+      const int o = p.count * per;
+      auto next_of = [o](int a, int b) { return (a < 0 && b < 0) || (a >= 0 && b == a + o); };
+      auto next_range = [o](int alo, int ahi, int blo, int bhi) {
+        return (alo == ahi && blo == bhi) || (alo < ahi && blo == alo + o && bhi == ahi + o);
+      };
+      bool next = p.block == s.block && p.contiguous == s.contiguous;
+      for (int i = 0; next && i < w; ++i) next = next_of(p.eq[i], s.eq[i]);
+      next = next && next_range(p.zero_lo, p.zero_hi, s.zero_lo, s.zero_hi) &&
+             next_range(p.done_lo, p.done_hi, s.done_lo, s.done_hi);
+      if (next) {
+        ++p.count;
+        continue;
+      }
+    }
+    spans_.push_back(s);
   }
+  return true;
 }
 
 InternalForce::Local InternalForce::local(int e, const Eigen::VectorXd& U, Eigen::Matrix<int, 6, 1>& eq,
@@ -123,10 +197,7 @@ Vec2 InternalForce::chord_direction(int e, const Eigen::VectorXd& U) const {
 
 void InternalForce::apply(const Eigen::VectorXd& U, Eigen::VectorXd& f) const {
   if (use_blocks_) {
-    if (model_.dofs_per_node() == 3)
-      apply_blocks<6>(U, f);
-    else
-      apply_blocks<2>(U, f);
+    apply_streamed(U, f, [](int, int) {});
     return;
   }
   f.noalias() = (*K_) * U;

@@ -6,6 +6,7 @@
 /// blocks of identical consecutive elements stored once), or one sparse product when the element
 /// blocks do not reassemble K.
 
+#include <array>
 #include <vector>
 
 #include <beamimpact/model/Model.hpp>
@@ -19,6 +20,16 @@ class InternalForce {
   InternalForce(const Model& model, const std::vector<bool>& corotational);
   /// @brief f = f_int(U). No allocation.
   void apply(const Eigen::VectorXd& U, Eigen::VectorXd& f) const;
+  /// @brief f = f_int(U) as apply() (the same operations on every entry, so the same bits),
+  /// calling done(lo, hi) for each range of equations as soon as f is final there: every
+  /// equation exactly once, in about increasing order, so that the caller's per-equation work
+  /// reads f while it is still in cache (one sweep over memory per step instead of two).
+  /// Defined in InternalForce_impl.hpp. No allocation.
+  /// @param U displacement
+  /// @param f the force (size of U), overwritten
+  /// @param done callable (int lo, int hi): f[lo, hi) is final
+  template <class Done>
+  void apply_streamed(const Eigen::VectorXd& U, Eigen::VectorXd& f, Done&& done) const;
   /// @brief Strain energy (J) at U.
   double strain_energy(const Eigen::VectorXd& U) const;
   /// @brief True when some body is corotational.
@@ -38,24 +49,35 @@ class InternalForce {
     double u, th1, th2, ln, c, s;
   };
   Local local(int e, const Eigen::VectorXd& U, Eigen::Matrix<int, 6, 1>& eq, double x[6]) const;
-  /// One element of the block product: the equations of its two nodes (contiguous per node
-  /// when fast), and its stiffness block.
-  struct BlockElement {
+  /// Consecutive elements whose equations advance by one node's DOFs per element and share a
+  /// stiffness block: element k of the span has equations eq[i] + k * stride (eq[i] = -1 stays
+  /// -1, a fixed DOF), zeroes f on [zero_lo, zero_hi) + k * stride before adding its rows (the
+  /// equations it touches first) and finishes [done_lo, done_hi) + k * stride (those it touches
+  /// last). A chain of identical elements is one span, stepped like the hand kernel.
+  struct Span {
+    int count, block;
     int eq[6];
-    int block;
+    int zero_lo, zero_hi, done_lo, done_hi;
+    bool contiguous;  ///< eq[i] = eq[0] + i: the element's equations are one block of memory
   };
   /// Builds the element blocks of K when nothing is corotational; keeps them only when they
   /// reassemble K (to roundoff): then apply() is element by element, as the hand kernel.
   void build_blocks();
-  template <int W>
-  void apply_blocks(const Eigen::VectorXd& U, Eigen::VectorXd& f) const;
+  /// Groups the elements (equations eq, block index each, in order) into spans_; false when
+  /// some element's first- or last-touched equations are not one range (then no spans).
+  bool build_spans(const std::vector<std::array<int, 6>>& eq, const std::vector<int>& block, int w);
+  template <int W, class Done>
+  void apply_spans(const Eigen::VectorXd& U, Eigen::VectorXd& f, Done&& done) const;
   const Model& model_;
   const SparseMatrix* K_;
   std::vector<double> blocks_;  ///< distinct element blocks, W x W row-major each
-  std::vector<BlockElement> block_elements_;
+  std::vector<Span> spans_;
+  std::vector<std::array<int, 2>> untouched_;  ///< equation ranges no element touches (f = 0)
   bool use_blocks_ = false;
   SparseMatrix K_linear_;  ///< used only when some elements are corotational
   std::vector<int> corot_elements_;
 };
 
 }  // namespace beamimpact::paper
+
+#include <beamimpact/integrator/InternalForce_impl.hpp>

@@ -16,6 +16,50 @@ Vec2 unit_axis(const Body& b) {
   return {(b.end[0] - b.start[0]) / L, (b.end[1] - b.start[1]) / L};
 }
 
+/// The sparse matrix of the triplets, the same bits as SparseMatrix::setFromTriplets (a
+/// duplicate entry is the sum of its values in triplet order, rows sorted within each column),
+/// built in place by column without setFromTriplets' row-major copy and its transpose.
+SparseMatrix assemble(int n, const std::vector<Eigen::Triplet<double>>& t) {
+  std::vector<int> start(n + 1, 0);
+  for (const Eigen::Triplet<double>& x : t) ++start[x.col() + 1];
+  for (int j = 0; j < n; ++j) start[j + 1] += start[j];
+  std::vector<int> row(t.size()), fill(start.begin(), start.end() - 1);
+  std::vector<double> val(t.size());
+  for (const Eigen::Triplet<double>& x : t) {
+    const int k = fill[x.col()]++;
+    row[k] = x.row();
+    val[k] = x.value();
+  }
+  std::vector<int> outer(n + 1, 0);
+  int nnz = 0;
+  for (int j = 0; j < n; ++j) {
+    // Stable insertion sort of the column by row (duplicates keep their triplet order), then
+    // the duplicates summed in that order.
+    for (int a = start[j] + 1; a < start[j + 1]; ++a) {
+      const int r = row[a];
+      const double v = val[a];
+      int b = a;
+      for (; b > start[j] && row[b - 1] > r; --b) {
+        row[b] = row[b - 1];
+        val[b] = val[b - 1];
+      }
+      row[b] = r;
+      val[b] = v;
+    }
+    for (int a = start[j]; a < start[j + 1]; ++a) {
+      if (nnz > outer[j] && row[nnz - 1] == row[a]) {
+        val[nnz - 1] += val[a];
+        continue;
+      }
+      row[nnz] = row[a];
+      val[nnz] = val[a];
+      ++nnz;
+    }
+    outer[j + 1] = nnz;
+  }
+  return Eigen::Map<const SparseMatrix>(n, n, nnz, outer.data(), row.data(), val.data());
+}
+
 }  // namespace
 
 Model::Model(const Scene& scene, bool bending)
@@ -107,24 +151,37 @@ Model::Model(const Scene& scene, bool bending)
         for (int k = 0; k < 2; ++k) momentum_[b][k](eq) += mc * axis_[k];  // the rod axis
     }
   }
+  const int ne = 2 * dpn;
+  kt.reserve(elements_.size() * ne * ne);
+  if (!lumped_) mt.reserve(elements_.size() * ne * ne);
+  // The matrices of the last elastic element, and M_e r for the two rigid translations r:
+  // computed again only where the element differs from the last one.
+  Eigen::MatrixXd Ke, Me;
+  Eigen::Matrix<double, 6, 2> mr;
+  int last = -1;
   for (int e = 0; e < static_cast<int>(elements_.size()); ++e) {
     const Element& el = elements_[e];
     if (el.rigid) continue;  // geometry only
     const Eigen::Matrix<int, 6, 1> eq = element_equations(e);
-    const int ne = 2 * dpn;
-    const Eigen::MatrixXd Ke = element_stiffness(e, el.c, el.s), Me = element_mass(e, el.c, el.s);
-    for (int c = 0; c < 2; ++c) {  // rigid translation along global axis c, in element DOFs
-      Eigen::VectorXd r = Eigen::VectorXd::Zero(ne);
-      for (int k = 0; k < 2; ++k) {
-        if (dpn == 3)
-          r(3 * k + c) = 1.0;
-        else
-          r(k) = axis_[c];
+    if (last < 0 || !same_element_matrices(e, last)) {
+      Ke = element_stiffness(e, el.c, el.s);
+      Me = element_mass(e, el.c, el.s);
+      for (int c = 0; c < 2; ++c) {  // rigid translation along global axis c, in element DOFs
+        Eigen::VectorXd r = Eigen::VectorXd::Zero(ne);
+        for (int k = 0; k < 2; ++k) {
+          if (dpn == 3)
+            r(3 * k + c) = 1.0;
+          else
+            r(k) = axis_[c];
+        }
+        const Eigen::VectorXd m_r = Me * r;
+        for (int i = 0; i < ne; ++i) mr(i, c) = m_r(i);
       }
-      const Eigen::VectorXd mr = Me * r;
-      for (int i = 0; i < ne; ++i)
-        if (eq(i) >= 0) momentum_[el.body][c](eq(i)) += mr(i);
+      last = e;
     }
+    for (int c = 0; c < 2; ++c)
+      for (int i = 0; i < ne; ++i)
+        if (eq(i) >= 0) momentum_[el.body][c](eq(i)) += mr(i, c);
     for (int i = 0; i < ne; ++i) {
       if (eq(i) < 0) continue;
       for (int j = 0; j < ne; ++j) {
@@ -139,16 +196,18 @@ Model::Model(const Scene& scene, bool bending)
       }
     }
   }
-  K_.resize(n, n);
-  K_.setFromTriplets(kt.begin(), kt.end());
-  M_.resize(n, n);
+  K_ = assemble(n, kt);
   if (lumped_) {
     m_diag_ = mdiag;
     for (int i = 0; i < n; ++i) mt.emplace_back(i, i, mdiag(i));
   }
-  M_.setFromTriplets(mt.begin(), mt.end());
-  K_.makeCompressed();
-  M_.makeCompressed();
+  M_ = assemble(n, mt);
+}
+
+bool Model::same_element_matrices(int a, int b) const {
+  const Element &x = elements_[a], &y = elements_[b];
+  return x.E == y.E && x.area == y.area && x.inertia == y.inertia && x.rho == y.rho && x.length == y.length &&
+         x.c == y.c && x.s == y.s && x.rigid == y.rigid;
 }
 
 Eigen::MatrixXd Model::element_stiffness(int e, double c, double s) const {

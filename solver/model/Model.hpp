@@ -90,6 +90,10 @@ class Model {
   };
   /// @brief The element list (per-element work: corotation, bounds).
   const std::vector<Element>& elements() const { return elements_; }
+  /// @brief True when elements a and b have the same section, material, length and direction,
+  /// so that their stiffness and mass matrices are equal (per-element loops compute them once
+  /// per run of equal elements).
+  bool same_element_matrices(int a, int b) const;
   /// @brief Element stiffness in global axes at direction (c, s): 6x6 (frame) or 2x2 (rod).
   Eigen::MatrixXd element_stiffness(int e, double c, double s) const;
   /// @brief Element mass in global axes at direction (c, s): 6x6 (frame) or 2x2 (rod).

@@ -118,9 +118,15 @@ double element_bound(const Model& model) {
   double lam = 0.0;
   Eigen::MatrixXd K_last, M_last;
   double lam_last = 0.0;
+  int last = -1;  // the last element whose matrices were formed
   for (int e = 0; e < static_cast<int>(model.elements().size()); ++e) {
     const Model::Element& el = model.elements()[e];
     if (el.rigid) continue;  // a rigid body has no element stiffness
+    if (last >= 0 && model.same_element_matrices(e, last)) {  // equal matrices: no need to form them
+      lam = std::max(lam, lam_last);
+      continue;
+    }
+    last = e;
     Eigen::MatrixXd Ke = model.element_stiffness(e, el.c, el.s), Me = model.element_mass(e, el.c, el.s);
     if (Ke.size() != K_last.size() || Ke != K_last || Me != M_last) {
       Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(Ke, Me, Eigen::EigenvaluesOnly);

@@ -1,0 +1,102 @@
+#pragma once
+/// @file InternalForce_impl.hpp
+/// @brief The element-block product of InternalForce, templated on the caller's per-equation
+/// work (InternalForce::apply_streamed). Included by InternalForce.hpp; not for direct use.
+
+#include <beamimpact/integrator/InternalForce.hpp>
+
+namespace beamimpact::paper {
+
+template <int W, class Done>
+void InternalForce::apply_spans(const Eigen::VectorXd& U, Eigen::VectorXd& f, Done&& done) const {
+  constexpr int per = W / 2;  // DOFs per node: the stride of a span
+  const double* u = U.data();
+  double* out = f.data();
+  // Finished ranges that follow each other are handed on together, kBatch equations or more at
+  // a time (a few kB: still in L1), so that the caller's loop is long enough to vectorise.
+  constexpr int kBatch = 128;
+  int pending_lo = 0, pending_hi = 0;
+  auto finish = [&](int lo, int hi) {
+    if (lo != pending_hi || pending_hi - pending_lo >= kBatch) {
+      if (pending_lo < pending_hi) done(pending_lo, pending_hi);
+      pending_lo = lo;
+    }
+    pending_hi = hi;
+  };
+  for (const std::array<int, 2>& r : untouched_) {
+    for (int i = r[0]; i < r[1]; ++i) out[i] = 0.0;
+    finish(r[0], r[1]);
+  }
+  // Every entry of f gets exactly the operations of a zeroed f followed by "out[eq] += row . x"
+  // element by element in model order: 0.0 at its first element, then each element's row sum
+  // (accumulated from 0.0 in column order).
+  for (const Span& sp : spans_) {
+    const double* k = blocks_.data() + sp.block * W * W;
+    if (sp.contiguous) {  // the hand kernel's loop: no index arrays, no tests
+      // The rows the element touches first, relative to its first equation: 0.0 + y there
+      // (what zeroing and then adding gives), without a store and a reload per entry.
+      const int z_lo = sp.zero_lo < sp.zero_hi ? sp.zero_lo - sp.eq[0] : W;
+      const int z_hi = sp.zero_lo < sp.zero_hi ? sp.zero_hi - sp.eq[0] : W;
+      if (z_lo == per && z_hi == W && sp.done_hi - sp.done_lo == per && sp.done_lo == sp.eq[0]) {
+        // A chain's interior: each element adds to its first node and starts its second, and
+        // finishes its first node. The same operations with the tests taken out of the loop.
+        for (int e = 0; e < sp.count; ++e) {
+          const int b = sp.eq[0] + e * per;
+          double x[W];
+          for (int i = 0; i < W; ++i) x[i] = u[b + i];
+          for (int i = 0; i < W; ++i) {
+            double y = 0.0;
+            for (int j = 0; j < W; ++j) y += k[i * W + j] * x[j];
+            out[b + i] = (i < per ? out[b + i] : 0.0) + y;
+          }
+          finish(b, b + per);
+        }
+        continue;
+      }
+      for (int e = 0; e < sp.count; ++e) {
+        const int o = e * per, b = sp.eq[0] + o;
+        double x[W];
+        for (int i = 0; i < W; ++i) x[i] = u[b + i];
+        for (int i = 0; i < W; ++i) {
+          double y = 0.0;
+          for (int j = 0; j < W; ++j) y += k[i * W + j] * x[j];
+          const double before = i >= z_lo && i < z_hi ? 0.0 : out[b + i];
+          out[b + i] = before + y;
+        }
+        if (sp.done_lo < sp.done_hi) finish(sp.done_lo + o, sp.done_hi + o);
+      }
+      continue;
+    }
+    for (int e = 0; e < sp.count; ++e) {
+      const int o = e * per;
+      int eq[W];
+      for (int i = 0; i < W; ++i) eq[i] = sp.eq[i] >= 0 ? sp.eq[i] + o : -1;
+      for (int i = sp.zero_lo + o; i < sp.zero_hi + o; ++i) out[i] = 0.0;
+      double x[W];
+      for (int i = 0; i < W; ++i) x[i] = eq[i] >= 0 ? u[eq[i]] : 0.0;
+      for (int i = 0; i < W; ++i) {
+        if (eq[i] < 0) continue;
+        double y = 0.0;
+        for (int j = 0; j < W; ++j) y += k[i * W + j] * x[j];
+        out[eq[i]] += y;
+      }
+      if (sp.done_lo < sp.done_hi) finish(sp.done_lo + o, sp.done_hi + o);
+    }
+  }
+  if (pending_lo < pending_hi) done(pending_lo, pending_hi);
+}
+
+template <class Done>
+void InternalForce::apply_streamed(const Eigen::VectorXd& U, Eigen::VectorXd& f, Done&& done) const {
+  if (!use_blocks_) {
+    apply(U, f);
+    if (f.size() > 0) done(0, static_cast<int>(f.size()));
+    return;
+  }
+  if (model_.dofs_per_node() == 3)
+    apply_spans<6>(U, f, done);
+  else
+    apply_spans<2>(U, f, done);
+}
+
+}  // namespace beamimpact::paper

@@ -4,6 +4,7 @@
 /// smooth pieces (R may jump or kink only where a piece starts) and read back by local
 /// Lagrange interpolation, so that the delayed term R(t - T) is available at any time.
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -32,6 +33,19 @@ class DelayMemory {
  private:
   std::vector<double> starts_;
   std::vector<std::vector<double>> t_, v_;
+  /// Interpolation weights of one stencil: piece, first sample, size. A cache of a pure function
+  /// of the stored times, which never change once added. Not thread-safe: one memory serves
+  /// one integration.
+  struct Stencil {
+    std::size_t piece = static_cast<std::size_t>(-1), lo = 0, m = 0;
+    double w[12] = {};
+  };
+  mutable std::array<Stencil, 8> cache_{};
+  mutable std::size_t next_slot_ = 0;
+  /// The last lower_bound answer and its piece (where the next search starts).
+  mutable std::size_t hint_piece_ = static_cast<std::size_t>(-1), hint_ = 0;
+  /// std::lower_bound(ts, s) searched from the hint.
+  std::size_t lower_bound_near(const std::vector<double>& ts, double s, std::size_t piece) const;
 };
 
 }  // namespace beamimpact::exact

@@ -75,7 +75,11 @@ void InternalForce::build_blocks() {
   // equation is finished exactly once.
   if (use_blocks_) {
     Eigen::VectorXd x(n), kx(n), bx(n), scale(n);
-    for (int i = 0; i < n; ++i) x(i) = std::sin(1.3 * i + 0.7) + 1.5;
+    unsigned seed = 12345u;  // entries in [1, 2) from a linear congruential sequence
+    for (int i = 0; i < n; ++i) {
+      seed = seed * 1103515245u + 12345u;
+      x(i) = 1.0 + static_cast<double>((seed >> 8) & 0xffff) / 65536.0;
+    }
     kx.noalias() = model_.K() * x;
     scale.noalias() = model_.K().cwiseAbs() * x.cwiseAbs();
     std::vector<int> finished(n, 0);

@@ -20,18 +20,24 @@ Vec2 unit_axis(const Body& b) {
 /// duplicate entry is the sum of its values in triplet order, rows sorted within each column),
 /// built in place by column without setFromTriplets' row-major copy and its transpose.
 SparseMatrix assemble(int n, const std::vector<Eigen::Triplet<double>>& t) {
+  // Counting sort of the triplets by column (stable: triplet order within a column) straight into
+  // the matrix's compressed arrays, then each column sorted by row and compacted in place.
+  SparseMatrix A(n, n);
+  A.resizeNonZeros(static_cast<Eigen::Index>(t.size()));
+  int* outer = A.outerIndexPtr();
+  int* row = A.innerIndexPtr();
+  double* val = A.valuePtr();
   std::vector<int> start(n + 1, 0);
   for (const Eigen::Triplet<double>& x : t) ++start[x.col() + 1];
   for (int j = 0; j < n; ++j) start[j + 1] += start[j];
-  std::vector<int> row(t.size()), fill(start.begin(), start.end() - 1);
-  std::vector<double> val(t.size());
+  std::vector<int> fill(start.begin(), start.end() - 1);
   for (const Eigen::Triplet<double>& x : t) {
     const int k = fill[x.col()]++;
     row[k] = x.row();
     val[k] = x.value();
   }
-  std::vector<int> outer(n + 1, 0);
   int nnz = 0;
+  outer[0] = 0;
   for (int j = 0; j < n; ++j) {
     // Stable insertion sort of the column by row (duplicates keep their triplet order), then
     // the duplicates summed in that order.
@@ -57,7 +63,8 @@ SparseMatrix assemble(int n, const std::vector<Eigen::Triplet<double>>& t) {
     }
     outer[j + 1] = nnz;
   }
-  return Eigen::Map<const SparseMatrix>(n, n, nnz, outer.data(), row.data(), val.data());
+  A.resizeNonZeros(nnz);
+  return A;
 }
 
 }  // namespace

@@ -159,10 +159,7 @@ double element_bound(const Model& model) {
     last = e;
     Eigen::MatrixXd Ke = model.element_stiffness(e, el.c, el.s), Me = model.element_mass(e, el.c, el.s);
     if (Ke.size() != K_last.size() || Ke != K_last || Me != M_last) {
-      Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(Ke, Me, Eigen::EigenvaluesOnly);
-      // A singular element mass (no rotary inertia) leaves no finite bound.
-      lam_last =
-          es.info() == Eigen::Success ? es.eigenvalues().maxCoeff() : std::numeric_limits<double>::infinity();
+      lam_last = largest_generalized(Ke, Me, model.lumped());  // singular mass (no rotary inertia): inf
       K_last = std::move(Ke);
       M_last = std::move(Me);
     }

@@ -93,7 +93,7 @@ class ExplicitContactIntegrator {
   void resolve_contacts();
   /// advance() and the prediction of solve_contacts() for lumped, undamped models with a fixed
   /// mass: the same operations on each entry in the same order (bit-for-bit the same results),
-  /// in one sweep over memory after f_int instead of eight.
+  /// in one sweep over memory: f_int is streamed into the update (InternalForce::apply_streamed).
   void advance_fused();
   /// Moves from p to p+1 with the forces of the last solve_contacts().
   void advance();

@@ -66,6 +66,7 @@ class InternalForce {
   /// Groups the elements (equations eq, block index each, in order) into spans_; false when
   /// some element's first- or last-touched equations are not one range (then no spans).
   bool build_spans(const std::vector<std::array<int, 6>>& eq, const std::vector<int>& block, int w);
+  /// The span product for W = 2 x DOFs per node (apply_streamed without the fallback).
   template <int W, class Done>
   void apply_spans(const Eigen::VectorXd& U, Eigen::VectorXd& f, Done&& done) const;
   const Model& model_;

@@ -43,18 +43,20 @@ std::unique_ptr<SearchBoxes> search_boxes(const Model& model, const Scene& scene
   return any ? std::make_unique<SearchBoxes>(model, boxed, margin) : nullptr;
 }
 
-/// The fused path's velocity update and next prediction on equations [lo, hi) (the vectors do
-/// not overlap): Vbar += inv (-dt/2 (fn + fu)), ub = (un + dt Vbar) + dt^2/2 (inv -fn).
+/// One equation of the fused update: Vbar^{p+1} = vb_old + inv w2 (w2 the force sum of the
+/// velocity line times dt), then the next prediction ub = (un + dt Vbar^{p+1}) + dt^2/2 inv (-fn).
+inline void fused_entry(int i, double vb_old, double w2, double dt, const double* un, const double* fn,
+                        const double* inv, double* vb, double* ub) {
+  const double vbar = vb_old + inv[i] * w2;
+  vb[i] = vbar;
+  ub[i] = (un[i] + dt * vbar) + (0.5 * dt * dt) * (inv[i] * -fn[i]);
+}
+
+/// The fused update on equations [lo, hi) without contact force (the vectors do not overlap).
 void velocity_sweep(int lo, int hi, double dt, const double* __restrict un, const double* __restrict fn,
                     const double* __restrict fu, const double* __restrict inv, double* __restrict vb,
                     double* __restrict ub) {
-  const double half_dt2 = 0.5 * dt * dt, m_half_dt = -0.5 * dt;
-  for (int i = lo; i < hi; ++i) {
-    const double w2 = m_half_dt * (fn[i] + fu[i]);
-    const double vbar = vb[i] + inv[i] * w2;
-    vb[i] = vbar;
-    ub[i] = (un[i] + dt * vbar) + half_dt2 * (inv[i] * -fn[i]);
-  }
+  for (int i = lo; i < hi; ++i) fused_entry(i, vb[i], (-0.5 * dt) * (fn[i] + fu[i]), dt, un, fn, inv, vb, ub);
 }
 
 }  // namespace
@@ -194,7 +196,7 @@ void ExplicitContactIntegrator::advance() {
 
 void ExplicitContactIntegrator::advance_fused() {
   const double* inv = minv_.inverse_diagonal().data();
-  const double dt = dt_, dt2 = dt_ * dt_, half_dt2 = 0.5 * dt_ * dt_, m_half_dt = -0.5 * dt_;
+  const double dt = dt_, dt2 = dt_ * dt_, m_half_dt = -0.5 * dt_;
   const bool force = solver_.any_force();
   // U^{p+1} = Ubar + dt^2 M^-1 f_c (apply_H undamped: (inv fc) dt^2). f_c is zero outside
   // fc_dofs_, where U^{p+1} is Ubar itself, whose buffer the prediction below overwrites: swap
@@ -221,9 +223,7 @@ void ExplicitContactIntegrator::advance_fused() {
       const int i = fc_dofs_[k];
       double w2 = m_half_dt * (fn[i] + fu[i]);
       w2 += dt * fc_[i];
-      const double vbar = vbar_saved_[k] + inv[i] * w2;
-      vb[i] = vbar;
-      ub[i] = (un[i] + dt * vbar) + half_dt2 * (inv[i] * -fn[i]);
+      fused_entry(i, vbar_saved_[k], w2, dt, un, fn, inv, vb, ub);
     }
   std::swap(U_prev_, U_);
   std::swap(U_, U_next_);

@@ -146,8 +146,10 @@ bool InternalForce::build_spans(const std::vector<std::array<int, 6>>& eqs, cons
       untouched_.clear();
       return false;
     }
-    s.contiguous = true;
-    for (int i = 0; i < w; ++i) s.contiguous = s.contiguous && s.eq[i] >= 0 && s.eq[i] == s.eq[0] + i;
+    bool contiguous = true;
+    for (int i = 0; i < w; ++i) contiguous = contiguous && s.eq[i] >= 0 && s.eq[i] == s.eq[0] + i;
+    s.chain = contiguous && s.zero_lo == s.eq[0] + per && s.zero_hi == s.eq[0] + w && s.done_lo == s.eq[0] &&
+              s.done_hi == s.eq[0] + per;
     // Element e joins the last span when it is that span's next element: the same block, and
     // equations and ranges advanced by one node's DOFs.
     if (!spans_.empty()) {
@@ -157,7 +159,7 @@ bool InternalForce::build_spans(const std::vector<std::array<int, 6>>& eqs, cons
       auto next_range = [o](int alo, int ahi, int blo, int bhi) {
         return (alo == ahi && blo == bhi) || (alo < ahi && blo == alo + o && bhi == ahi + o);
       };
-      bool next = p.block == s.block && p.contiguous == s.contiguous;
+      bool next = p.block == s.block && p.chain == s.chain;
       for (int i = 0; next && i < w; ++i) next = next_of(p.eq[i], s.eq[i]);
       next = next && next_range(p.zero_lo, p.zero_hi, s.zero_lo, s.zero_hi) &&
              next_range(p.done_lo, p.done_hi, s.done_lo, s.done_hi);

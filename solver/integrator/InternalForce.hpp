@@ -58,7 +58,9 @@ class InternalForce {
     int count, block;
     int eq[6];
     int zero_lo, zero_hi, done_lo, done_hi;
-    bool contiguous;  ///< eq[i] = eq[0] + i: the element's equations are one block of memory
+    /// A chain's interior: eq[i] = eq[0] + i (one block of memory), and each element starts
+    /// its second node (zero range) and finishes its first (done range).
+    bool chain;
   };
   /// Builds the element blocks of K when nothing is corotational; keeps them only when they
   /// reassemble K (to roundoff): then apply() is element by element, as the hand kernel.

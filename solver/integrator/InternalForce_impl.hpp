@@ -32,38 +32,19 @@ void InternalForce::apply_spans(const Eigen::VectorXd& U, Eigen::VectorXd& f, Do
   // (accumulated from 0.0 in column order).
   for (const Span& sp : spans_) {
     const double* k = blocks_.data() + sp.block * W * W;
-    if (sp.contiguous) {  // the hand kernel's loop: no index arrays, no tests
-      // The rows the element touches first, relative to its first equation: 0.0 + y there
-      // (what zeroing and then adding gives), without a store and a reload per entry.
-      const int z_lo = sp.zero_lo < sp.zero_hi ? sp.zero_lo - sp.eq[0] : W;
-      const int z_hi = sp.zero_lo < sp.zero_hi ? sp.zero_hi - sp.eq[0] : W;
-      if (z_lo == per && z_hi == W && sp.done_hi - sp.done_lo == per && sp.done_lo == sp.eq[0]) {
-        // A chain's interior: each element adds to its first node and starts its second, and
-        // finishes its first node. The same operations with the tests taken out of the loop.
-        for (int e = 0; e < sp.count; ++e) {
-          const int b = sp.eq[0] + e * per;
-          double x[W];
-          for (int i = 0; i < W; ++i) x[i] = u[b + i];
-          for (int i = 0; i < W; ++i) {
-            double y = 0.0;
-            for (int j = 0; j < W; ++j) y += k[i * W + j] * x[j];
-            out[b + i] = (i < per ? out[b + i] : 0.0) + y;
-          }
-          finish(b, b + per);
-        }
-        continue;
-      }
+    if (sp.chain) {  // the hand kernel's loop: no index arrays, no tests
+      // Each element adds to its first node (finished after it) and starts its second: 0.0 + y
+      // there, what zeroing and then adding gives, without a store and a reload per entry.
       for (int e = 0; e < sp.count; ++e) {
-        const int o = e * per, b = sp.eq[0] + o;
+        const int b = sp.eq[0] + e * per;
         double x[W];
         for (int i = 0; i < W; ++i) x[i] = u[b + i];
         for (int i = 0; i < W; ++i) {
           double y = 0.0;
           for (int j = 0; j < W; ++j) y += k[i * W + j] * x[j];
-          const double before = i >= z_lo && i < z_hi ? 0.0 : out[b + i];
-          out[b + i] = before + y;
+          out[b + i] = (i < per ? out[b + i] : 0.0) + y;
         }
-        if (sp.done_lo < sp.done_hi) finish(sp.done_lo + o, sp.done_hi + o);
+        finish(b, b + per);
       }
       continue;
     }

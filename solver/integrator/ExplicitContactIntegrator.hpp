@@ -84,6 +84,15 @@ class ExplicitContactIntegrator {
   double dissipated() const { return dissipated_; }
   /// @brief The model.
   const Model& model() const { return model_; }
+  /// @brief The internal force (its element end forces serve the field output).
+  const InternalForce& internal_force() const { return fint_; }
+  /// @brief f = the contact forces of step p as they act on the equations (R^p + tau^p through
+  /// the pairs' rows, the weights of the chosen surface interpolation included).
+  /// @param f resized to the model's size and overwritten
+  void contact_force(Eigen::VectorXd& f) const {
+    f.setZero(model_.size());
+    solver_.add_forces(f);
+  }
 
  private:
   /// Predicts U^{p+1} without contact, solves the contact forces of step p and the physical

@@ -4,6 +4,17 @@
 #include <cmath>
 
 namespace beamimpact::paper {
+namespace {
+
+/// The element's end forces from its local deformation: axial stretch u (m) and end rotations
+/// th1, th2 relative to the chord (rad): N = EA/L u, M1 = EI/L (4 th1 + 2 th2), M2 = EI/L (2 th1 + 4 th2).
+std::array<double, 3> section(const Model::Element& el, double u, double th1, double th2) {
+  const double N = el.E * el.area / el.length * u;
+  const double k = el.E * el.inertia / el.length;
+  return {N, k * (4 * th1 + 2 * th2), k * (2 * th1 + 4 * th2)};
+}
+
+}  // namespace
 
 InternalForce::InternalForce(const Model& model, const std::vector<bool>& corotational)
     : model_(model), K_(&model.K()) {
@@ -212,9 +223,7 @@ void InternalForce::apply(const Eigen::VectorXd& U, Eigen::VectorXd& f) const {
   for (int e : corot_elements_) {
     const Model::Element& el = model_.elements()[e];
     const Local l = local(e, U, eq, x);
-    const double N = el.E * el.area / el.length * l.u;
-    const double k = el.E * el.inertia / el.length;
-    const double M1 = k * (4 * l.th1 + 2 * l.th2), M2 = k * (2 * l.th1 + 4 * l.th2);
+    const auto [N, M1, M2] = section(el, l.u, l.th1, l.th2);
     // f = B^T [N, M1, M2] with B = [r; e3 - z/ln; e6 - z/ln] (theta_local = theta - chord rotation,
     // d(chord angle) = z . dp / ln), r = [-c,-s,0,c,s,0], z = [s,-c,0,-s,c,0]:
     // f = r N - z (M1 + M2)/ln + e3 M1 + e6 M2.
@@ -224,6 +233,31 @@ void InternalForce::apply(const Eigen::VectorXd& U, Eigen::VectorXd& f) const {
     for (int i = 0; i < 6; ++i)
       if (eq(i) >= 0) f(eq(i)) += fe[i];
   }
+}
+
+std::array<double, 3> InternalForce::end_forces(int e, const Eigen::VectorXd& U) const {
+  const Model::Element& el = model_.elements()[e];
+  if (el.rigid) return {0.0, 0.0, 0.0};
+  if (std::binary_search(corot_elements_.begin(), corot_elements_.end(), e)) {
+    Eigen::Matrix<int, 6, 1> eq;
+    double x[6];
+    const Local l = local(e, U, eq, x);
+    return section(el, l.u, l.th1, l.th2);
+  }
+  // The linear element: stretch along and chord rotation across the reference axis.
+  const Vec2 u1 = model_.node_vector(U, el.n1), u2 = model_.node_vector(U, el.n2);
+  const double du = u2[0] - u1[0], dv = u2[1] - u1[1];
+  double th1 = 0.0, th2 = 0.0;
+  if (model_.dofs_per_node() == 3) {
+    const double turn = (-el.s * du + el.c * dv) / el.length;
+    auto rotation = [&](int node) {
+      const int q = model_.equation(node, 2);
+      return q >= 0 ? U(q) : 0.0;
+    };
+    th1 = rotation(el.n1) - turn;
+    th2 = rotation(el.n2) - turn;
+  }
+  return section(el, el.c * du + el.s * dv, th1, th2);
 }
 
 double InternalForce::strain_energy(const Eigen::VectorXd& U) const {

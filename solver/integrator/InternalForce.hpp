@@ -30,6 +30,13 @@ class InternalForce {
   /// @param done callable (int lo, int hi): f[lo, hi) is final
   template <class Done>
   void apply_streamed(const Eigen::VectorXd& U, Eigen::VectorXd& f, Done&& done) const;
+  /// @brief End forces of element e at U in its own frame: axial force N (N, tension > 0) and
+  /// the end moments M1, M2 (N m) the element exerts on its nodes' rotations, the same ones
+  /// apply() assembles: the corotational element's for corotational bodies, the linear
+  /// element's otherwise (rods: M = 0; rigid elements: all 0).
+  /// @param e element index
+  /// @param U displacement
+  std::array<double, 3> end_forces(int e, const Eigen::VectorXd& U) const;
   /// @brief Strain energy (J) at U.
   double strain_energy(const Eigen::VectorXd& U) const;
   /// @brief True when some body is corotational.

@@ -141,23 +141,15 @@ HistoryRow make_row(const ExplicitContactIntegrator& in) {
   return row;
 }
 
-/// The contact forces of every pair on the nodes: R n + tau t on the striker node, the reaction
-/// on the target's two nodes by the struck point's weights.
-std::vector<NodalForce> contact_forces(const ExplicitContactIntegrator& in) {
-  const Model& m = in.model();
-  std::vector<NodalForce> out;
-  for (std::size_t p = 0; p < in.pairs().size(); ++p) {
-    const ContactPair& pair = in.pairs()[p];
-    const ContactForce& f = in.forces()[p];
-    if (f.R == 0.0 && f.tau == 0.0) continue;
-    const Vec2 F{f.R * pair.normal()[0] + f.tau * pair.tangent()[0],
-                 f.R * pair.normal()[1] + f.tau * pair.tangent()[1]};
-    out.push_back({pair.striker_node(), F});
-    const int n1 = m.node_id(pair.target_body(), pair.element());
-    out.push_back({n1, {-pair.xi1() * F[0], -pair.xi1() * F[1]}});
-    out.push_back({n1 + 1, {-pair.xi2() * F[0], -pair.xi2() * F[1]}});
-  }
-  return out;
+/// The field output of one row: the contact forces on the equations and every element's end
+/// forces, both from the integrator's own operators.
+void write_fields(const ExplicitContactIntegrator& in, double t, FieldWriter& fields) {
+  Eigen::VectorXd fc;
+  in.contact_force(fc);
+  const int ne = static_cast<int>(in.model().elements().size());
+  std::vector<std::array<double, 3>> ends(ne);
+  for (int e = 0; e < ne; ++e) ends[e] = in.internal_force().end_forces(e, in.U());
+  fields.write(t, in.U(), in.V(), fc, ends);
 }
 
 /// Records the complete step p: contact samples and real gaps every step, a row (and the fields,
@@ -182,7 +174,7 @@ void record_step(const ExplicitContactIntegrator& integ, long p, long N, const S
         "step {:.6g} s",
         row.t, E, E0, integ.dt(), critical_dt));
   rec.track_momentum(row.momentum);
-  if (fields) fields->write(row.t, integ.U(), integ.V(), contact_forces(integ));
+  if (fields) write_fields(integ, row.t, *fields);
   rec.add_row(std::move(row));
 }
 
@@ -228,7 +220,7 @@ SimulationResult solve(const Scene& scene_in, const std::filesystem::path& field
   for (const ContactPair& pair : integ.pairs())
     surfaces.emplace_back(model, pair.target_body(), pair.striker_node());
   std::optional<FieldWriter> fields;
-  if (!fields_dir.empty()) fields.emplace(model, scene, fields_dir);
+  if (!fields_dir.empty()) fields.emplace(model, fields_dir);
   Progress progress("paper", scene.time.end);
   for (long p = 0;; ++p) {
     record_step(integ, p, N, scene, cs.dt, surfaces, rec, fields ? &*fields : nullptr);

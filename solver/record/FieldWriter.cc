@@ -31,9 +31,8 @@ void data_array(fmt::memory_buffer& b, const char* type, const char* name, int n
 
 }  // namespace
 
-FieldWriter::FieldWriter(const Model& model, const Scene& scene, std::filesystem::path dir)
+FieldWriter::FieldWriter(const Model& model, std::filesystem::path dir)
     : model_(model),
-      corotational_(scene.model.kinematics == Kinematics::kCorotational),
       dir_(std::move(dir)),
       touching_(model.num_nodes(), 0) {
   std::filesystem::remove(collection(dir_));
@@ -56,49 +55,29 @@ FieldWriter::~FieldWriter() {
   }
 }
 
-void FieldWriter::section_forces(const Eigen::VectorXd& U) {
+void FieldWriter::section_forces(const std::vector<std::array<double, 3>>& end_forces) {
   const int n = model_.num_nodes();
   axial_.assign(n, 0.0);
   moment_.assign(n, 0.0);
-  auto rotation = [&](int node) {
-    const int eq = model_.equation(node, 2);
-    return eq >= 0 ? U(eq) : 0.0;
-  };
-  for (const Model::Element& e : model_.elements()) {
+  for (std::size_t k = 0; k < model_.elements().size(); ++k) {
+    const Model::Element& e = model_.elements()[k];
     if (e.rigid) continue;
-    const Vec2 u1 = model_.node_vector(U, e.n1), u2 = model_.node_vector(U, e.n2);
-    const double du = u2[0] - u1[0], dv = u2[1] - u1[1];
-    double stretch, chord_turn;  // elongation (m) and rotation of the chord (rad)
-    if (corotational_) {  // the element's own frame: deformed chord (as the corotational solver)
-      const double dx = e.length * e.c + du, dy = e.length * e.s + dv;
-      stretch = std::hypot(dx, dy) - e.length;
-      chord_turn = std::atan2(e.c * dy - e.s * dx, e.c * dx + e.s * dy);
-    } else {  // small displacements: the linear element's strain measures
-      stretch = e.c * du + e.s * dv;
-      chord_turn = (-e.s * du + e.c * dv) / e.length;
-    }
-    const double N = e.E * e.area * stretch / e.length;
-    double M1 = 0.0, M2 = 0.0;
-    if (model_.dofs_per_node() == 3) {  // Hermite curvature at the ends, relative to the chord
-      const double p1 = rotation(e.n1) - chord_turn, p2 = rotation(e.n2) - chord_turn;
-      const double EI_L = e.E * e.inertia / e.length;
-      M1 = EI_L * (-4.0 * p1 - 2.0 * p2) / e.length;
-      M2 = EI_L * (2.0 * p1 + 4.0 * p2) / e.length;
-    }
+    const auto [N, M1, M2] = end_forces[k];
+    // Sagging positive (EI kappa, kappa = v'' in the element's left-normal axes): the bending
+    // moment is -M1 at the first node and +M2 at the second.
     axial_[e.n1] += N / touching_[e.n1];
     axial_[e.n2] += N / touching_[e.n2];
-    moment_[e.n1] += M1 / touching_[e.n1];
+    moment_[e.n1] += -M1 / touching_[e.n1];
     moment_[e.n2] += M2 / touching_[e.n2];
   }
 }
 
 void FieldWriter::write(double t, const Eigen::VectorXd& U, const Eigen::VectorXd& V,
-                        const std::vector<NodalForce>& contact_forces) {
+                        const Eigen::VectorXd& contact_force, const std::vector<std::array<double, 3>>& end_forces) {
   const int n = model_.num_nodes(), nb = model_.num_bodies();
-  section_forces(U);
-  contact_.assign(n, Vec2{0.0, 0.0});
-  for (const NodalForce& f : contact_forces)
-    for (int c = 0; c < 2; ++c) contact_[f.node][c] += f.force[c];
+  if (end_forces.size() != model_.elements().size())
+    throw std::logic_error("FieldWriter::write: one end-force triple per element expected");
+  section_forces(end_forces);
 
   fmt::memory_buffer b;
   auto out = std::back_inserter(b);
@@ -130,7 +109,7 @@ void FieldWriter::write(double t, const Eigen::VectorXd& U, const Eigen::VectorX
   });
   data_array(b, "Float64", "axial_force", n, 1, [&](int i, int) { return axial_[i]; });
   data_array(b, "Float64", "bending_moment", n, 1, [&](int i, int) { return moment_[i]; });
-  data_array(b, "Float64", "contact_force", n, 3, [&](int i, int c) { return c < 2 ? contact_[i][c] : 0.0; });
+  data_array(b, "Float64", "contact_force", n, 3, vec(contact_force));
   fmt::format_to(out, "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
 
   const std::string name = fmt::format("fields/step_{:06d}.vtu", count_++);

@@ -9,10 +9,11 @@
 /// beams); one polyline cell per body. Point data per node: displacement, velocity (3
 /// components, z = 0), rotation (rad), axial_force (N, tension > 0), bending_moment (N m,
 /// M = EI kappa in the element's left-normal convention, averaged over the elements meeting at a
-/// node) and contact_force (N: the force on each striker node, and its reaction shared over the
-/// target's nodes as the contact's struck point is). Cell data: body (index into the scene).
+/// node) and contact_force (N: the contact forces as they act on the nodes' translations, the
+/// striker's and the reaction shared over the target's nodes by the surface interpolation). Cell data: body (index into the scene).
 /// Numbers are written in shortest round-trip form, so they read back bit for bit.
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -24,20 +25,13 @@
 
 namespace beamimpact {
 
-/// @brief A force (N, global axes) acting on one global node.
-struct NodalForce {
-  int node = 0;
-  Vec2 force{};
-};
-
 /// @brief Writes one run's fields (see the file comment).
 class FieldWriter {
  public:
   /// @brief Removes any fields of an earlier run in `dir` and starts the collection.
   /// @param model the beam model (nodes, elements, equations)
-  /// @param scene the scene (body names, kinematics)
   /// @param dir the run directory (fields.pvd and fields/ go there)
-  FieldWriter(const Model& model, const Scene& scene, std::filesystem::path dir);
+  FieldWriter(const Model& model, std::filesystem::path dir);
   FieldWriter(const FieldWriter&) = delete;
   FieldWriter& operator=(const FieldWriter&) = delete;
   /// @brief An unfinished collection (the run failed) is removed: no .pvd vouches for it.
@@ -47,9 +41,11 @@ class FieldWriter {
   /// @param t time (s)
   /// @param U displacements, the model's equation vector
   /// @param V velocities, the model's equation vector
-  /// @param contact_forces forces on nodes from the contacts (summed per node)
-  void write(double t, const Eigen::VectorXd& U, const Eigen::VectorXd& V,
-             const std::vector<NodalForce>& contact_forces);
+  /// @param contact_force the contact forces on the equations (N; read per node as U is)
+  /// @param end_forces per element: axial force N (N, tension > 0) and the end moments M1, M2
+  ///        (N m) the element exerts on its nodes' rotations (InternalForce::end_forces)
+  void write(double t, const Eigen::VectorXd& U, const Eigen::VectorXd& V, const Eigen::VectorXd& contact_force,
+             const std::vector<std::array<double, 3>>& end_forces);
 
   /// @brief Closes the collection: fields.pvd appears (atomically) only now.
   void finish();
@@ -58,17 +54,15 @@ class FieldWriter {
   static std::filesystem::path collection(const std::filesystem::path& dir) { return dir / "fields.pvd"; }
 
  private:
-  /// Axial force and bending moment at each node from U (element end forces, averaged).
-  void section_forces(const Eigen::VectorXd& U);
+  /// Axial force and bending moment at each node: the element end forces, averaged.
+  void section_forces(const std::vector<std::array<double, 3>>& end_forces);
 
   const Model& model_;
-  bool corotational_;
   std::filesystem::path dir_;
   std::ofstream pvd_;  ///< fields.pvd.part while the run goes on
   long count_ = 0;
   std::vector<double> axial_, moment_;
   std::vector<int> touching_;  ///< elements meeting at each node
-  std::vector<Vec2> contact_;
 };
 
 }  // namespace beamimpact

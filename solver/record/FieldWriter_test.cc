@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <beamimpact/integrator/InternalForce.hpp>
 #include <beamimpact/testing/test_scenes.hpp>
 
 namespace beamimpact {
@@ -38,38 +39,46 @@ std::vector<double> array(const std::string& vtu, const std::string& name) {
 TEST(FieldWriter, SectionForcesOfExactlyRepresentedFields) {
   // S4's target B: 10 m from (0, 0) to (10, 0), pin at x = 0, roller at x = 10, E = 1.8e11,
   // A = 0.4, I = 0.4^3/12. Linear kinematics: the small-strain measures of the linear element.
-  const Scene scene = load_paper_scene("s4_oblique_45", {"model.kinematics=\"linear\""});
-  const Model model(scene, true);
-  const int b = scene.body_index("B");
-  const double L = 10.0, eps = 1e-6, kappa = 2e-6;
-  Eigen::VectorXd U = Eigen::VectorXd::Zero(model.size()), V = U;
-  for (int i = 0; i <= 10; ++i) {
-    const int n = model.node_id(b, i);
-    const double x = model.node_position(n)[0];
-    const double values[3] = {eps * x, kappa * x * (x - L) / 2.0, kappa * (2.0 * x - L) / 2.0};
-    for (int c = 0; c < 3; ++c)
-      if (const int e = model.equation(n, c); e >= 0) U(e) = values[c];
+  // Element lengths 1 m and 0.5 m: a moment off by a power of the element length shows.
+  for (int elements : {10, 20}) {
+    const Scene scene = load_paper_scene(
+        "s4_oblique_45", {"model.kinematics=\"linear\"", "bodies.B.elements=" + std::to_string(elements)});
+    const Model model(scene, true);
+    const paper::InternalForce fint(model, std::vector<bool>(model.num_bodies(), false));
+    const int b = scene.body_index("B");
+    const double L = 10.0, eps = 1e-6, kappa = 2e-6;
+    Eigen::VectorXd U = Eigen::VectorXd::Zero(model.size()), V = U, Fc = U;
+    for (int i = 0; i <= elements; ++i) {
+      const int n = model.node_id(b, i);
+      const double x = model.node_position(n)[0];
+      const double values[3] = {eps * x, kappa * x * (x - L) / 2.0, kappa * (2.0 * x - L) / 2.0};
+      for (int c = 0; c < 3; ++c)
+        if (const int e = model.equation(n, c); e >= 0) U(e) = values[c];
+    }
+    Fc(model.equation(model.node_id(b, 5), 1)) = -3.0;
+    std::vector<std::array<double, 3>> ends(model.elements().size());
+    for (std::size_t e = 0; e < ends.size(); ++e) ends[e] = fint.end_forces(static_cast<int>(e), U);
+    const auto dir = temp_path("fields" + std::to_string(elements));
+    {
+      FieldWriter w(model, dir);
+      w.write(0.0, U, V, Fc, ends);
+      w.finish();
+    }
+    const std::string vtu = read(dir / "fields/step_000000.vtu");
+    const std::vector<double> N = array(vtu, "axial_force"), M = array(vtu, "bending_moment");
+    ASSERT_EQ(N.size(), static_cast<std::size_t>(model.num_nodes()));  // 6 striker + target nodes
+    EXPECT_EQ(N.size(), static_cast<std::size_t>(6 + elements + 1));
+    const double EA = 1.8e11 * 0.4, EI = 1.8e11 * 0.0053333333333333;
+    for (int i = 0; i <= elements; ++i) {
+      const int n = model.node_id(b, i);
+      // Exact up to the rounding of U (relative 1e-9: displacements of 1e-5 m summed and divided).
+      EXPECT_NEAR(N[n], EA * eps, 1e-9 * EA * eps) << "node " << i;
+      EXPECT_NEAR(M[n], EI * kappa, 1e-9 * EI * kappa) << "node " << i;  // sagging positive: v'' > 0
+    }
+    const std::vector<double> F = array(vtu, "contact_force");
+    EXPECT_EQ(F[3 * model.node_id(b, 5) + 1], -3.0);
+    EXPECT_NE(read(dir / "fields.pvd").find("timestep=\"0\""), std::string::npos);
   }
-  const auto dir = temp_path("fields");
-  {
-    FieldWriter w(model, scene, dir);
-    w.write(0.0, U, V, {{model.node_id(b, 5), {0.0, -3.0}}});
-    w.finish();
-  }
-  const std::string vtu = read(dir / "fields/step_000000.vtu");
-  const std::vector<double> N = array(vtu, "axial_force"), M = array(vtu, "bending_moment");
-  ASSERT_EQ(N.size(), static_cast<std::size_t>(model.num_nodes()));  // 6 striker + 11 target nodes
-  EXPECT_EQ(N.size(), 17u);
-  const double EA = 1.8e11 * 0.4, EI = 1.8e11 * 0.0053333333333333;
-  for (int i = 0; i <= 10; ++i) {
-    const int n = model.node_id(b, i);
-    // Exact up to the rounding of U (relative 1e-9: displacements of 1e-5 m summed and divided).
-    EXPECT_NEAR(N[n], EA * eps, 1e-9 * EA * eps) << "node " << i;
-    EXPECT_NEAR(M[n], EI * kappa, 1e-9 * EI * kappa) << "node " << i;  // sagging positive: v'' > 0
-  }
-  const std::vector<double> F = array(vtu, "contact_force");
-  EXPECT_EQ(F[3 * model.node_id(b, 5) + 1], -3.0);
-  EXPECT_NE(read(dir / "fields.pvd").find("timestep=\"0\""), std::string::npos);
 }
 
 TEST(FieldWriter, AnUnfinishedRunLeavesNoCollection) {
@@ -77,8 +86,9 @@ TEST(FieldWriter, AnUnfinishedRunLeavesNoCollection) {
   const Model model(scene, false);
   const auto dir = temp_path("unfinished");
   {
-    FieldWriter w(model, scene, dir);
-    w.write(0.0, Eigen::VectorXd::Zero(model.size()), Eigen::VectorXd::Zero(model.size()), {});
+    FieldWriter w(model, dir);
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(model.size());
+    w.write(0.0, zero, zero, zero, std::vector<std::array<double, 3>>(model.elements().size()));
   }  // destroyed without finish(): the run threw
   EXPECT_FALSE(std::filesystem::exists(FieldWriter::collection(dir)));
   EXPECT_FALSE(std::filesystem::exists(dir / "fields.pvd.part"));

@@ -107,6 +107,43 @@ TEST_F(StudyCommand, TableRecordsRefusedCasesAndFrictionActsOnlyOnObliqueImpacts
   EXPECT_NE(read(tmp_ / "o/timing.csv").find("seconds"), std::string::npos);
 }
 
+TEST_F(StudyCommand, APointWhoseOverridesFailKeepsEveryColumn) {
+  // mu = -0.5 is refused when the rake after it loads the scene: the point's cases are errors,
+  // and their rows still have one cell per header column (norms empty, not missing).
+  const char* grid = R"(
+[[parameter]]
+name = "mu"
+key = "contacts[0].friction"
+values = [0.0, -0.5]
+[[parameter]]
+name = "alpha0"
+rake = "A"
+values = [90]
+)";
+  const auto [code, out] = run(fmt::format("study '{}' --out '{}'", study(grid).string(), (tmp_ / "o").string()));
+  ASSERT_EQ(code, 0) << out;
+  std::istringstream csv(read(tmp_ / "o/study.csv"));
+  auto cells = [](const std::string& line) {  // commas outside double quotes, plus one
+    int n = 1;
+    bool quoted = false;
+    for (char ch : line) {
+      if (ch == '"') quoted = !quoted;
+      n += ch == ',' && !quoted;
+    }
+    return n;
+  };
+  std::string header, line;
+  std::getline(csv, header);
+  int rows = 0, errors = 0;
+  while (std::getline(csv, line)) {
+    ++rows;
+    errors += line.find(",error,") != std::string::npos;
+    EXPECT_EQ(cells(line), cells(header)) << line;
+  }
+  EXPECT_EQ(rows, 2);
+  EXPECT_EQ(errors, 1);
+}
+
 TEST_F(StudyCommand, BadStudyExitsTwoNamingFileAndKey) {
   const auto [code, out] =
       run(fmt::format("study '{}' --out '{}'", study("[[parameter]]\nname = \"mu\"\nkey = \"contacts[0].friction\"\n").string(),

@@ -58,7 +58,11 @@ PointResult run_point(const Study& s, const Point& p, std::size_t index, const f
     set = overrides(s, p);
   } catch (const std::exception& e) {
     pr.reference_message = e.what();
-    for (const auto& m : s.methods) pr.cases.push_back(CaseResult{m, "error", e.what(), 0, 0.0, {}, {}, 0.0});
+    for (const auto& m : s.methods) {
+      CaseResult c{m, "error", e.what(), 0, 0.0, {}, {}, 0.0};
+      c.norms.assign(s.norms.size(), std::nullopt);  // one cell per norm in every row
+      pr.cases.push_back(std::move(c));
+    }
     return pr;
   }
   std::vector<std::string> ref_set = set;

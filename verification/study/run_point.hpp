@@ -26,7 +26,7 @@ struct CaseResult {
   std::string message;
   long steps = 0;
   double dt = 0.0;                                 ///< s, the step used
-  std::vector<std::optional<double>> norms;        ///< Study::norms order; empty values: n/a
+  std::vector<std::optional<double>> norms;        ///< one per Study::norms, in order; empty: n/a
   std::optional<double> energy_growth;             ///< check_run's energy_growth
   double seconds = 0.0;                            ///< s, wall time of this run (timing field)
 };

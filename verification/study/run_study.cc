@@ -33,7 +33,7 @@ std::string point_label(const Study& s, const Point& p) {
 
 std::optional<double> metric(const Study& s, const CaseResult& c, const std::string& name) {
   const auto it = std::find(s.norms.begin(), s.norms.end(), name);
-  if (it == s.norms.end() || c.norms.empty()) return std::nullopt;
+  if (it == s.norms.end()) return std::nullopt;
   return c.norms[static_cast<std::size_t>(it - s.norms.begin())];
 }
 
@@ -125,7 +125,7 @@ void write_study(const Study& s, const StudyResult& r, const fs::path& out, cons
       timing += fmt::format("{},{},{},{:.4f},{:.4f}\n", i, c.method, pr.rank, c.seconds, pr.reference_seconds);
       nlohmann::json norms = nlohmann::json::object();
       for (std::size_t k = 0; k < s.norms.size(); ++k)
-        norms[s.norms[k]] = c.norms.empty() || !c.norms[k] ? nlohmann::json(nullptr) : nlohmann::json(*c.norms[k]);
+        norms[s.norms[k]] = c.norms[k] ? nlohmann::json(*c.norms[k]) : nlohmann::json(nullptr);
       nlohmann::json values = nlohmann::json::object();
       for (std::size_t k = 0; k < s.parameters.size(); ++k) values[s.parameters[k].name] = pt.values[k];
       cases.push_back({{"index", i},

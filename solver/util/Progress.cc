@@ -5,11 +5,13 @@
 
 namespace beamimpact {
 namespace {
-bool g_enabled = true;  // set once by the CLI before any run starts
+bool g_enabled = true;  // set by the CLI before any run starts; a study silences it while it runs
 std::function<void(const std::string&, double, double)> g_listener;
 }  // namespace
 
 void Progress::set_enabled(bool enabled) { g_enabled = enabled; }
+
+bool Progress::enabled() { return g_enabled; }
 
 void Progress::set_listener(std::function<void(const std::string&, double, double)> listener) {
   g_listener = std::move(listener);

@@ -22,6 +22,8 @@ class Progress {
   ~Progress();
   /// @brief Silences every Progress of this process (the CLI's --quiet); on by default.
   static void set_enabled(bool enabled);
+  /// @brief Whether Progress lines are shown (set_enabled).
+  static bool enabled();
   /// @brief Sends the updates to `listener` (label, value, total) instead of stderr (the Python
   /// module shows them in a notebook); an empty function restores stderr. Set before a run.
   static void set_listener(std::function<void(const std::string&, double, double)> listener);

@@ -107,12 +107,9 @@ PointResult run_point(const Study& s, const Point& p, std::size_t index, const f
 }
 
 double point_cost(const Study& s, const Point& p) {
-  auto cost = [&](const std::vector<std::string>& set) {
+  auto cost = [&](const std::vector<std::string>& set) {  // the run-cost check's estimate
     const Scene sc = load_scene(s.scene, set);
-    double dofs = 0.0;
-    for (const auto& b : sc.bodies) dofs += 3.0 * b.nodes();
-    const double dt = sc.time.dt ? *sc.time.dt : estimate_auto_dt(sc);
-    return std::ceil(sc.time.end / dt) * dofs;
+    return estimate_run_cost(sc, sc.time.dt ? *sc.time.dt : estimate_auto_dt(sc)).work;
   };
   try {
     std::vector<std::string> set = overrides(s, p);

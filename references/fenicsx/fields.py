@@ -7,8 +7,6 @@ The stress is sigma = E/(1+nu) eps + E nu/(1-nu^2) tr(eps) I of the Q2 displacem
 the nodes of a Q2 tensor space (each node takes one neighbouring cell's value: for viewing, not a
 smoothed recovery).
 """
-import glob
-import os
 
 import ufl
 from dolfinx import fem, io
@@ -37,10 +35,3 @@ class FieldOutput:
 
     def close(self):
         self.file.close()
-
-
-def remove_stale_fields(out_dir):
-    """Removes fields of an earlier run from out_dir (fields.pvd and its pieces)."""
-    for p in glob.glob(os.path.join(out_dir, "fields*.pvd")) + glob.glob(os.path.join(out_dir, "fields*.pvtu")) + \
-            glob.glob(os.path.join(out_dir, "fields_p*.vtu")):
-        os.remove(p)

@@ -3,6 +3,7 @@
 a sample is "in contact" when R > 0, an interval is [first, last] contact sample time, and
 intervals separated by less than the merge gap are merged."""
 
+import glob
 import json
 import math
 import os
@@ -72,12 +73,18 @@ def _check_finite(obj, where):
 
 
 def remove_stale(out_dir):
-    """Removes a previous summary.json first, so a crash cannot leave an old one looking valid."""
+    """Removes what an earlier run left in out_dir first: summary.json, so that a crash cannot
+    leave an old one looking valid, and its fields (fields.pvd and its pieces), so that a run
+    without fields leaves no collection describing another run."""
     os.makedirs(out_dir, exist_ok=True)
-    try:
-        os.remove(os.path.join(out_dir, "summary.json"))
-    except FileNotFoundError:
-        pass
+    stale = [os.path.join(out_dir, "summary.json")]
+    for pattern in ("fields*.pvd", "fields*.pvtu", "fields_p*.vtu"):
+        stale += glob.glob(os.path.join(out_dir, pattern))
+    for p in stale:
+        try:
+            os.remove(p)
+        except FileNotFoundError:
+            pass
 
 
 def write_run(out_dir, columns, rows, summary):

@@ -123,10 +123,8 @@ def main(argv):
     stats = [ContactStats(merge_gap, rule) for _ in contacts]
     fields = None
     if args.fields or scene.fields:
-        from fields import FieldOutput, remove_stale_fields
-        if comm.rank == 0:
-            remove_stale_fields(args.out)
-        comm.Barrier()
+        from fields import FieldOutput
+        comm.Barrier()  # rank 0 has removed the stale fields (remove_stale)
         fields = FieldOutput(cont, args.out)
     res = integrator.run(cont, st, stats, progress=not args.quiet, fields=fields)
     if fields is not None:

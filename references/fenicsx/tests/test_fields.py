@@ -53,4 +53,7 @@ sxx = sig[behind, 0]
 check(np.abs(sxx + 5.0).max() <= 0.5, f"t = {sets[i][0]} s: sigma_xx behind the fronts in "
       f"[{sxx.min():.3f}, {sxx.max():.3f}] N/m^2, exact -5")
 check(len(glob.glob(os.path.join(out, "fields*.vtu"))) == len(sets), "one piece per time step")
+# A later run into the same directory without fields leaves no collection of this one behind.
+common.run("s1_central.toml", out, "--mesh", "coarse", "--end", "0.1")
+check(not glob.glob(os.path.join(out, "fields*")), "a run without --fields removes an earlier run's fields")
 common.finish()

@@ -160,21 +160,16 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
   return out_;
 }
 
-void ContactSolver::add_forces(Eigen::VectorXd& f) const {
+void ContactSolver::add_forces(Eigen::VectorXd& f, std::vector<int>* touched) const {
   for (std::size_t c = 0; c < pairs_.size(); ++c) {
     if (out_[c].state == ContactState::kOpen) continue;
     for (const DofTerm& t : pairs_[c].normal_row()) f(t.eq) += t.coeff * out_[c].R;
     if (friction_)
       for (const DofTerm& t : pairs_[c].tangent_row()) f(t.eq) += t.coeff * out_[c].tau;
-  }
-}
-
-void ContactSolver::force_equations(std::vector<int>& eqs) const {
-  for (std::size_t c = 0; c < pairs_.size(); ++c) {
-    if (out_[c].state == ContactState::kOpen) continue;
-    for (const DofTerm& t : pairs_[c].normal_row()) eqs.push_back(t.eq);
+    if (!touched) continue;
+    for (const DofTerm& t : pairs_[c].normal_row()) touched->push_back(t.eq);
     if (friction_)
-      for (const DofTerm& t : pairs_[c].tangent_row()) eqs.push_back(t.eq);
+      for (const DofTerm& t : pairs_[c].tangent_row()) touched->push_back(t.eq);
   }
 }
 

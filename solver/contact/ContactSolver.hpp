@@ -49,10 +49,9 @@ class ContactSolver {
   /// @brief Forces of the last solve (all open before the first), per contact.
   const std::vector<ContactForce>& forces() const { return out_; }
   /// @brief Adds sum W lambda of the last solve into f (a force vector, N).
-  void add_forces(Eigen::VectorXd& f) const;
-  /// @brief Appends the equations add_forces() writes to (duplicates possible).
-  /// @param eqs the list to append to
-  void force_equations(std::vector<int>& eqs) const;
+  /// @param f the force vector added to
+  /// @param touched when given, the equations written are appended to it (duplicates possible)
+  void add_forces(Eigen::VectorXd& f, std::vector<int>* touched = nullptr) const;
   /// @brief Forgets the cached H W columns (the mass changed: a rotating body's M_A(t)).
   void invalidate() { std::fill(fresh_.begin(), fresh_.end(), 0); }
   /// @brief True when the last solve produced any non-zero force.

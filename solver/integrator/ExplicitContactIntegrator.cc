@@ -240,8 +240,7 @@ void ExplicitContactIntegrator::form_velocity() const {
 void ExplicitContactIntegrator::gather_contact_force() {
   for (int i : fc_dofs_) fc_[i] = 0.0;
   fc_dofs_.clear();
-  solver_.add_forces(fc_);
-  solver_.force_equations(fc_dofs_);
+  solver_.add_forces(fc_, &fc_dofs_);
   std::sort(fc_dofs_.begin(), fc_dofs_.end());  // each equation once (add_forces summed them)
   fc_dofs_.erase(std::unique(fc_dofs_.begin(), fc_dofs_.end()), fc_dofs_.end());
 }

@@ -45,6 +45,21 @@ FieldWriter::FieldWriter(const Model& model, std::filesystem::path dir)
           "<Collection>\n";
   for (const Model::Element& e : model.elements())
     if (!e.rigid) ++touching_[e.n1], ++touching_[e.n2];
+  // The piece's points, cells and cell data: the same in every step's file, formatted once.
+  const int n = model.num_nodes(), nb = model.num_bodies();
+  fmt::memory_buffer b;
+  auto out = std::back_inserter(b);
+  fmt::format_to(out, "<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n<Points>\n", n, nb);
+  data_array(b, "Float64", "reference_position", n, 3,
+             [&](int i, int c) { return c < 2 ? model.node_position(i)[c] : 0.0; });
+  fmt::format_to(out, "</Points>\n<Cells>\n");
+  data_array(b, "Int64", "connectivity", n, 1, [](int i, int) { return i; });
+  data_array(b, "Int64", "offsets", nb, 1, [&](int body, int) { return body + 1 < nb ? model.node_id(body + 1, 0) : n; });
+  data_array(b, "UInt8", "types", nb, 1, [](int, int) { return kPolyLine; });
+  fmt::format_to(out, "</Cells>\n<CellData Scalars=\"body\">\n");
+  data_array(b, "Int32", "body", nb, 1, [](int body, int) { return body; });
+  fmt::format_to(out, "</CellData>\n<PointData Vectors=\"displacement\">\n");
+  geometry_ = fmt::to_string(b);
 }
 
 FieldWriter::~FieldWriter() {
@@ -74,7 +89,7 @@ void FieldWriter::section_forces(const std::vector<std::array<double, 3>>& end_f
 
 void FieldWriter::write(double t, const Eigen::VectorXd& U, const Eigen::VectorXd& V,
                         const Eigen::VectorXd& contact_force, const std::vector<std::array<double, 3>>& end_forces) {
-  const int n = model_.num_nodes(), nb = model_.num_bodies();
+  const int n = model_.num_nodes();
   if (end_forces.size() != model_.elements().size())
     throw std::logic_error("FieldWriter::write: one end-force triple per element expected");
   section_forces(end_forces);
@@ -86,18 +101,9 @@ void FieldWriter::write(double t, const Eigen::VectorXd& U, const Eigen::VectorX
                  "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
                  "<UnstructuredGrid>\n<FieldData>\n"
                  "<DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" format=\"ascii\">{}</DataArray>\n"
-                 "</FieldData>\n<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n<Points>\n",
-                 t, n, nb);
-  data_array(b, "Float64", "reference_position", n, 3,
-             [&](int i, int c) { return c < 2 ? model_.node_position(i)[c] : 0.0; });
-  fmt::format_to(out, "</Points>\n<Cells>\n");
-  data_array(b, "Int64", "connectivity", n, 1, [](int i, int) { return i; });
-  data_array(b, "Int64", "offsets", nb, 1,
-             [&](int body, int) { return body + 1 < nb ? model_.node_id(body + 1, 0) : n; });
-  data_array(b, "UInt8", "types", nb, 1, [](int, int) { return kPolyLine; });
-  fmt::format_to(out, "</Cells>\n<CellData Scalars=\"body\">\n");
-  data_array(b, "Int32", "body", nb, 1, [](int body, int) { return body; });
-  fmt::format_to(out, "</CellData>\n<PointData Vectors=\"displacement\">\n");
+                 "</FieldData>\n",
+                 t);
+  b.append(geometry_.data(), geometry_.data() + geometry_.size());
   auto vec = [&](const Eigen::VectorXd& X) {
     return [&](int i, int c) { return c < 2 ? model_.node_vector(X, i)[c] : 0.0; };
   };

@@ -63,6 +63,7 @@ class FieldWriter {
   long count_ = 0;
   std::vector<double> axial_, moment_;
   std::vector<int> touching_;  ///< elements meeting at each node
+  std::string geometry_;       ///< each .vtu's points, cells and cell data (the same every step)
 };
 
 }  // namespace beamimpact

@@ -10,7 +10,10 @@ compare command's norms, over the C++ library (beamimpact._core).
 Bad input raises beamimpact.SceneError with the CLI's message (file, key, what was expected).
 """
 import json
+import numbers
 import sys
+
+import numpy as np
 
 from . import _core
 from ._core import SceneError
@@ -23,13 +26,15 @@ __version__ = _core.__version__
 
 def _toml_value(v):
     """A --set value as TOML: shortest round-trip numbers, true/false, quoted strings."""
-    if isinstance(v, bool):
+    if isinstance(v, (bool, np.bool_)):
         return "true" if v else "false"
-    if isinstance(v, (int, float)):
-        return repr(v)
-    if isinstance(v, str):
-        return json.dumps(v)
-    return json.dumps(v)  # lists of numbers: JSON and TOML agree
+    if isinstance(v, numbers.Integral):  # numpy integers too
+        return str(int(v))
+    if isinstance(v, numbers.Real):  # numpy floats too (their repr is not a TOML number in numpy 2)
+        return repr(float(v))
+    if isinstance(v, np.ndarray):
+        v = v.tolist()
+    return json.dumps(v)  # strings, and lists of numbers: JSON and TOML agree
 
 
 class Scene:

@@ -68,6 +68,13 @@ def test_set_overrides_equal_cli_set(tmp_path):
     same_summary(r.summary, json.loads((out / "summary.json").read_text()))
 
 
+def test_numpy_scalars_are_set_as_the_numbers_they_hold():
+    # np.float64 / np.int64 (what np.logspace and friends give) reach the scene as 0.005 and 20.
+    r = beamimpact.run(PAPER / "s1_central.toml", set={"time.dt": np.float64(0.005), "bodies.B.elements": np.int64(20)},
+                       progress=False)
+    assert r.summary["overrides"] == {"time.dt": "0.005", "bodies.B.elements": "20"}
+
+
 def test_from_dict_runs_as_the_file_does():
     path = PAPER / "s1_central.toml"
     tables = tomllib.loads(path.read_text())

@@ -52,7 +52,6 @@ std::optional<double> opt(const nlohmann::json& j) {
 
 PointResult run_point(const Study& s, const Point& p, std::size_t index, const fs::path& runs_dir) {
   PointResult pr;
-  pr.index = index;
   std::vector<std::string> set;
   try {
     set = overrides(s, p);
@@ -129,21 +128,17 @@ nlohmann::json PointResult::to_json() const {
     cs.push_back({{"method", c.method}, {"status", c.status}, {"message", c.message}, {"steps", c.steps},
                   {"dt", c.dt}, {"norms", n}, {"energy_growth", opt(c.energy_growth)}, {"seconds", c.seconds}});
   }
-  return {{"index", index},
-          {"reference_status", reference_status},
+  return {{"reference_status", reference_status},
           {"reference_message", reference_message},
           {"reference_seconds", reference_seconds},
-          {"rank", rank},
           {"cases", cs}};
 }
 
 PointResult PointResult::from_json(const nlohmann::json& j) {
   PointResult p;
-  p.index = j.at("index").get<std::size_t>();
   p.reference_status = j.at("reference_status").get<std::string>();
   p.reference_message = j.at("reference_message").get<std::string>();
   p.reference_seconds = j.at("reference_seconds").get<double>();
-  p.rank = j.at("rank").get<int>();
   for (const auto& c : j.at("cases")) {
     CaseResult r;
     r.method = c.at("method").get<std::string>();

@@ -33,11 +33,10 @@ struct CaseResult {
 
 /// @brief Everything one point produced.
 struct PointResult {
-  std::size_t index = 0;
   std::string reference_status = "error", reference_message;
   double reference_seconds = 0.0;  ///< s (timing field)
   std::vector<CaseResult> cases;   ///< one per Study::methods
-  int rank = 0;                    ///< the MPI rank that ran it (timing field)
+  int rank = 0;                    ///< the MPI rank that ran it (timing field; set by the receiver)
 
   /// @brief Lossless JSON (doubles round-trip), for sending between ranks.
   nlohmann::json to_json() const;

@@ -72,9 +72,7 @@ std::optional<StudyResult> execute_study(const Study& s, const fs::path& out) {
   const bool root = farm(
       cost,
       [&](std::size_t i) {
-        PointResult p = run_point(s, r.points[i], i, runs);
-        p.rank = World::rank();
-        return p.to_json().dump();
+        return run_point(s, r.points[i], i, runs).to_json().dump();
       },
       [&](std::size_t i, const std::string& payload, int rank) {
         PointResult p = PointResult::from_json(nlohmann::json::parse(payload));

@@ -12,6 +12,7 @@ scene (exit 2, e.g. exact with friction) is left out of that figure and named in
 """
 import argparse
 import csv
+import functools
 import json
 import os
 import subprocess
@@ -65,12 +66,14 @@ def run_all(a):
     return runs, notes
 
 
+@functools.cache
 def history(d):
     with open(os.path.join(d, "history.csv")) as f:
         rows = list(csv.DictReader(f))
     return {k: [float(r[k]) for r in rows] for k in rows[0]}
 
 
+@functools.cache
 def summary(d):
     with open(os.path.join(d, "summary.json")) as f:
         return json.load(f)
@@ -231,9 +234,10 @@ def main():
     a.exe = os.path.join(a.build, "beamimpact")
     if not os.access(a.exe, os.X_OK):
         fail(f"--build {a.build}: no beamimpact program there (build first: bash tools/build.sh)")
-    version = subprocess.run([a.exe, "--version"], capture_output=True, text=True).stdout.strip()
     os.makedirs(a.out, exist_ok=True)
     runs, notes = run_all(a)
+    # The version of the runs the figures show (with --reuse they may be older than this build).
+    version = ", ".join(sorted({summary(d).get("version", "?") for d in runs.values() if d}))
     for s in SCENES:
         if not runs.get((s, "paper")):
             fail(f"{s}: the paper integrator's run failed: {notes.get((s, 'paper'))}")

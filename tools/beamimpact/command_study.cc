@@ -24,16 +24,10 @@ void study_command(const StudyArgs& a) {
   if (!r) return;  // an MPI worker rank: rank 0 writes the table
   const std::string command =
       fmt::format("beamimpact study {} --out {}{}", a.file, a.out, a.keep_runs ? " --keep-runs" : "");
-  study::write_study(s, *r, a.out, command, kVersion);
-  std::size_t cases = 0, broke = 0;
-  for (const auto& p : r->results)
-    for (const auto& c : p.cases) {
-      ++cases;
-      broke += study::broke(s, c);
-    }
+  const study::StudyCounts n = study::write_study(s, *r, a.out, command, kVersion);
   const auto out = std::filesystem::path(a.out);
   fmt::print("study {}: {} case(s) in {:.1f} s on {} rank(s) ({:.2f} cases/s), {} where the method broke\n", s.name,
-             cases, r->wall_seconds, r->ranks, static_cast<double>(cases) / std::max(r->wall_seconds, 1e-9), broke);
+             n.cases, r->wall_seconds, r->ranks, n.cases_per_second, n.broken);
   fmt::print("table: {} {}\nreport: {}\ntiming: {}\n", (out / "study.csv").string(), (out / "study.json").string(),
              (out / "study.md").string(), (out / "timing.json").string());
 }

@@ -95,7 +95,7 @@ std::optional<StudyResult> execute_study(const Study& s, const fs::path& out) {
   return r;
 }
 
-void write_study(const Study& s, const StudyResult& r, const fs::path& out, const std::string& command,
+StudyCounts write_study(const Study& s, const StudyResult& r, const fs::path& out, const std::string& command,
                  const std::string& version) {
   fs::create_directories(out);
   std::string csv = "index";
@@ -173,11 +173,12 @@ void write_study(const Study& s, const StudyResult& r, const fs::path& out, cons
                    {"energy_growth_bound", s.energy_growth},
                    {"breaks", rules},
                    {"cases", cases}};
+  const double rate = r.wall_seconds > 0 ? static_cast<double>(n_cases) / r.wall_seconds : 0.0;
   nlohmann::json t{{"ranks", r.ranks},
                    {"points", r.points.size()},
                    {"cases", n_cases},
                    {"wall_seconds", r.wall_seconds},
-                   {"cases_per_second", r.wall_seconds > 0 ? static_cast<double>(n_cases) / r.wall_seconds : 0.0}};
+                   {"cases_per_second", rate}};
   std::string md = fmt::format(
       "# Study {}\n\n{}\n\n- command: `{}`\n- version: `{}`\n- scene: `{}` with `{}`\n- reference: {} {}\n"
       "- {} point(s) ({}), {} case(s); timing in timing.json\n\n## Outcomes\n\n| method status | cases |\n|---|---|\n",
@@ -194,6 +195,7 @@ void write_study(const Study& s, const StudyResult& r, const fs::path& out, cons
   write_file_atomic(out / "study.md", md);
   write_file_atomic(out / "timing.csv", timing);
   write_file_atomic(out / "timing.json", t.dump(1) + "\n");
+  return {n_cases, n_broken, rate};
 }
 
 }  // namespace beamimpact::study

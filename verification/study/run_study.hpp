@@ -36,13 +36,21 @@ std::optional<StudyResult> execute_study(const Study& s, const std::filesystem::
 /// @param c the case
 bool broke(const Study& s, const CaseResult& c);
 
+/// @brief What the written tables count.
+struct StudyCounts {
+  std::size_t cases = 0;   ///< points x methods
+  std::size_t broken = 0;  ///< cases where the method broke (study.md)
+  double cases_per_second = 0.0;  ///< cases / wall_seconds (timing.json)
+};
+
 /// @brief Writes out/study.csv, study.json, study.md, timing.csv and timing.json.
 /// @param s the study
 /// @param r its results
 /// @param out the output directory
 /// @param command how the study was started (for study.md)
 /// @param version `beamimpact --version`
-void write_study(const Study& s, const StudyResult& r, const std::filesystem::path& out,
+/// @return the counts the tables state
+StudyCounts write_study(const Study& s, const StudyResult& r, const std::filesystem::path& out,
                  const std::string& command, const std::string& version);
 
 }  // namespace beamimpact::study

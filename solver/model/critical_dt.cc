@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <beamimpact/model/MassSolver.hpp>
+#include <beamimpact/model/top_eigenvalue.hpp>
 
 namespace beamimpact {
 namespace {
@@ -73,70 +74,12 @@ Eigen::VectorXd lanczos_start(int n) {
   return q;
 }
 
-/// Largest eigenvalue of T_k (alpha on the diagonal, beta[i + 1] beside it), bit for bit what
-/// the dense SelfAdjointEigenSolver of earlier versions gave (small models only, see
-/// converged_ritz), at O(k^2) instead of O(k^3): on a matrix that is already tridiagonal the
-/// dense solver's Householder reduction is the identity (every reflector has tau = 0), so it
-/// comes down to its scaling by the largest |entry| and the same tridiagonal QR.
-double dense_top_ritz(const std::vector<double>& alpha, const std::vector<double>& beta) {
-  const int m = static_cast<int>(alpha.size());
-  if (m == 1) return alpha[0];
-  double scale = 0.0;
-  for (int i = 0; i < m; ++i) scale = std::max(scale, std::abs(alpha[i]));
-  for (int i = 0; i + 1 < m; ++i) scale = std::max(scale, std::abs(beta[i + 1]));
-  if (scale == 0.0) scale = 1.0;
-  Eigen::VectorXd d(m), e(m - 1);
-  for (int i = 0; i < m; ++i) d(i) = alpha[i] / scale;
-  for (int i = 0; i + 1 < m; ++i) e(i) = beta[i + 1] / scale;
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es;
-  es.computeFromTridiagonal(d, e, Eigen::EigenvaluesOnly);
-  return (es.eigenvalues() * scale).maxCoeff();
-}
-
-/// The Lanczos of earlier versions for models of at most kConfirmDofs DOFs (O(k^3) per
-/// iteration, k <= n): the top Ritz value once stable to 1e-12 for 5 iterations, 0 when it never
-/// settles. Kept operation for operation so that the step of a small scene keeps its last bit
-/// (the S4 comparisons with IDA are sensitive to it).
-double converged_ritz(const Model& model, int* iterations) {
-  const int n = model.size();
-  const MassSolver minv(model);
-  const SparseMatrix& K = model.K();
-  const SparseMatrix& M = model.M();
-  Eigen::VectorXd q = lanczos_start(n), q_prev = Eigen::VectorXd::Zero(n), w(n), Mq(n);
-  q /= std::sqrt(q.dot(M * q));
-  std::vector<double> alpha, beta = {0.0};
-  double last = 0.0;
-  int stable = 0, it = 0;
-  bool settled = false;
-  for (it = 0; it < n; ++it) {
-    const Eigen::VectorXd Kq = K * q;
-    alpha.push_back(q.dot(Kq));
-    minv.apply(Kq, w);  // w = M^-1 K q
-    w -= alpha.back() * q + beta.back() * q_prev;
-    Mq = M * w;
-    const double b = std::sqrt(std::max(0.0, w.dot(Mq)));
-    const double ritz = dense_top_ritz(alpha, beta);
-    stable = std::abs(ritz - last) <= 1e-12 * std::abs(ritz) ? stable + 1 : 0;
-    last = ritz;
-    if (stable >= 5 || b <= 1e-14 * std::sqrt(std::abs(alpha.back()) + 1e-300)) {
-      settled = true;
-      break;
-    }
-    beta.push_back(b);
-    q_prev = q;
-    q = w / b;
-  }
-  *iterations = it + 1;
-  return settled || it == n ? last : 0.0;
-}
-
 }  // namespace
 
 const char* to_string(CriticalBound b) {
   switch (b) {
     case CriticalBound::kElement: return "element";
     case CriticalBound::kSubdomain: return "subdomain";
-    case CriticalBound::kLanczosConfirmed: return "lanczos_confirmed";
     case CriticalBound::kNone: break;
   }
   return "none";
@@ -169,11 +112,16 @@ double element_bound(const Model& model) {
 }
 
 double subdomain_bound(const Model& model, int max_elements) {
+  return subdomain_bound(model, max_elements, element_bound(model)).upper;
+}
+
+SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_element) {
   const std::vector<Model::Element>& els = model.elements();
   const int nel = static_cast<int>(els.size()), ne = 2 * model.dofs_per_node();
+  SubdomainBound out;
+  out.exact = true;
   double lam = 0.0, lam_last = 0.0;
-  Eigen::MatrixXd Kc, Mc;
-  std::vector<int> eqs;
+  std::vector<int> eqs, first;
   std::vector<double> key, key_last;
   for (int e = 0; e < nel;) {
     if (els[e].rigid) {  // a rigid body has no element stiffness
@@ -182,17 +130,18 @@ double subdomain_bound(const Model& model, int max_elements) {
     }
     int f = e;  // the subdomain: elements [e, f) of one elastic body
     while (f < nel && f - e < max_elements && els[f].body == els[e].body && !els[f].rigid) ++f;
+    if ((e > 0 && els[e - 1].body == els[e].body) || (f < nel && els[f].body == els[e].body)) out.exact = false;
     // The run's key: each element's section, geometry and equation pattern relative to the
     // run's first equation. An equal key gives equal matrices: reuse the last eigenvalue.
     key.clear();
     eqs.clear();
-    const int first = model.element_equations(e).maxCoeff();
+    const int first_eq = model.element_equations(e).maxCoeff();
     for (int k = e; k < f; ++k) {
       const Model::Element& el = els[k];
       key.insert(key.end(), {el.E, el.area, el.inertia, el.rho, el.length, el.c, el.s});
       const Eigen::Matrix<int, 6, 1> eq = model.element_equations(k);
       for (int i = 0; i < ne; ++i) {
-        key.push_back(eq(i) >= 0 ? eq(i) - first : -1e9);
+        key.push_back(eq(i) >= 0 ? eq(i) - first_eq : -1e9);
         if (eq(i) >= 0) eqs.push_back(eq(i));
       }
     }
@@ -205,33 +154,51 @@ double subdomain_bound(const Model& model, int max_elements) {
     std::sort(eqs.begin(), eqs.end());
     eqs.erase(std::unique(eqs.begin(), eqs.end()), eqs.end());
     const int d = static_cast<int>(eqs.size());
-    Kc.setZero(d, d);
-    Mc.setZero(d, d);
     // Supported DOFs stay out: the model's vectors are zero there, so the subdomain's quotient
-    // only needs its free DOFs.
+    // only needs its free DOFs. Local index of equation q: its rank among the run's equations.
+    auto local = [&](int q) { return static_cast<int>(std::lower_bound(eqs.begin(), eqs.end(), q) - eqs.begin()); };
+    Eigen::Matrix<int, 6, 1> loc;
+    first.assign(static_cast<std::size_t>(d), d);
+    for (int k = e; k < f; ++k) {
+      const Eigen::Matrix<int, 6, 1> eq = model.element_equations(k);
+      int low = d;
+      for (int i = 0; i < ne; ++i) low = eq(i) >= 0 ? std::min(low, local(eq(i))) : low;
+      for (int i = 0; i < ne; ++i)
+        if (eq(i) >= 0) first[local(eq(i))] = std::min(first[local(eq(i))], low);
+    }
+    EnvelopePencil run(first);
     for (int k = e; k < f; ++k) {
       const Model::Element& el = els[k];
       const Eigen::MatrixXd Ke = model.element_stiffness(k, el.c, el.s),
                             Me = model.element_mass(k, el.c, el.s);
       const Eigen::Matrix<int, 6, 1> eq = model.element_equations(k);
-      for (int i = 0; i < ne; ++i) {
-        if (eq(i) < 0) continue;
-        const auto li = std::lower_bound(eqs.begin(), eqs.end(), eq(i)) - eqs.begin();
-        for (int j = 0; j < ne; ++j) {
-          if (eq(j) < 0) continue;
-          const auto lj = std::lower_bound(eqs.begin(), eqs.end(), eq(j)) - eqs.begin();
-          Kc(li, lj) += Ke(i, j);
-          Mc(li, lj) += Me(i, j);
-        }
-      }
+      for (int i = 0; i < ne; ++i) loc(i) = eq(i) >= 0 ? local(eq(i)) : -1;
+      for (int i = 0; i < ne; ++i)
+        for (int j = 0; j < ne; ++j)
+          if (loc(i) >= 0 && loc(j) >= 0 && loc(j) <= loc(i)) run.add(loc(i), loc(j), Ke(i, j), Me(i, j));
     }
     lam_last = 0.0;  // no free DOF: nothing moves
-    if (d > 0) lam_last = largest_generalized(Kc, Mc, model.lumped());
+    if (d > 0 && lam > 0.0 && above_spectrum(run, lam)) {
+      lam_last = lam;  // proven below the largest so far: it cannot raise the bound
+    } else if (d > 0) {
+      // Down from Irons' bound, which no run's eigenvalue exceeds (1e-8: its roundoff).
+      const TopEigenvalue top = top_eigenvalue(run, lam_element * (1 + 1e-8));
+      if (top.ok) {
+        lam_last = top.upper;
+        out.lower = std::max(out.lower, top.lower);
+      } else {  // M not positive definite (no rotary inertia): the dense solve says inf
+        Eigen::MatrixXd Kc, Mc;
+        run.to_dense(Kc, Mc);
+        lam_last = largest_generalized(Kc, Mc, model.lumped());
+      }
+    }
     lam = std::max(lam, lam_last);
     e = f;
   }
-  return lam;
+  out.upper = lam;
+  return out;
 }
+
 
 LanczosEstimate lanczos_largest(const Model& model, int max_iter) {
   LanczosEstimate est;
@@ -282,30 +249,26 @@ LanczosEstimate lanczos_largest(const Model& model, int max_iter) {
 CriticalStep critical_step(const Model& model) {
   CriticalStep c;
   const double lam_e = element_bound(model);
-  const double lam_s = subdomain_bound(model, kSubdomainElements);
-  const LanczosEstimate lz = lanczos_largest(model, kLanczosMaxIterations);
-  c.iterations = lz.iterations;
-  c.ritz_omega = std::sqrt(std::max(lz.ritz, 0.0));
-  c.residual = lz.residual;
+  const SubdomainBound sub = subdomain_bound(model, kSubdomainElements, lam_e);
+  const double lam_s = sub.upper;
   c.element_bound_dt = step_of(model, std::sqrt(lam_e));
-  c.lanczos_dt = step_of(model, std::sqrt(std::max(lz.upper(), 0.0)));
+  if (sub.exact && sub.lower > 0.0) {
+    // Every elastic body is one run: its Laguerre bracket already holds omega_max^2.
+    c.ritz_omega = std::sqrt(std::max(sub.lower, 0.0));
+  } else {
+    const LanczosEstimate lz = lanczos_largest(model, kLanczosMaxIterations);
+    c.iterations = lz.iterations;
+    c.ritz_omega = std::sqrt(std::max(lz.ritz, 0.0));
+    c.residual = lz.residual;
+    c.lanczos_dt = step_of(model, std::sqrt(std::max(lz.upper(), 0.0)));
+  }
   if (lam_e <= 0.0) return c;  // no stiffness: no limit
   // Both bounds are proven; the subdomain one is never above the element one in exact
   // arithmetic, the min guards against its roundoff.
   const double lam = std::min(lam_s, lam_e);
   c.bound = lam_s < lam_e ? CriticalBound::kSubdomain : CriticalBound::kElement;
   c.omega_max = std::sqrt(lam);
-  if (model.size() <= kConfirmDofs) {
-    int iterations = 0;
-    const double ritz = converged_ritz(model, &iterations);
-    // The true omega_max^2 lies in [ritz, lam]: within kConfirmTol, take the Ritz value.
-    if (ritz > 0.0 && lam <= ritz * (1 + kConfirmTol)) {
-      c.bound = CriticalBound::kLanczosConfirmed;
-      c.omega_max = std::sqrt(ritz);
-      c.iterations = iterations;
-      c.ritz_omega = std::max(c.ritz_omega, c.omega_max);
-    }
-  }
+  c.ritz_omega = std::min(c.ritz_omega, c.omega_max);  // a lower bound: roundoff may not lift it above
   c.dt = step_of(model, c.omega_max);
   return c;
 }

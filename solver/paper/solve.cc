@@ -53,9 +53,9 @@ nlohmann::json critical_step_json(const CriticalStep& cs, double dt) {
             {k::kBound, to_string(cs.bound)}};
   return {{k::kMethod,
            "proven upper bound of omega_max: min of the element bound and the subdomain "
-           "bound (runs of consecutive elements), or for small models the converged Lanczos "
-           "Ritz value when that bound confirms it; Lanczos (M-inner product) gives the "
-           "lower bound ritz_omega"},
+           "bound (runs of consecutive elements, each proven by the LDL^T inertia of "
+           "sigma M - K); lower bound ritz_omega from the subdomain bound's Laguerre bracket "
+           "when every body is one run, else from Lanczos (M-inner product)"},
           {k::kBound, to_string(cs.bound)},
           {k::kOmegaMax, cs.omega_max},
           {k::kElementBoundDt, cs.element_bound_dt},

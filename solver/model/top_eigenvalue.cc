@@ -104,12 +104,6 @@ EnvelopePencil EnvelopePencil::from_dense(const Eigen::MatrixXd& K, const Eigen:
   return p;
 }
 
-bool EnvelopePencil::positive_mass_diagonal() const {
-  for (int i = 0; i < size(); ++i)
-    if (!(m(i, i) > 0.0)) return false;
-  return true;
-}
-
 void EnvelopePencil::to_dense(Eigen::MatrixXd& K, Eigen::MatrixXd& M) const {
   K.setZero(size(), size());
   M.setZero(size(), size());

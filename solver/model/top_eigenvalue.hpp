@@ -46,8 +46,6 @@ class EnvelopePencil {
   double k(int i, int j) const { return k_[offset_[i] + j - first_[i]]; }
   /// @brief M(i, j), first(i) <= j <= i.
   double m(int i, int j) const { return m_[offset_[i] + j - first_[i]]; }
-  /// @brief Whether M's diagonal is positive (a lumped mass with rotary inertia, or any M > 0).
-  bool positive_mass_diagonal() const;
   /// @brief K and M as dense symmetric matrices (for dense solvers).
   void to_dense(Eigen::MatrixXd& K, Eigen::MatrixXd& M) const;
 

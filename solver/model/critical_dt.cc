@@ -122,6 +122,7 @@ SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_
   out.exact = true;
   double lam = 0.0, lam_last = 0.0;
   std::vector<int> eqs, first;
+  std::vector<Eigen::Matrix<int, 6, 1>> locs;
   std::vector<double> key, key_last;
   for (int e = 0; e < nel;) {
     if (els[e].rigid) {  // a rigid body has no element stiffness
@@ -155,24 +156,29 @@ SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_
     eqs.erase(std::unique(eqs.begin(), eqs.end()), eqs.end());
     const int d = static_cast<int>(eqs.size());
     // Supported DOFs stay out: the model's vectors are zero there, so the subdomain's quotient
-    // only needs its free DOFs. Local index of equation q: its rank among the run's equations.
-    auto local = [&](int q) { return static_cast<int>(std::lower_bound(eqs.begin(), eqs.end(), q) - eqs.begin()); };
-    Eigen::Matrix<int, 6, 1> loc;
-    first.assign(static_cast<std::size_t>(d), d);
+    // only needs its free DOFs. An element's local indices: its equations' ranks in the run.
+    locs.clear();
     for (int k = e; k < f; ++k) {
       const Eigen::Matrix<int, 6, 1> eq = model.element_equations(k);
-      int low = d;
-      for (int i = 0; i < ne; ++i) low = eq(i) >= 0 ? std::min(low, local(eq(i))) : low;
+      Eigen::Matrix<int, 6, 1> loc = Eigen::Matrix<int, 6, 1>::Constant(-1);
       for (int i = 0; i < ne; ++i)
-        if (eq(i) >= 0) first[local(eq(i))] = std::min(first[local(eq(i))], low);
+        if (eq(i) >= 0) loc(i) = static_cast<int>(std::lower_bound(eqs.begin(), eqs.end(), eq(i)) - eqs.begin());
+      locs.push_back(loc);
+    }
+    // The envelope: row r starts at the lowest local index of any element holding r.
+    first.assign(static_cast<std::size_t>(d), d);
+    for (const Eigen::Matrix<int, 6, 1>& loc : locs) {
+      int low = d;
+      for (int i = 0; i < ne; ++i) low = loc(i) >= 0 ? std::min(low, loc(i)) : low;
+      for (int i = 0; i < ne; ++i)
+        if (loc(i) >= 0) first[loc(i)] = std::min(first[loc(i)], low);
     }
     EnvelopePencil run(first);
     for (int k = e; k < f; ++k) {
       const Model::Element& el = els[k];
       const Eigen::MatrixXd Ke = model.element_stiffness(k, el.c, el.s),
                             Me = model.element_mass(k, el.c, el.s);
-      const Eigen::Matrix<int, 6, 1> eq = model.element_equations(k);
-      for (int i = 0; i < ne; ++i) loc(i) = eq(i) >= 0 ? local(eq(i)) : -1;
+      const Eigen::Matrix<int, 6, 1>& loc = locs[k - e];
       for (int i = 0; i < ne; ++i)
         for (int j = 0; j < ne; ++j)
           if (loc(i) >= 0 && loc(j) >= 0 && loc(j) <= loc(i)) run.add(loc(i), loc(j), Ke(i, j), Me(i, j));
@@ -198,7 +204,6 @@ SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_
   out.upper = lam;
   return out;
 }
-
 
 LanczosEstimate lanczos_largest(const Model& model, int max_iter) {
   LanczosEstimate est;
@@ -254,7 +259,7 @@ CriticalStep critical_step(const Model& model) {
   c.element_bound_dt = step_of(model, std::sqrt(lam_e));
   if (sub.exact && sub.lower > 0.0) {
     // Every elastic body is one run: its Laguerre bracket already holds omega_max^2.
-    c.ritz_omega = std::sqrt(std::max(sub.lower, 0.0));
+    c.ritz_omega = std::sqrt(sub.lower);
   } else {
     const LanczosEstimate lz = lanczos_largest(model, kLanczosMaxIterations);
     c.iterations = lz.iterations;

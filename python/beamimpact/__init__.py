@@ -10,7 +10,6 @@ compare command's norms, over the C++ library (beamimpact._core).
 Bad input raises beamimpact.SceneError with the CLI's message (file, key, what was expected).
 """
 import json
-import numbers
 import sys
 
 import numpy as np
@@ -26,15 +25,14 @@ __version__ = _core.__version__
 
 def _toml_value(v):
     """A --set value as TOML: shortest round-trip numbers, true/false, quoted strings."""
-    if isinstance(v, (bool, np.bool_)):
+    if isinstance(v, (np.generic, np.ndarray)):
+        v = v.tolist()  # numpy scalars and arrays: the Python values they hold (a numpy repr is no TOML number)
+    if isinstance(v, bool):
         return "true" if v else "false"
-    if isinstance(v, numbers.Integral):  # numpy integers too
-        return str(int(v))
-    if isinstance(v, numbers.Real):  # numpy floats too (their repr is not a TOML number in numpy 2)
-        return repr(float(v))
-    if isinstance(v, np.ndarray):
-        v = v.tolist()
-    return json.dumps(v)  # strings, and lists of numbers: JSON and TOML agree
+    if isinstance(v, (int, float)):
+        return repr(v)
+    # Strings, and lists of numbers: JSON and TOML agree (numpy scalars inside a list as well).
+    return json.dumps(v, default=lambda o: o.tolist())
 
 
 class Scene:

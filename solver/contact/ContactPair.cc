@@ -80,9 +80,9 @@ void ContactPair::locate(const Scene& scene, int index, int striker_body, int no
     throw SceneError(scene.file, key,
                      "the striker node penetrates the target at t = 0 (gap " + std::to_string(g0_) +
                          " m); expected a gap >= 0");
-  // Room for the largest row (striker + two target nodes with rotations): no growth while sliding.
-  gn_.reserve(8);
-  gt_.reserve(8);
+  // Room for the largest row: no growth while sliding.
+  gn_.reserve(kMaxRowTerms);
+  gt_.reserve(kMaxRowTerms);
   build_rows();
 }
 

@@ -51,6 +51,9 @@ class ContactPair {
   /// @brief True when the struck point can move along the target (surface contacts).
   bool can_slide() const { return kind_ != ContactKind::kEndToEnd; }
 
+  /// @brief Terms a row holds at most: the striker and two target nodes, two translations each,
+  /// and the target nodes' rotations (Hermite surface).
+  static constexpr std::size_t kMaxRowTerms = 8;
   /// @brief Normal row: g(U) = g0 + sum(coeff * U[eq]).
   const std::vector<DofTerm>& normal_row() const { return gn_; }
   /// @brief Tangential row: relative tangential displacement s(U) = sum(coeff * U[eq]).

@@ -161,15 +161,16 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
 }
 
 void ContactSolver::add_forces(Eigen::VectorXd& f, std::vector<int>* touched) const {
+  auto add = [&](const std::vector<DofTerm>& row, double force) {
+    for (const DofTerm& t : row) {
+      f(t.eq) += t.coeff * force;
+      if (touched) touched->push_back(t.eq);
+    }
+  };
   for (std::size_t c = 0; c < pairs_.size(); ++c) {
     if (out_[c].state == ContactState::kOpen) continue;
-    for (const DofTerm& t : pairs_[c].normal_row()) f(t.eq) += t.coeff * out_[c].R;
-    if (friction_)
-      for (const DofTerm& t : pairs_[c].tangent_row()) f(t.eq) += t.coeff * out_[c].tau;
-    if (!touched) continue;
-    for (const DofTerm& t : pairs_[c].normal_row()) touched->push_back(t.eq);
-    if (friction_)
-      for (const DofTerm& t : pairs_[c].tangent_row()) touched->push_back(t.eq);
+    add(pairs_[c].normal_row(), out_[c].R);
+    if (friction_) add(pairs_[c].tangent_row(), out_[c].tau);
   }
 }
 

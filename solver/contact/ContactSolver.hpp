@@ -52,6 +52,9 @@ class ContactSolver {
   /// @param f the force vector added to
   /// @param touched when given, the equations written are appended to it (duplicates possible)
   void add_forces(Eigen::VectorXd& f, std::vector<int>* touched = nullptr) const;
+  /// @brief The most equations add_forces appends to `touched` (every row full, duplicates
+  /// counted): room for them keeps a step free of allocation.
+  std::size_t max_touched() const { return pairs_.size() * (friction_ ? 2 : 1) * ContactPair::kMaxRowTerms; }
   /// @brief Forgets the cached H W columns (the mass changed: a rotating body's M_A(t)).
   void invalidate() { std::fill(fresh_.begin(), fresh_.end(), 0); }
   /// @brief True when the last solve produced any non-zero force.

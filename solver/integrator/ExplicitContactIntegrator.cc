@@ -89,8 +89,8 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
   fused_ = model.lumped() && !damped_ && !cmass_;
   // Room for every equation a contact force can touch (a surface contact's rows move with the
   // struck point, so their size now is no bound): no allocation while stepping.
-  fc_dofs_.reserve(static_cast<std::size_t>(n));
-  vbar_saved_.reserve(static_cast<std::size_t>(n));
+  fc_dofs_.reserve(solver_.max_touched());
+  vbar_saved_.reserve(solver_.max_touched());
   solve_contacts();  // step 0 complete
 }
 
@@ -132,17 +132,13 @@ void ExplicitContactIntegrator::solve_contacts() {
 
 void ExplicitContactIntegrator::resolve_contacts() {
   solver_.solve(Ubar_, U_);
-  v_is_vbar_ = true;  // V^p = Vbar^p unless a contact force acts
-  v_stale_ = false;
+  v_stale_ = solver_.any_force();  // V^p = Vbar^p unless a contact force acts; formed on demand
   if (solver_.any_force()) {
-    v_is_vbar_ = false;
     if (fused_) {
       gather_contact_force();
-      v_stale_ = true;
     } else {
       fc_.setZero();
       solver_.add_forces(fc_);
-      form_velocity();
     }
     // Contact work of step p: f_c . (U^{p+1} - U^{p-1}) / 2 with this step's rows, i.e.
     // R (g_{p+1} - g_{p-1})/2 + tau (s_{p+1} - s_{p-1})/2. It is the exact change of the discrete

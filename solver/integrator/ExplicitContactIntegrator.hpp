@@ -60,8 +60,9 @@ class ExplicitContactIntegrator {
   /// @brief U^p and physical V^p.
   const Eigen::VectorXd& U() const { return U_; }
   const Eigen::VectorXd& V() const {
+    if (!solver_.any_force()) return Vbar_;
     if (v_stale_) form_velocity();
-    return v_is_vbar_ ? Vbar_ : V_;
+    return V_;
   }
   /// @brief Half-step velocity Vbar^p (for the discrete energy identity).
   const Eigen::VectorXd& Vbar() const { return Vbar_; }
@@ -90,8 +91,10 @@ class ExplicitContactIntegrator {
   /// the pairs' rows, the weights of the chosen surface interpolation included).
   /// @param f resized to the model's size and overwritten
   void contact_force(Eigen::VectorXd& f) const {
-    f.setZero(model_.size());
-    solver_.add_forces(f);
+    if (solver_.any_force())
+      f = fc_;  // formed by resolve_contacts() (fc_ keeps stale entries only while no force acts)
+    else
+      f.setZero(model_.size());
   }
 
  private:
@@ -108,7 +111,7 @@ class ExplicitContactIntegrator {
   void advance();
   void apply_Minv(const Eigen::VectorXd& in, Eigen::VectorXd& out) const { minv_.apply(in, out); }
   void apply_H(const Eigen::VectorXd& f, Eigen::VectorXd& out);
-  /// V^p = Vbar^p + dt/2 M^-1 f_c (Eq. 5) on demand: the fused path reads V only on output rows.
+  /// V^p = Vbar^p + dt/2 M^-1 f_c (Eq. 5) on demand (V is read only on output rows).
   void form_velocity() const;
   /// The fused path's contact force: zeroes the last step's entries, adds this step's, and lists
   /// the equations it touches in fc_dofs_ (sorted, unique), so that the contact costs O(pairs).
@@ -132,7 +135,6 @@ class ExplicitContactIntegrator {
   std::vector<int> fc_dofs_;           ///< fused path: the equations where fc_ may be non-zero
   std::vector<double> vbar_saved_;     ///< fused path: Vbar^p at fc_dofs_ during the sweep
   double dissipated_ = 0.0;
-  bool v_is_vbar_ = true;  ///< no contact force this step: V^p is Vbar^p (no copy)
   mutable bool v_stale_ = false;  ///< V_ is still to be formed from Vbar_ and fc_
 };
 

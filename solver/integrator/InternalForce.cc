@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <beamimpact/util/spread_vector.hpp>
+
 namespace beamimpact::paper {
 namespace {
 
@@ -57,17 +59,15 @@ void InternalForce::build_blocks() {
     const Model::Element& el = model_.elements()[e];
     if (el.rigid) continue;  // no element stiffness
     const Eigen::Matrix<int, 6, 1> eq = model_.element_equations(e);
+    std::array<int, 6> be{};
+    for (int i = 0; i < 6; ++i) be[i] = i < w ? eq(i) : -1;
+    eqs.push_back(be);
     if (last >= 0 && model_.same_element_matrices(e, last)) {  // the same block as the last
-      std::array<int, 6> be{};
-      for (int i = 0; i < 6; ++i) be[i] = i < w ? eq(i) : -1;
-      eqs.push_back(be);
       block_of.push_back(block_of.back());
       continue;
     }
     Ke = model_.element_stiffness(e, el.c, el.s);
     last = e;
-    std::array<int, 6> be{};
-    for (int i = 0; i < 6; ++i) be[i] = i < w ? eq(i) : -1;
     const std::size_t nb = blocks_.size() / (w * w);
     bool same = nb > 0;
     for (int i = 0; same && i < w; ++i)
@@ -75,7 +75,6 @@ void InternalForce::build_blocks() {
     if (!same)
       for (int i = 0; i < w; ++i)
         for (int j = 0; j < w; ++j) blocks_.push_back(Ke(i, j));
-    eqs.push_back(be);
     block_of.push_back(static_cast<int>(blocks_.size() / (w * w)) - 1);
   }
   const int n = model_.size();
@@ -85,22 +84,15 @@ void InternalForce::build_blocks() {
   // (1e-12 of sum |K_ij| |x_j| per row; a missing or extra term of K shows at O(1)), and every
   // equation is finished exactly once.
   if (use_blocks_) {
-    Eigen::VectorXd x(n), kx(n), bx(n), scale(n);
-    unsigned seed = 12345u;  // entries in [1, 2) from a linear congruential sequence
-    for (int i = 0; i < n; ++i) {
-      seed = seed * 1103515245u + 12345u;
-      x(i) = 1.0 + static_cast<double>((seed >> 8) & 0xffff) / 65536.0;
-    }
+    const Eigen::VectorXd x = spread_vector(n);
+    Eigen::VectorXd kx(n), bx(n), scale(n);
     kx.noalias() = model_.K() * x;
     scale.noalias() = model_.K().cwiseAbs() * x.cwiseAbs();
     std::vector<int> finished(n, 0);
     auto count = [&](int lo, int hi) {
       for (int i = lo; i < hi; ++i) ++finished[i];
     };
-    if (w == 6)
-      apply_spans<6>(x, bx, count);
-    else
-      apply_spans<2>(x, bx, count);
+    apply_streamed(x, bx, count);
     use_blocks_ = ((kx - bx).cwiseAbs().array() <= 1e-12 * scale.array()).all() &&
                   std::all_of(finished.begin(), finished.end(), [](int c) { return c == 1; });
   }
@@ -233,6 +225,11 @@ void InternalForce::apply(const Eigen::VectorXd& U, Eigen::VectorXd& f) const {
     for (int i = 0; i < 6; ++i)
       if (eq(i) >= 0) f(eq(i)) += fe[i];
   }
+}
+
+void InternalForce::end_forces(const Eigen::VectorXd& U, std::vector<std::array<double, 3>>& out) const {
+  out.resize(model_.elements().size());
+  for (std::size_t e = 0; e < out.size(); ++e) out[e] = end_forces(static_cast<int>(e), U);
 }
 
 std::array<double, 3> InternalForce::end_forces(int e, const Eigen::VectorXd& U) const {

@@ -37,6 +37,10 @@ class InternalForce {
   /// @param e element index
   /// @param U displacement
   std::array<double, 3> end_forces(int e, const Eigen::VectorXd& U) const;
+  /// @brief end_forces(e, U) of every element, in element order (the field output's input).
+  /// @param U displacement
+  /// @param out resized to the number of elements and overwritten
+  void end_forces(const Eigen::VectorXd& U, std::vector<std::array<double, 3>>& out) const;
   /// @brief Strain energy (J) at U.
   double strain_energy(const Eigen::VectorXd& U) const;
   /// @brief True when some body is corotational.

@@ -9,6 +9,7 @@
 
 #include <beamimpact/model/MassSolver.hpp>
 #include <beamimpact/model/top_eigenvalue.hpp>
+#include <beamimpact/util/spread_vector.hpp>
 
 namespace beamimpact {
 namespace {
@@ -60,18 +61,6 @@ double step_of(const Model& model, double omega) {
   if (!(omega > 0.0) || !std::isfinite(omega)) return 0.0;
   const double xi = model.rayleigh_mass() / (2 * omega) + model.rayleigh_stiffness() * omega / 2;
   return 2.0 / omega * (std::sqrt(1 + xi * xi) - xi);
-}
-
-/// Lanczos start vector, the same on every machine: entries in [0.5, 1.5) from a linear
-/// congruential sequence, so that every DOF (every mode) carries energy.
-Eigen::VectorXd lanczos_start(int n) {
-  Eigen::VectorXd q(n);
-  unsigned s = 12345u;
-  for (int i = 0; i < n; ++i) {
-    s = s * 1103515245u + 12345u;
-    q(i) = 0.5 + static_cast<double>((s >> 8) & 0xffff) / 65536.0;
-  }
-  return q;
 }
 
 }  // namespace
@@ -220,7 +209,8 @@ LanczosEstimate lanczos_largest(const Model& model, int max_iter) {
     scratch.noalias() = M * x;
     return x.dot(scratch);
   };
-  Eigen::VectorXd q = lanczos_start(n), q_prev = Eigen::VectorXd::Zero(n), w(n), Kq(n), scratch(n);
+  Eigen::VectorXd q = spread_vector(n),  // every DOF (every mode) carries energy
+                  q_prev = Eigen::VectorXd::Zero(n), w(n), Kq(n), scratch(n);
   q /= std::sqrt(m_norm2(q, scratch));
   std::vector<double> alpha, beta;
   double b_prev = 0.0, a_max = 0.0;

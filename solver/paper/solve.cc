@@ -146,9 +146,8 @@ HistoryRow make_row(const ExplicitContactIntegrator& in) {
 void write_fields(const ExplicitContactIntegrator& in, double t, FieldWriter& fields) {
   Eigen::VectorXd fc;
   in.contact_force(fc);
-  const int ne = static_cast<int>(in.model().elements().size());
-  std::vector<std::array<double, 3>> ends(ne);
-  for (int e = 0; e < ne; ++e) ends[e] = in.internal_force().end_forces(e, in.U());
+  std::vector<std::array<double, 3>> ends;
+  in.internal_force().end_forces(in.U(), ends);
   fields.write(t, in.U(), in.V(), fc, ends);
 }
 

@@ -18,10 +18,9 @@ _OPEN_LINES = (
 
 
 def _scaled_force(k):
-    return [(CS, "for (const DofTerm& t : pairs_[c].normal_row()) f(t.eq) += t.coeff * out_[c].R;",
-             f"for (const DofTerm& t : pairs_[c].normal_row()) f(t.eq) += t.coeff * ({k} * out_[c].R);"),
-            (CS, "for (const DofTerm& t : pairs_[c].tangent_row()) f(t.eq) += t.coeff * out_[c].tau;",
-             f"for (const DofTerm& t : pairs_[c].tangent_row()) f(t.eq) += t.coeff * ({k} * out_[c].tau);")]
+    return [(CS, "add(pairs_[c].normal_row(), out_[c].R);", f"add(pairs_[c].normal_row(), {k} * out_[c].R);"),
+            (CS, "if (friction_) add(pairs_[c].tangent_row(), out_[c].tau);",
+             f"if (friction_) add(pairs_[c].tangent_row(), {k} * out_[c].tau);")]
 
 
 MUTANTS = [

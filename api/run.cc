@@ -23,7 +23,7 @@ SimulationResult run(const Scene& scene, std::string_view method_name, const Run
     std::filesystem::remove(FieldWriter::collection(*options.out));
   }
   // Before anything is allocated: refuse a run far beyond the ordinary (the estimate is printed).
-  check_run_cost(scene, scene.time.dt ? *scene.time.dt : estimate_auto_dt(scene));
+  check_run_cost(scene, planned_dt(scene));
   SimulationResult r;
   if (scene.output.fields) {
     if (!m.solve_with_fields)

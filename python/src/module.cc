@@ -43,18 +43,16 @@ py::dict columns_dict(const std::vector<std::string>& names,
 /// rows x columns array).
 py::tuple run_scene(const Scene& scene, const std::string& method, std::optional<std::filesystem::path> out,
                     std::optional<py::function> progress) {
+  std::optional<Progress::Silence> quiet;  // no callback: no progress; the setting comes back after
   if (progress)
     Progress::set_listener([progress](const std::string& label, double value, double total) {
       py::gil_scoped_acquire gil;
       (*progress)(label, value, total);
     });
   else
-    Progress::set_enabled(false);
+    quiet.emplace();
   struct Restore {  // the listener holds a Python object: dropped (with the GIL held) on every path
-    ~Restore() {
-      Progress::set_listener({});
-      Progress::set_enabled(true);
-    }
+    ~Restore() { Progress::set_listener({}); }
   } restore;
   SimulationResult r;
   {

@@ -36,7 +36,7 @@ std::size_t DelayMemory::lower_bound_near(const std::vector<double>& ts, double 
   // over a long memory costs a cache miss per level.
   const std::size_t n = ts.size();
   std::size_t lo = 0, hi = n;  // the answer lies in [lo, hi]
-  if (piece == hint_piece_ && hint_ <= n) {
+  if (piece == hint_piece_) {  // hint_ <= n: a piece's samples only grow
     std::size_t step = 1;
     if (hint_ < n && ts[hint_] < s) {  // the answer is above the hint
       lo = hint_ + 1;

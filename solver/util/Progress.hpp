@@ -24,6 +24,17 @@ class Progress {
   static void set_enabled(bool enabled);
   /// @brief Whether Progress lines are shown (set_enabled).
   static bool enabled();
+  /// @brief Silences every Progress while it lives, then restores the setting it found.
+  class Silence {
+   public:
+    Silence() : was_(enabled()) { set_enabled(false); }
+    ~Silence() { set_enabled(was_); }
+    Silence(const Silence&) = delete;
+    Silence& operator=(const Silence&) = delete;
+
+   private:
+    bool was_;
+  };
   /// @brief Sends the updates to `listener` (label, value, total) instead of stderr (the Python
   /// module shows them in a notebook); an empty function restores stderr. Set before a run.
   static void set_listener(std::function<void(const std::string&, double, double)> listener);

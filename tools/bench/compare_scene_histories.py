@@ -7,10 +7,11 @@ Each scene of verification/scenes/*/*.toml runs with `time.dt = "auto"` at its m
 multiple of its bodies' elements given after --mult (default 1 and 4), once per binary, into
 OUT_DIR/{old,new}/SCENE_xMULT. One line per run: the critical step's bound in each version, the
 relative change of `critical_dt`, and whether history.csv is byte-identical; if not, the largest
-difference of any column relative to that column's largest magnitude. A run that fails in either
-version prints both exit codes. Exit status 0 unless a binary is missing.
+`*.rel_linf` norm of `NEW_BINARY compare` (new run against old, on a common time grid, so runs
+whose steps differ compare too) and the largest relative change of a summary.json number
+(`compare_norms.leaves`, timings left out). A run that fails in either version prints both exit
+codes. Exit status 0 unless a binary is missing.
 """
-import csv
 import json
 import pathlib
 import subprocess
@@ -18,6 +19,8 @@ import sys
 import tomllib
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from compare_norms import leaves  # noqa: E402  (every number of a JSON tree, timings left out)
 
 
 def run(binary, scene, sets, out):
@@ -27,17 +30,24 @@ def run(binary, scene, sets, out):
     return subprocess.run(cmd, capture_output=True, text=True).returncode
 
 
-def column_difference(a_rows, b_rows):
-    """Largest |a - b| / max|a| over the numeric columns (time excluded)."""
-    worst = 0.0
-    for c in range(1, len(a_rows[0])):
-        try:
-            a = [float(r[c]) for r in a_rows[1:]]
-            b = [float(r[c]) for r in b_rows[1:]]
-        except ValueError:
-            continue
-        scale = max(max((abs(x) for x in a), default=0.0), 1e-300)
-        worst = max(worst, max((abs(x - y) for x, y in zip(a, b)), default=0.0) / scale)
+def largest_rel_linf(binary, run_dir, reference_dir):
+    """The largest max_t |a-b| / max_t |b| norm of `beamimpact compare` (None when it fails)."""
+    out = run_dir / "compare_old.json"
+    r = subprocess.run([binary, "compare", str(run_dir), str(reference_dir), "--json", str(out)],
+                       capture_output=True, text=True)
+    if r.returncode != 0:
+        return None
+    norms = json.loads(out.read_text())["norms"]
+    return max((n["value"] for n in norms if n["name"].endswith(".rel_linf")), default=0.0)
+
+
+def largest_summary_change(a, b):
+    """Largest relative change of a number present in both summary.json trees, and its path."""
+    old = dict(leaves(a))
+    worst = (0.0, "")
+    for path, v in leaves(b):
+        if path in old and v != old[path]:
+            worst = max(worst, (abs(v - old[path]) / max(abs(old[path]), 1e-300), path))
     return worst
 
 
@@ -67,13 +77,13 @@ def main():
                 continue
             a, b = (json.loads((dirs[t] / "summary.json").read_text()) for t in ("old", "new"))
             dt_change = abs(b["critical_dt"] / a["critical_dt"] - 1) if a.get("critical_dt") else 0.0
-            ha, hb = ((dirs[t] / "history.csv").read_bytes() for t in ("old", "new"))
-            if ha == hb:
+            if (dirs["old"] / "history.csv").read_bytes() == (dirs["new"] / "history.csv").read_bytes():
                 hist = "history identical"
             else:
-                ra, rb = (list(csv.reader(x.decode().splitlines())) for x in (ha, hb))
-                hist = (f"rows {len(ra)} vs {len(rb)}" if len(ra) != len(rb)
-                        else f"history differs, largest {column_difference(ra, rb):.2e} of a column's magnitude")
+                linf = largest_rel_linf(new, dirs["new"], dirs["old"])
+                hist = "history differs, " + ("compare failed" if linf is None else f"largest rel_linf {linf:.2e}")
+            change, path = largest_summary_change(a, b)
+            hist += f"; summary: largest change {change:.2e}" + (f" at {path}" if path else "")
             bounds = f"{a.get('critical_step', {}).get('bound')} -> {b.get('critical_step', {}).get('bound')}"
             print(f"{scene.stem} x{mult}: bound {bounds}, critical_dt change {dt_change:.2e}, {hist}")
 

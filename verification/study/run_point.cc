@@ -108,7 +108,7 @@ PointResult run_point(const Study& s, const Point& p, std::size_t index, const f
 double point_cost(const Study& s, const Point& p) {
   auto cost = [&](const std::vector<std::string>& set) {  // the run-cost check's estimate
     const Scene sc = load_scene(s.scene, set);
-    return estimate_run_cost(sc, sc.time.dt ? *sc.time.dt : estimate_auto_dt(sc)).work;
+    return estimate_run_cost(sc, planned_dt(sc)).work;
   };
   try {
     std::vector<std::string> set = overrides(s, p);

@@ -63,11 +63,7 @@ std::optional<StudyResult> execute_study(const Study& s, const fs::path& out) {
   const fs::path runs = out / "runs";
   r.results.resize(n);
   // One line per point instead of the methods' own progress; the caller's setting comes back.
-  struct Quiet {
-    bool was = Progress::enabled();
-    Quiet() { Progress::set_enabled(false); }
-    ~Quiet() { Progress::set_enabled(was); }
-  } quiet;
+  const Progress::Silence quiet;
   std::size_t finished = 0;
   const bool root = farm(
       cost,

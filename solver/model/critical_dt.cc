@@ -111,8 +111,10 @@ SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_
   out.exact = true;
   double lam = 0.0, lam_last = 0.0;
   std::vector<int> eqs, first;
-  std::vector<Eigen::Matrix<int, 6, 1>> locs;
+  std::vector<Eigen::Matrix<int, 6, 1>> eqk, locs;  // the run's elements' equations, local indices
   std::vector<double> key, key_last;
+  Eigen::MatrixXd Ke, Me;  // the matrices of element `formed`: consecutive equal elements share them
+  int formed = -1;
   for (int e = 0; e < nel;) {
     if (els[e].rigid) {  // a rigid body has no element stiffness
       ++e;
@@ -125,11 +127,13 @@ SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_
     // run's first equation. An equal key gives equal matrices: reuse the last eigenvalue.
     key.clear();
     eqs.clear();
-    const int first_eq = model.element_equations(e).maxCoeff();
+    eqk.clear();
+    for (int k = e; k < f; ++k) eqk.push_back(model.element_equations(k));
+    const int first_eq = eqk.front().maxCoeff();
     for (int k = e; k < f; ++k) {
       const Model::Element& el = els[k];
       key.insert(key.end(), {el.E, el.area, el.inertia, el.rho, el.length, el.c, el.s});
-      const Eigen::Matrix<int, 6, 1> eq = model.element_equations(k);
+      const Eigen::Matrix<int, 6, 1>& eq = eqk[k - e];
       for (int i = 0; i < ne; ++i) {
         key.push_back(eq(i) >= 0 ? eq(i) - first_eq : -1e9);
         if (eq(i) >= 0) eqs.push_back(eq(i));
@@ -147,8 +151,7 @@ SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_
     // Supported DOFs stay out: the model's vectors are zero there, so the subdomain's quotient
     // only needs its free DOFs. An element's local indices: its equations' ranks in the run.
     locs.clear();
-    for (int k = e; k < f; ++k) {
-      const Eigen::Matrix<int, 6, 1> eq = model.element_equations(k);
+    for (const Eigen::Matrix<int, 6, 1>& eq : eqk) {
       Eigen::Matrix<int, 6, 1> loc = Eigen::Matrix<int, 6, 1>::Constant(-1);
       for (int i = 0; i < ne; ++i)
         if (eq(i) >= 0) loc(i) = static_cast<int>(std::lower_bound(eqs.begin(), eqs.end(), eq(i)) - eqs.begin());
@@ -164,9 +167,11 @@ SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_
     }
     EnvelopePencil run(first);
     for (int k = e; k < f; ++k) {
-      const Model::Element& el = els[k];
-      const Eigen::MatrixXd Ke = model.element_stiffness(k, el.c, el.s),
-                            Me = model.element_mass(k, el.c, el.s);
+      if (formed < 0 || !model.same_element_matrices(k, formed)) {
+        Ke = model.element_stiffness(k, els[k].c, els[k].s);
+        Me = model.element_mass(k, els[k].c, els[k].s);
+        formed = k;
+      }
       const Eigen::Matrix<int, 6, 1>& loc = locs[k - e];
       for (int i = 0; i < ne; ++i)
         for (int j = 0; j < ne; ++j)

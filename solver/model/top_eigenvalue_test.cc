@@ -49,7 +49,7 @@ TEST(TopEigenvalue, MatchesTheDenseSolveFromAnyStartAbove) {
           EXPECT_NEAR(r.upper, top, 1e-13 * top) << elements << " " << consistent << " " << start;
           EXPECT_LE(r.lower, top * (1 + 1e-13));
           EXPECT_GE(r.lower, top * (1 - 1e-12));  // G's roundoff near the root: a bracket, not an exact value
-          EXPECT_LE(r.factorizations, 16);        // cubic convergence: about 3-11 here
+          EXPECT_LE(r.factorizations, 16);        // cubic convergence: 10 passes at most here
         }
 }
 
@@ -63,7 +63,7 @@ TEST(TopEigenvalue, InertiaSeparatesValuesAboveAndBelowTheTop) {
   EXPECT_FALSE(top_eigenvalue(p, top * (1 - 1e-9)).ok);  // a start below the top is refused
 }
 
-TEST(TopEigenvalue, ADoubleTopFromTwoEqualBlocksConverges) {
+TEST(TopEigenvalue, ADoubleTopFromTwoEqualBlocksConvergesInAFewPasses) {
   // Two uncoupled copies: the largest eigenvalue is double, where Laguerre's order drops.
   Eigen::MatrixXd K1, M1;
   chain(8, false, 5, K1, M1);
@@ -72,9 +72,14 @@ TEST(TopEigenvalue, ADoubleTopFromTwoEqualBlocksConverges) {
   K.topLeftCorner(d, d) = K.bottomRightCorner(d, d) = K1;
   M.topLeftCorner(d, d) = M.bottomRightCorner(d, d) = M1;
   const double top = dense_top(K1, M1);
-  const TopEigenvalue r = top_eigenvalue(EnvelopePencil::from_dense(K, M), 2 * top);
-  ASSERT_TRUE(r.ok);
-  EXPECT_NEAR(r.upper, top, 1e-13 * top);
+  for (double start : {1.01, 1.1, 2.0}) {
+    const TopEigenvalue r = top_eigenvalue(EnvelopePencil::from_dense(K, M), start * top);
+    ASSERT_TRUE(r.ok);
+    EXPECT_NEAR(r.upper, top, 1e-13 * top);
+    // Laguerre's step alone only halves the distance to a double root per pass: 26-29 passes
+    // here. The lane that takes the root as double lands on it: 5-8.
+    EXPECT_LE(r.factorizations, 10) << start;
+  }
 }
 
 TEST(TopEigenvalue, AZeroMassIsRefused) {

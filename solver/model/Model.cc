@@ -1,6 +1,8 @@
 #include <beamimpact/model/Model.hpp>
 
 #include <cmath>
+#include <cstddef>
+#include <vector>
 
 #include <beamimpact/model/frame_element.hpp>
 #include <beamimpact/scene/SceneError.hpp>
@@ -16,56 +18,90 @@ Vec2 unit_axis(const Body& b) {
   return {(b.end[0] - b.start[0]) / L, (b.end[1] - b.start[1]) / L};
 }
 
-/// The sparse matrix of the triplets, the same bits as SparseMatrix::setFromTriplets (a
-/// duplicate entry is the sum of its values in triplet order, rows sorted within each column),
-/// built in place by column without setFromTriplets' row-major copy and its transpose.
-SparseMatrix assemble(int n, const std::vector<Eigen::Triplet<double>>& t) {
-  // Counting sort of the triplets by column (stable: triplet order within a column) straight into
-  // the matrix's compressed arrays, then each column sorted by row and compacted in place.
-  SparseMatrix A(n, n);
-  A.resizeNonZeros(static_cast<Eigen::Index>(t.size()));
-  int* outer = A.outerIndexPtr();
-  int* row = A.innerIndexPtr();
-  double* val = A.valuePtr();
-  std::vector<int> start(n + 1, 0);
-  for (const Eigen::Triplet<double>& x : t) ++start[x.col() + 1];
-  for (int j = 0; j < n; ++j) start[j + 1] += start[j];
-  std::vector<int> fill(start.begin(), start.end() - 1);
-  for (const Eigen::Triplet<double>& x : t) {
-    const int k = fill[x.col()]++;
-    row[k] = x.row();
-    val[k] = x.value();
-  }
-  int nnz = 0;
-  outer[0] = 0;
-  for (int j = 0; j < n; ++j) {
-    // Stable insertion sort of the column by row (duplicates keep their triplet order), then
-    // the duplicates summed in that order.
-    for (int a = start[j] + 1; a < start[j + 1]; ++a) {
-      const int r = row[a];
-      const double v = val[a];
-      int b = a;
-      for (; b > start[j] && row[b - 1] > r; --b) {
-        row[b] = row[b - 1];
-        val[b] = val[b - 1];
-      }
-      row[b] = r;
-      val[b] = v;
+/// A nonzero entry (i, j) of an element matrix.
+struct Nonzero {
+  int i, j;
+  double v;
+};
+
+/// The matrices shared by a group of consecutive equal elements: K_e's and M_e's nonzero entries
+/// by rows, and M_e r for the two rigid translations r (columns: global x, y).
+struct ElementGroup {
+  std::vector<Nonzero> k, m;
+  Eigen::Matrix<double, 6, 2> mr = Eigen::Matrix<double, 6, 2>::Zero();
+};
+
+/// A sparse matrix built from entries given twice in the same order: a counting pass (add()
+/// before place()), then a placing pass. Each column's duplicates are summed in the order given
+/// and its rows sorted: the bits of SparseMatrix::setFromTriplets on the same entries, without
+/// storing them as triplets (100 MB at 1e6 DOFs) and without setFromTriplets' row-major copy and
+/// its transpose.
+class ColumnBuilder {
+ public:
+  explicit ColumnBuilder(int n) : A_(n, n), start_(static_cast<std::size_t>(n) + 1, 0) {}
+
+  /// Entry (r, c) += v: counted before place(), stored after it.
+  void add(int r, int c, double v) {
+    if (!placing_) {
+      ++start_[c + 1];
+      return;
     }
-    for (int a = start[j]; a < start[j + 1]; ++a) {
-      if (nnz > outer[j] && row[nnz - 1] == row[a]) {
-        val[nnz - 1] += val[a];
-        continue;
-      }
-      row[nnz] = row[a];
-      val[nnz] = val[a];
-      ++nnz;
-    }
-    outer[j + 1] = nnz;
+    const int k = fill_[c]++;
+    A_.innerIndexPtr()[k] = r;
+    A_.valuePtr()[k] = v;
   }
-  A.resizeNonZeros(nnz);
-  return A;
-}
+
+  /// Ends the counting pass: each column's entries get their slots, in the order they come.
+  void place() {
+    const int n = static_cast<int>(A_.cols());
+    for (int j = 0; j < n; ++j) start_[j + 1] += start_[j];
+    A_.resizeNonZeros(start_[n]);
+    fill_.assign(start_.begin(), start_.end() - 1);
+    placing_ = true;
+  }
+
+  /// Moves the matrix into `out`: each column sorted by row (stable insertion sort: duplicates
+  /// keep their order), then its duplicates summed in that order, compacted in place.
+  void finish(SparseMatrix& out) {
+    const int n = static_cast<int>(A_.cols());
+    int* outer = A_.outerIndexPtr();
+    int* row = A_.innerIndexPtr();
+    double* val = A_.valuePtr();
+    int nnz = 0;
+    outer[0] = 0;
+    for (int j = 0; j < n; ++j) {
+      for (int a = start_[j] + 1; a < start_[j + 1]; ++a) {
+        const int r = row[a];
+        const double v = val[a];
+        int b = a;
+        for (; b > start_[j] && row[b - 1] > r; --b) {
+          row[b] = row[b - 1];
+          val[b] = val[b - 1];
+        }
+        row[b] = r;
+        val[b] = v;
+      }
+      for (int a = start_[j]; a < start_[j + 1]; ++a) {
+        if (nnz > outer[j] && row[nnz - 1] == row[a]) {
+          val[nnz - 1] += val[a];
+          continue;
+        }
+        row[nnz] = row[a];
+        val[nnz] = val[a];
+        ++nnz;
+      }
+      outer[j + 1] = nnz;
+    }
+    A_.resizeNonZeros(nnz);
+    out.swap(A_);  // Eigen 3.4's SparseMatrix has no move assignment: it would copy
+  }
+
+ private:
+  SparseMatrix A_;
+  std::vector<int> start_;  ///< counts, then where each column's entries start
+  std::vector<int> fill_;   ///< the next free slot of each column
+  bool placing_ = false;
+};
 
 }  // namespace
 
@@ -135,80 +171,95 @@ Model::Model(const Scene& scene, bool bending)
   dof_to_eq_.resize(node_dofs);  // node DOFs only: equation() never sees the centres' slots
   const int n = size();
 
-  // Element matrices in global axes, scattered to the free equations.
-  std::vector<Eigen::Triplet<double>> kt, mt;
+  // Element matrices in global axes, scattered to the free equations. Two passes over the
+  // elements: the first counts the entries of K and M in each column and sums the momentum
+  // covectors and lumped masses, the second places the entries.
+  ColumnBuilder kb(n), mb(n);
   Eigen::VectorXd mdiag = Eigen::VectorXd::Zero(n);
   momentum_.assign(num_bodies(), {Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)});
-  for (int b = 0; b < num_bodies(); ++b) {  // rigid bodies: m, m, m L^2 / 12 at the centre
-    if (!rigid(b)) continue;
-    const Body& body = scene.bodies[b];
-    const double m = body_mass_[b], L = body.length();
-    const double masses[3] = {m, m, m * L * L / 12.0};
-    for (int c = 0; c < dpn; ++c) {
-      const int eq = rigid_eq_[b][c];
-      if (eq < 0) continue;
-      const double mc = dpn == 3 ? masses[c] : m;
-      if (lumped_)
-        mdiag(eq) += mc;
-      else
-        mt.emplace_back(eq, eq, mc);
-      if (dpn == 3 && c < 2)
-        momentum_[b][c](eq) += mc;  // the centre's x or y translation
-      else if (dpn == 1)
-        for (int k = 0; k < 2; ++k) momentum_[b][k](eq) += mc * axis_[k];  // the rod axis
-    }
-  }
   const int ne = 2 * dpn;
-  kt.reserve(elements_.size() * ne * ne);
-  if (!lumped_) mt.reserve(elements_.size() * ne * ne);
-  // The matrices of the last elastic element, and M_e r for the two rigid translations r:
-  // computed again only where the element differs from the last one.
-  Eigen::MatrixXd Ke, Me;
-  Eigen::Matrix<double, 6, 2> mr;
-  int last = -1;
-  for (int e = 0; e < static_cast<int>(elements_.size()); ++e) {
+  // Consecutive elements with equal matrices form a group; each group's matrices are formed once
+  // (the first pass lists the groups, the second reuses them).
+  auto group_of = [&](int e) {
     const Element& el = elements_[e];
-    if (el.rigid) continue;  // geometry only
-    const Eigen::Matrix<int, 6, 1> eq = element_equations(e);
-    if (last < 0 || !same_element_matrices(e, last)) {
-      Ke = element_stiffness(e, el.c, el.s);
-      Me = element_mass(e, el.c, el.s);
-      for (int c = 0; c < 2; ++c) {  // rigid translation along global axis c, in element DOFs
-        Eigen::VectorXd r = Eigen::VectorXd::Zero(ne);
-        for (int k = 0; k < 2; ++k) {
-          if (dpn == 3)
-            r(3 * k + c) = 1.0;
-          else
-            r(k) = axis_[c];
-        }
-        const Eigen::VectorXd m_r = Me * r;
-        for (int i = 0; i < ne; ++i) mr(i, c) = m_r(i);
-      }
-      last = e;
-    }
-    for (int c = 0; c < 2; ++c)
-      for (int i = 0; i < ne; ++i)
-        if (eq(i) >= 0) momentum_[el.body][c](eq(i)) += mr(i, c);
-    for (int i = 0; i < ne; ++i) {
-      if (eq(i) < 0) continue;
+    const Eigen::MatrixXd Ke = element_stiffness(e, el.c, el.s), Me = element_mass(e, el.c, el.s);
+    ElementGroup grp;
+    for (int i = 0; i < ne; ++i)
       for (int j = 0; j < ne; ++j) {
-        if (eq(j) < 0) continue;
-        if (Ke(i, j) != 0.0) kt.emplace_back(eq(i), eq(j), Ke(i, j));
-        if (Me(i, j) != 0.0) {
-          if (lumped_)
-            mdiag(eq(i)) += Me(i, j);
-          else
-            mt.emplace_back(eq(i), eq(j), Me(i, j));
-        }
+        if (Ke(i, j) != 0.0) grp.k.push_back({i, j, Ke(i, j)});
+        if (Me(i, j) != 0.0) grp.m.push_back({i, j, Me(i, j)});
+      }
+    for (int c = 0; c < 2; ++c) {  // rigid translation along global axis c, in element DOFs
+      Eigen::VectorXd r = Eigen::VectorXd::Zero(ne);
+      for (int k = 0; k < 2; ++k) {
+        if (dpn == 3)
+          r(3 * k + c) = 1.0;
+        else
+          r(k) = axis_[c];
+      }
+      const Eigen::VectorXd m_r = Me * r;
+      for (int i = 0; i < ne; ++i) grp.mr(i, c) = m_r(i);
+    }
+    return grp;
+  };
+  std::vector<ElementGroup> groups;
+  for (int pass = 0; pass < 2; ++pass) {
+    const bool counting = pass == 0;
+    if (!counting) {
+      kb.place();
+      mb.place();
+    }
+    for (int b = 0; b < num_bodies(); ++b) {  // rigid bodies: m, m, m L^2 / 12 at the centre
+      if (!rigid(b)) continue;
+      const Body& body = scene.bodies[b];
+      const double m = body_mass_[b], L = body.length();
+      const double masses[3] = {m, m, m * L * L / 12.0};
+      for (int c = 0; c < dpn; ++c) {
+        const int eq = rigid_eq_[b][c];
+        if (eq < 0) continue;
+        const double mc = dpn == 3 ? masses[c] : m;
+        if (!lumped_)
+          mb.add(eq, eq, mc);
+        else if (counting)
+          mdiag(eq) += mc;
+        if (!counting) continue;
+        if (dpn == 3 && c < 2)
+          momentum_[b][c](eq) += mc;  // the centre's x or y translation
+        else if (dpn == 1)
+          for (int k = 0; k < 2; ++k) momentum_[b][k](eq) += mc * axis_[k];  // the rod axis
       }
     }
+    int g = -1, last = -1;  // the group of the last elastic element, and its first element
+    for (int e = 0; e < static_cast<int>(elements_.size()); ++e) {
+      const Element& el = elements_[e];
+      if (el.rigid) continue;  // geometry only
+      if (last < 0 || !same_element_matrices(e, last)) {
+        ++g;
+        last = e;
+        if (counting) groups.push_back(group_of(e));
+      }
+      const ElementGroup& grp = groups[g];
+      const Eigen::Matrix<int, 6, 1> eq = element_equations(e);
+      if (counting)
+        for (int c = 0; c < 2; ++c)
+          for (int i = 0; i < ne; ++i)
+            if (eq(i) >= 0) momentum_[el.body][c](eq(i)) += grp.mr(i, c);
+      for (const Nonzero& z : grp.k)
+        if (eq(z.i) >= 0 && eq(z.j) >= 0) kb.add(eq(z.i), eq(z.j), z.v);
+      for (const Nonzero& z : grp.m) {
+        if (eq(z.i) < 0 || eq(z.j) < 0) continue;
+        if (!lumped_)
+          mb.add(eq(z.i), eq(z.j), z.v);
+        else if (counting)
+          mdiag(eq(z.i)) += z.v;
+      }
+    }
+    if (lumped_)  // M is the diagonal of the summed masses (final when placing)
+      for (int i = 0; i < n; ++i) mb.add(i, i, mdiag(i));
   }
-  K_ = assemble(n, kt);
-  if (lumped_) {
-    m_diag_ = mdiag;
-    for (int i = 0; i < n; ++i) mt.emplace_back(i, i, mdiag(i));
-  }
-  M_ = assemble(n, mt);
+  kb.finish(K_);
+  mb.finish(M_);
+  if (lumped_) m_diag_ = std::move(mdiag);
 }
 
 bool Model::same_element_matrices(int a, int b) const {

@@ -46,7 +46,7 @@ BENCHMARK(BM_StepFrameConsistent)->RangeMultiplier(10)->Range(100, 30000);
 BENCHMARK(BM_StepFrictionLinear)->Arg(1000);
 BENCHMARK(BM_StepFrictionCorotational)->Arg(1000);
 
-/// The critical step by Lanczos: cost per model size (O(nnz) per iteration, tens of iterations).
+/// The critical step (element bound, subdomain bound by inertia, lower bound): cost per model size.
 void BM_CriticalStep(benchmark::State& state) {
   const std::string n = std::to_string(state.range(0));
   const Scene s =

@@ -86,7 +86,7 @@ TEST(S1Central, RodAndFrameLayoutsAgree) {
 TEST(S1Central, CourantOneReproducesTheExactForcePattern) {
   // c dt / h = 1 (dt = 0.1 s): lumped rods give the exact nodal waves during contact, with
   // lambda = [Z v0/4, Z v0/2, ..., Z v0/2] (Z v0 = 4 N). It is the stability limit itself, hence
-  // allow_above_critical (Lanczos finds omega_max = 20 rad/s to roundoff).
+  // allow_above_critical (omega_max = 20 rad/s: the element bound, exact for lumped rods).
   const SimulationResult r = run("s1_central", {"time.dt=0.1", "time.allow_above_critical=true"});
   std::vector<double> R;
   for (const HistoryRow& row : r.history)

@@ -7,32 +7,10 @@
 
 #include <Eigen/Eigenvalues>
 
-#include <beamimpact/model/MassSolver.hpp>
 #include <beamimpact/model/top_eigenvalue.hpp>
-#include <beamimpact/util/spread_vector.hpp>
 
 namespace beamimpact {
 namespace {
-
-/// Every this many iterations the top Ritz pair of T_k is solved (O(k^2), negligible next to
-/// the O(n) iteration) and Lanczos stops once its residual is below kResidualTol of it.
-constexpr int kCheckEvery = 8;
-constexpr double kResidualTol = 1e-12;
-
-/// Top Ritz value of the Lanczos tridiagonal T_k (alpha on the diagonal, beta below it) and the
-/// residual norm beta_{k+1} |s_k| of its Ritz vector, by the tridiagonal QR method.
-void top_ritz_pair(const std::vector<double>& alpha, const std::vector<double>& beta, LanczosEstimate& est) {
-  const int k = static_cast<int>(alpha.size());
-  const Eigen::Map<const Eigen::VectorXd> diag(alpha.data(), k);
-  // beta[j] couples q_j and q_{j+1}; the first k-1 are T_k's sub-diagonal, beta[k-1] = beta_{k+1}.
-  Eigen::VectorXd sub(std::max(k - 1, 0));
-  for (int j = 0; j + 1 < k; ++j) sub(j) = beta[j];
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es;
-  es.computeFromTridiagonal(diag, sub, Eigen::ComputeEigenvectors);
-  est.ritz = es.eigenvalues()(k - 1);  // ascending
-  est.residual = beta[k - 1] * std::abs(es.eigenvectors()(k - 1, k - 1));
-  est.iterations = k;
-}
 
 /// Largest eigenvalue of K x = lambda M x (K, M symmetric, lower triangles used), infinity when
 /// the solve fails (a singular mass). A diagonal, positive M (lumped) is reduced to the standard
@@ -104,17 +82,87 @@ double subdomain_bound(const Model& model, int max_elements) {
   return subdomain_bound(model, max_elements, element_bound(model)).upper;
 }
 
+namespace {
+
+/// Scratch of run_pencil(), kept across runs.
+struct RunScratch {
+  std::vector<int> eqs, first;
+  std::vector<Eigen::Matrix<int, 6, 1>> locs;
+  Eigen::MatrixXd Ke, Me;  ///< the matrices of element `formed`: consecutive equal elements share them
+  int formed = -1;
+};
+
+/// The pencil of a run of elements e, e + 1, ... (their equations: `eqk`) on its free equations
+/// but the sorted `held` ones (held at zero). Supported DOFs stay out: the model's vectors are
+/// zero there, so the run's quotient only needs its free DOFs.
+EnvelopePencil run_pencil(const Model& model, int e, const std::vector<Eigen::Matrix<int, 6, 1>>& eqk,
+                          const std::vector<int>& held, RunScratch& s) {
+  const int ne = 2 * model.dofs_per_node();
+  auto is_held = [&](int q) { return std::binary_search(held.begin(), held.end(), q); };
+  s.eqs.clear();
+  for (const Eigen::Matrix<int, 6, 1>& eq : eqk)
+    for (int i = 0; i < ne; ++i)
+      if (eq(i) >= 0 && !is_held(eq(i))) s.eqs.push_back(eq(i));
+  std::sort(s.eqs.begin(), s.eqs.end());
+  s.eqs.erase(std::unique(s.eqs.begin(), s.eqs.end()), s.eqs.end());
+  const int d = static_cast<int>(s.eqs.size());
+  // An element's local indices: its equations' ranks in the run (-1: supported or held).
+  s.locs.clear();
+  for (const Eigen::Matrix<int, 6, 1>& eq : eqk) {
+    Eigen::Matrix<int, 6, 1> loc = Eigen::Matrix<int, 6, 1>::Constant(-1);
+    for (int i = 0; i < ne; ++i) {
+      if (eq(i) < 0) continue;
+      const auto it = std::lower_bound(s.eqs.begin(), s.eqs.end(), eq(i));
+      if (it != s.eqs.end() && *it == eq(i)) loc(i) = static_cast<int>(it - s.eqs.begin());
+    }
+    s.locs.push_back(loc);
+  }
+  // The envelope: row r starts at the lowest local index of any element holding r.
+  s.first.assign(static_cast<std::size_t>(d), d);
+  for (const Eigen::Matrix<int, 6, 1>& loc : s.locs) {
+    int low = d;
+    for (int i = 0; i < ne; ++i) low = loc(i) >= 0 ? std::min(low, loc(i)) : low;
+    for (int i = 0; i < ne; ++i)
+      if (loc(i) >= 0) s.first[loc(i)] = std::min(s.first[loc(i)], low);
+  }
+  EnvelopePencil run(s.first);
+  const std::vector<Model::Element>& els = model.elements();
+  for (int k = e; k < e + static_cast<int>(eqk.size()); ++k) {
+    if (s.formed < 0 || !model.same_element_matrices(k, s.formed)) {
+      s.Ke = model.element_stiffness(k, els[k].c, els[k].s);
+      s.Me = model.element_mass(k, els[k].c, els[k].s);
+      s.formed = k;
+    }
+    const Eigen::Matrix<int, 6, 1>& loc = s.locs[k - e];
+    for (int i = 0; i < ne; ++i)
+      for (int j = 0; j < ne; ++j)
+        if (loc(i) >= 0 && loc(j) >= 0 && loc(j) <= loc(i)) run.add(loc(i), loc(j), s.Ke(i, j), s.Me(i, j));
+  }
+  return run;
+}
+
+/// The equations of elements [e, f).
+void run_equations(const Model& model, int e, int f, std::vector<Eigen::Matrix<int, 6, 1>>& eqk) {
+  eqk.clear();
+  for (int k = e; k < f; ++k) eqk.push_back(model.element_equations(k));
+}
+
+}  // namespace
+
 SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_element) {
   const std::vector<Model::Element>& els = model.elements();
   const int nel = static_cast<int>(els.size()), ne = 2 * model.dofs_per_node();
   SubdomainBound out;
   out.exact = true;
-  double lam = 0.0, lam_last = 0.0;
-  std::vector<int> eqs, first;
-  std::vector<Eigen::Matrix<int, 6, 1>> eqk, locs;  // the run's elements' equations, local indices
+  double lam = 0.0, lam_last = 0.0, bracket_lower = 0.0;
+  struct Solved {
+    double upper;  // the run's bound
+    int e, f;      // its elements [e, f)
+  };
+  std::vector<Solved> solved;  // the runs Laguerre's iteration solved
+  RunScratch scratch;
+  std::vector<Eigen::Matrix<int, 6, 1>> eqk;  // the run's elements' equations
   std::vector<double> key, key_last;
-  Eigen::MatrixXd Ke, Me;  // the matrices of element `formed`: consecutive equal elements share them
-  int formed = -1;
   for (int e = 0; e < nel;) {
     if (els[e].rigid) {  // a rigid body has no element stiffness
       ++e;
@@ -125,19 +173,14 @@ SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_
     if ((e > 0 && els[e - 1].body == els[e].body) || (f < nel && els[f].body == els[e].body)) out.exact = false;
     // The run's key: each element's section, geometry and equation pattern relative to the
     // run's first equation. An equal key gives equal matrices: reuse the last eigenvalue.
+    run_equations(model, e, f, eqk);
     key.clear();
-    eqs.clear();
-    eqk.clear();
-    for (int k = e; k < f; ++k) eqk.push_back(model.element_equations(k));
     const int first_eq = eqk.front().maxCoeff();
     for (int k = e; k < f; ++k) {
       const Model::Element& el = els[k];
       key.insert(key.end(), {el.E, el.area, el.inertia, el.rho, el.length, el.c, el.s});
       const Eigen::Matrix<int, 6, 1>& eq = eqk[k - e];
-      for (int i = 0; i < ne; ++i) {
-        key.push_back(eq(i) >= 0 ? eq(i) - first_eq : -1e9);
-        if (eq(i) >= 0) eqs.push_back(eq(i));
-      }
+      for (int i = 0; i < ne; ++i) key.push_back(eq(i) >= 0 ? eq(i) - first_eq : -1e9);
     }
     if (key == key_last) {
       lam = std::max(lam, lam_last);
@@ -145,38 +188,8 @@ SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_
       continue;
     }
     key_last = key;
-    std::sort(eqs.begin(), eqs.end());
-    eqs.erase(std::unique(eqs.begin(), eqs.end()), eqs.end());
-    const int d = static_cast<int>(eqs.size());
-    // Supported DOFs stay out: the model's vectors are zero there, so the subdomain's quotient
-    // only needs its free DOFs. An element's local indices: its equations' ranks in the run.
-    locs.clear();
-    for (const Eigen::Matrix<int, 6, 1>& eq : eqk) {
-      Eigen::Matrix<int, 6, 1> loc = Eigen::Matrix<int, 6, 1>::Constant(-1);
-      for (int i = 0; i < ne; ++i)
-        if (eq(i) >= 0) loc(i) = static_cast<int>(std::lower_bound(eqs.begin(), eqs.end(), eq(i)) - eqs.begin());
-      locs.push_back(loc);
-    }
-    // The envelope: row r starts at the lowest local index of any element holding r.
-    first.assign(static_cast<std::size_t>(d), d);
-    for (const Eigen::Matrix<int, 6, 1>& loc : locs) {
-      int low = d;
-      for (int i = 0; i < ne; ++i) low = loc(i) >= 0 ? std::min(low, loc(i)) : low;
-      for (int i = 0; i < ne; ++i)
-        if (loc(i) >= 0) first[loc(i)] = std::min(first[loc(i)], low);
-    }
-    EnvelopePencil run(first);
-    for (int k = e; k < f; ++k) {
-      if (formed < 0 || !model.same_element_matrices(k, formed)) {
-        Ke = model.element_stiffness(k, els[k].c, els[k].s);
-        Me = model.element_mass(k, els[k].c, els[k].s);
-        formed = k;
-      }
-      const Eigen::Matrix<int, 6, 1>& loc = locs[k - e];
-      for (int i = 0; i < ne; ++i)
-        for (int j = 0; j < ne; ++j)
-          if (loc(i) >= 0 && loc(j) >= 0 && loc(j) <= loc(i)) run.add(loc(i), loc(j), Ke(i, j), Me(i, j));
-    }
+    const EnvelopePencil run = run_pencil(model, e, eqk, {}, scratch);
+    const int d = run.size();
     lam_last = 0.0;  // no free DOF: nothing moves
     if (d > 0 && lam > 0.0 && above_spectrum(run, lam)) {
       lam_last = lam;  // proven below the largest so far: it cannot raise the bound
@@ -185,7 +198,8 @@ SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_
       const TopEigenvalue top = top_eigenvalue(run, lam_element * (1 + 1e-8));
       if (top.ok) {
         lam_last = top.upper;
-        out.lower = std::max(out.lower, top.lower);
+        bracket_lower = std::max(bracket_lower, top.lower);
+        solved.push_back({top.upper, e, f});
       } else {  // M not positive definite (no rotary inertia): the dense solve says inf
         Eigen::MatrixXd Kc, Mc;
         run.to_dense(Kc, Mc);
@@ -196,54 +210,31 @@ SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_
     e = f;
   }
   out.upper = lam;
-  return out;
-}
-
-LanczosEstimate lanczos_largest(const Model& model, int max_iter) {
-  LanczosEstimate est;
-  const int n = model.size();
-  if (n == 0 || max_iter <= 0) return est;
-  const MassSolver minv(model);
-  const bool lumped = model.lumped();
-  const Eigen::VectorXd& m = model.lumped_mass();
-  const Eigen::VectorXd& minv_diag = minv.inverse_diagonal();
-  const SparseMatrix& K = model.K();
-  const SparseMatrix& M = model.M();
-  auto m_norm2 = [&](const Eigen::VectorXd& x, Eigen::VectorXd& scratch) {
-    if (lumped) return x.dot(m.cwiseProduct(x));
-    scratch.noalias() = M * x;
-    return x.dot(scratch);
-  };
-  Eigen::VectorXd q = spread_vector(n),  // every DOF (every mode) carries energy
-                  q_prev = Eigen::VectorXd::Zero(n), w(n), Kq(n), scratch(n);
-  q /= std::sqrt(m_norm2(q, scratch));
-  std::vector<double> alpha, beta;
-  double b_prev = 0.0, a_max = 0.0;
-  const int iters = std::min(max_iter, n);
-  for (int j = 0; j < iters; ++j) {
-    Kq.noalias() = K * q;
-    const double a = q.dot(Kq);
-    // w = M^-1 K q - a q - b_prev q_prev: the three-term recurrence in the M-inner product.
-    if (lumped) {
-      w.array() = Kq.array() * minv_diag.array() - a * q.array() - b_prev * q_prev.array();
-    } else {
-      minv.apply(Kq, w);
-      w -= a * q + b_prev * q_prev;
+  if (out.exact) {
+    out.lower = bracket_lower;  // each body is one run: its bracket holds its top eigenvalue
+  } else {
+    // A run with the equations it shares with the rest of its body held at zero is the whole
+    // model's pencil restricted to its other equations: by Cauchy's interlacing its top
+    // eigenvalue is a lower bound of the model's. The largest over the solved runs, tried from
+    // the highest bound down (a held run's top is below its own bound, so the search stops when
+    // the next bound is below the best so far); each from its bound (1e-8: the factorization's
+    // roundoff), and Laguerre's bracket gives the lower end.
+    std::sort(solved.begin(), solved.end(), [](const Solved& a, const Solved& b) { return a.upper > b.upper; });
+    std::vector<int> held;
+    for (const auto& [upper, e, f] : solved) {
+      if (upper <= out.lower) break;
+      held.clear();
+      for (int k : {e - 1, f})
+        if (k >= 0 && k < nel && els[k].body == els[e].body)
+          for (int i = 0; i < ne; ++i)
+            if (const int q = model.element_equations(k)(i); q >= 0) held.push_back(q);
+      std::sort(held.begin(), held.end());
+      run_equations(model, e, f, eqk);
+      const TopEigenvalue top = top_eigenvalue(run_pencil(model, e, eqk, held, scratch), upper * (1 + 1e-8));
+      if (top.ok) out.lower = std::max(out.lower, top.lower);
     }
-    const double b = std::sqrt(std::max(0.0, m_norm2(w, scratch)));
-    alpha.push_back(a);
-    beta.push_back(b);
-    a_max = std::max(a_max, std::abs(a));
-    const bool exhausted = b <= 1e-14 * a_max;  // invariant subspace: T_k holds exact eigenvalues
-    if (exhausted || j + 1 == iters || (j + 1) % kCheckEvery == 0) {
-      top_ritz_pair(alpha, beta, est);
-      if (exhausted || est.residual <= kResidualTol * std::abs(est.ritz)) break;
-    }
-    q_prev.swap(q);
-    q = w / b;
-    b_prev = b;
   }
-  return est;
+  return out;
 }
 
 CriticalStep critical_step(const Model& model) {
@@ -252,23 +243,14 @@ CriticalStep critical_step(const Model& model) {
   const SubdomainBound sub = subdomain_bound(model, kSubdomainElements, lam_e);
   const double lam_s = sub.upper;
   c.element_bound_dt = step_of(model, std::sqrt(lam_e));
-  if (sub.exact && sub.lower > 0.0) {
-    // Every elastic body is one run: its Laguerre bracket already holds omega_max^2.
-    c.ritz_omega = std::sqrt(sub.lower);
-  } else {
-    const LanczosEstimate lz = lanczos_largest(model, kLanczosMaxIterations);
-    c.iterations = lz.iterations;
-    c.ritz_omega = std::sqrt(std::max(lz.ritz, 0.0));
-    c.residual = lz.residual;
-    c.lanczos_dt = step_of(model, std::sqrt(std::max(lz.upper(), 0.0)));
-  }
+  c.omega_lower = std::sqrt(sub.lower);
   if (lam_e <= 0.0) return c;  // no stiffness: no limit
   // Both bounds are proven; the subdomain one is never above the element one in exact
   // arithmetic, the min guards against its roundoff.
   const double lam = std::min(lam_s, lam_e);
   c.bound = lam_s < lam_e ? CriticalBound::kSubdomain : CriticalBound::kElement;
   c.omega_max = std::sqrt(lam);
-  c.ritz_omega = std::min(c.ritz_omega, c.omega_max);  // a lower bound: roundoff may not lift it above
+  c.omega_lower = std::min(c.omega_lower, c.omega_max);  // a lower bound: roundoff may not lift it above
   c.dt = step_of(model, c.omega_max);
   return c;
 }

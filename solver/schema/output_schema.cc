@@ -93,8 +93,7 @@ const std::vector<std::string>& contact_summary_keys() {
 const std::vector<std::string>& critical_step_keys() {
   namespace k = critical_step_key;
   static const std::vector<std::string> keys = {
-      k::kMethod,    k::kBound,    k::kOmegaMax,   k::kElementBoundDt, k::kLanczosDt,
-      k::kRitzOmega, k::kResidual, k::kIterations, k::kMargin,         k::kDtOverCritical};
+      k::kMethod, k::kBound, k::kOmegaMax, k::kElementBoundDt, k::kOmegaLower, k::kMargin, k::kDtOverCritical};
   return keys;
 }
 

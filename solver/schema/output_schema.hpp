@@ -56,12 +56,9 @@ inline constexpr const char* kMethod = "method";  ///< how omega_max was estimat
 inline constexpr const char* kBound = "bound";    ///< "element" | "subdomain" | "none"
 inline constexpr const char* kOmegaMax = "omega_max";               ///< rad/s, the proven upper bound used
 inline constexpr const char* kElementBoundDt = "element_bound_dt";  ///< s, the proven step
-inline constexpr const char* kLanczosDt = "lanczos_dt";       ///< s, step of Ritz value + residual (unsafe)
-inline constexpr const char* kRitzOmega = "ritz_omega";       ///< rad/s, top Ritz value: lower bound
-inline constexpr const char* kResidual = "lanczos_residual";  ///< rad^2/s^2, residual of the top Ritz pair
-inline constexpr const char* kIterations = "lanczos_iterations";
+inline constexpr const char* kOmegaLower = "omega_lower";  ///< rad/s, a proven lower bound of omega_max
 inline constexpr const char* kMargin =
-    "margin";  ///< omega_max / ritz_omega - 1: dt at most this far below the limit
+    "margin";  ///< omega_max / omega_lower - 1: dt at most this far below the limit
 inline constexpr const char* kDtOverCritical = "dt_over_critical";
 }  // namespace critical_step_key
 

@@ -1,7 +1,6 @@
 #include <beamimpact/model/top_eigenvalue.hpp>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -9,70 +8,34 @@
 namespace beamimpact {
 namespace {
 
-/// Trial values of sigma factored in one pass, one per lane. The LDL^T recurrence is bound by
-/// the latency of its chain of dependent operations, not by arithmetic, so two lanes cost about
-/// as much as one.
-template <std::size_t N>
-using Lanes = std::array<double, N>;
+/// The two trial values of sigma that one pass factors, one per lane of an SSE2 register (GCC
+/// and Clang vector extension: arithmetic acts on both lanes, each lane's bits are those of the
+/// scalar operation).
+using Pair = double __attribute__((vector_size(2 * sizeof(double))));
 
 /// A quantity of the factorization of A(sigma) = sigma M - K with its first two derivatives in
-/// sigma (forward-mode differentiation through the LDL^T recurrence), in each of N lanes.
-template <std::size_t N>
+/// sigma (forward-mode differentiation through the LDL^T recurrence), in both lanes.
 struct Jet {
-  Lanes<N> v{}, d1{}, d2{};
+  Pair v{}, d1{}, d2{};
 };
-template <std::size_t N>
-Jet<N> operator-(const Jet<N>& a, const Jet<N>& b) {
-  Jet<N> r;
-  for (std::size_t l = 0; l < N; ++l) {
-    r.v[l] = a.v[l] - b.v[l];
-    r.d1[l] = a.d1[l] - b.d1[l];
-    r.d2[l] = a.d2[l] - b.d2[l];
-  }
-  return r;
-}
-template <std::size_t N>
-Jet<N> operator*(const Jet<N>& a, const Jet<N>& b) {
-  Jet<N> r;
-  for (std::size_t l = 0; l < N; ++l) {
-    r.v[l] = a.v[l] * b.v[l];
-    r.d1[l] = a.d1[l] * b.v[l] + a.v[l] * b.d1[l];
-    r.d2[l] = a.d2[l] * b.v[l] + 2 * a.d1[l] * b.d1[l] + a.v[l] * b.d2[l];
-  }
-  return r;
+Jet operator-(const Jet& a, const Jet& b) { return {a.v - b.v, a.d1 - b.d1, a.d2 - b.d2}; }
+Jet operator*(const Jet& a, const Jet& b) {
+  return {a.v * b.v, a.d1 * b.v + a.v * b.d1, a.d2 * b.v + 2 * a.d1 * b.d1 + a.v * b.d2};
 }
 /// 1/a with its derivatives: one division per pivot instead of one per entry of L.
-template <std::size_t N>
-Jet<N> reciprocal(const Jet<N>& a) {
-  Jet<N> r;
-  for (std::size_t l = 0; l < N; ++l) {
-    r.v[l] = 1.0 / a.v[l];
-    r.d1[l] = -a.d1[l] * r.v[l] * r.v[l];
-    r.d2[l] = -(a.d2[l] * r.v[l] + 2 * a.d1[l] * r.d1[l]) * r.v[l];
-  }
-  return r;
+Jet reciprocal(const Jet& a) {
+  const Pair r = Pair{1.0, 1.0} / a.v, r1 = -a.d1 * r * r;
+  return {r, r1, -(a.d2 * r + 2 * a.d1 * r1) * r};
 }
 double reciprocal(double a) { return 1.0 / a; }
 /// The lanes whose value is positive, as a bit mask.
 unsigned positive(double x) { return x > 0.0 ? 1u : 0u; }
-template <std::size_t N>
-unsigned positive(const Jet<N>& x) {
-  unsigned mask = 0;
-  for (std::size_t l = 0; l < N; ++l) mask |= x.v[l] > 0.0 ? 1u << l : 0u;
-  return mask;
-}
+unsigned positive(const Jet& x) { return (x.v[0] > 0.0 ? 1u : 0u) | (x.v[1] > 0.0 ? 2u : 0u); }
 /// The entry (i, j) of sigma M - K.
-double entry(const EnvelopePencil& p, int i, int j, const Lanes<1>& sigma, double*) {
-  return sigma[0] * p.m(i, j) - p.k(i, j);
-}
-template <std::size_t N>
-Jet<N> entry(const EnvelopePencil& p, int i, int j, const Lanes<N>& sigma, Jet<N>*) {
-  Jet<N> r;
-  for (std::size_t l = 0; l < N; ++l) {
-    r.v[l] = sigma[l] * p.m(i, j) - p.k(i, j);
-    r.d1[l] = p.m(i, j);
-  }
-  return r;
+double entry(const EnvelopePencil& p, int i, int j, double sigma, double*) { return sigma * p.m(i, j) - p.k(i, j); }
+Jet entry(const EnvelopePencil& p, int i, int j, const Pair& sigma, Jet*) {
+  const Pair m{p.m(i, j), p.m(i, j)}, k{p.k(i, j), p.k(i, j)};
+  return {sigma * m - k, m, Pair{}};
 }
 
 /// Scratch of factor(): E_ij = L_ij D_j and L_ij packed like the pencil's rows (first(i) <= j <
@@ -116,17 +79,13 @@ unsigned factor(const EnvelopePencil& p, const Sigma& sigma, unsigned lanes, Fac
 
 /// Per lane, G = sum 1/(sigma - lambda_i) and H = sum 1/(sigma - lambda_i)^2 from the pivots
 /// (log det(sigma M - K) = sum log D_i); valid in the lanes returned: those above the spectrum.
-template <std::size_t N>
-unsigned laguerre_sums(const EnvelopePencil& p, const Lanes<N>& sigma, unsigned lanes, Factors<Jet<N>>& f,
-                       Lanes<N>& G, Lanes<N>& H) {
-  G.fill(0.0);
-  H.fill(0.0);
-  return factor(p, sigma, lanes, f, [&](const Jet<N>& piv, const Jet<N>& inv) {
-    for (std::size_t l = 0; l < N; ++l) {
-      const double r = piv.d1[l] * inv.v[l];  // (log D_i)'
-      G[l] += r;
-      H[l] += r * r - piv.d2[l] * inv.v[l];   // -(log D_i)''
-    }
+unsigned laguerre_sums(const EnvelopePencil& p, const Pair& sigma, unsigned lanes, Factors<Jet>& f, Pair& G,
+                       Pair& H) {
+  G = H = Pair{};
+  return factor(p, sigma, lanes, f, [&](const Jet& piv, const Jet& inv) {
+    const Pair r = piv.d1 * inv.v;  // (log D_i)'
+    G += r;
+    H += r * r - piv.d2 * inv.v;    // -(log D_i)''
   });
 }
 
@@ -169,16 +128,16 @@ void EnvelopePencil::to_dense(Eigen::MatrixXd& K, Eigen::MatrixXd& M) const {
 
 bool above_spectrum(const EnvelopePencil& p, double sigma) {
   Factors<double> f;
-  return factor(p, Lanes<1>{sigma}, 1u, f, [](double, double) {}) != 0;
+  return factor(p, sigma, 1u, f, [](double, double) {}) != 0;
 }
 
 TopEigenvalue top_eigenvalue(const EnvelopePencil& p, double start) {
   TopEigenvalue r;
   const double n = p.size(), eps = std::numeric_limits<double>::epsilon();
-  Factors<Jet<2>> f;
-  Lanes<2> G{}, H{};
+  Factors<Jet> f;
+  Pair G{}, H{};
   r.factorizations = 1;
-  if (p.size() == 0 || !std::isfinite(start) || !(laguerre_sums<2>(p, Lanes<2>{start, start}, 1u, f, G, H) & 1u))
+  if (p.size() == 0 || !std::isfinite(start) || !(laguerre_sums(p, Pair{start, start}, 1u, f, G, H) & 1u))
     return r;
   double hi = start, G_hi = G[0], H_hi = H[0];
   double lo = -std::numeric_limits<double>::infinity();  // below: a sigma proven not above lambda_max
@@ -188,7 +147,7 @@ TopEigenvalue top_eigenvalue(const EnvelopePencil& p, double start) {
     const double disc = n * H_hi - G_hi * G_hi;
     const double a = n / (G_hi + std::sqrt(std::max(0.0, (n - 1) * disc)));
     if (a <= 4 * eps * std::abs(hi)) break;  // converged to roundoff
-    Lanes<2> trial{hi - a, hi - n / (G_hi + std::sqrt(std::max(0.0, (n / 2 - 1) * disc)))};
+    Pair trial{hi - a, hi - n / (G_hi + std::sqrt(std::max(0.0, (n / 2 - 1) * disc)))};
     unsigned lanes = trial[1] > lo ? 3u : 1u;  // lane 1 at or below lo would repeat a known failure
     if (trial[0] <= lo) {
       // Laguerre aimed at or below a point already known to be below lambda_max: it lies in
@@ -198,7 +157,7 @@ TopEigenvalue top_eigenvalue(const EnvelopePencil& p, double start) {
     }
     if (lanes == 1u) trial[1] = trial[0];
     ++r.factorizations;
-    const unsigned above = laguerre_sums<2>(p, trial, lanes, f, G, H);
+    const unsigned above = laguerre_sums(p, trial, lanes, f, G, H);
     if (above & 2u) {  // the lower trial is proven above
       hi = trial[1];
       G_hi = G[1];

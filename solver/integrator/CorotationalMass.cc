@@ -15,7 +15,7 @@ CorotationalMass::CorotationalMass(const Model& model, const InternalForce& fint
   for (int e : fint.corotational_elements()) {
     const Model::Element& el = model.elements()[e];
     rotating_body_[el.body] = 1;
-    const Eigen::MatrixXd Me = model.element_mass(e, el.c, el.s);
+    const Eigen::MatrixXd& Me = model.reference_mass(e);
     const Eigen::Matrix<int, 6, 1> eq = model.element_equations(e);
     for (int i = 0; i < 6; ++i)
       for (int j = 0; j < 6; ++j)

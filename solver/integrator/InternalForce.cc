@@ -33,8 +33,7 @@ InternalForce::InternalForce(const Model& model, const std::vector<bool>& corota
   // Linear part: K minus the corotational elements' reference stiffness.
   std::vector<Eigen::Triplet<double>> t;
   for (int e : corot_elements_) {
-    const Model::Element& el = model.elements()[e];
-    const Eigen::MatrixXd Ke = model.element_stiffness(e, el.c, el.s);
+    const Eigen::MatrixXd& Ke = model.reference_stiffness(e);
     const Eigen::Matrix<int, 6, 1> eq = model.element_equations(e);
     for (int i = 0; i < 6; ++i)
       for (int j = 0; j < 6; ++j)
@@ -53,21 +52,20 @@ void InternalForce::build_blocks() {
   std::vector<int> block_of;
   eqs.reserve(model_.elements().size());
   block_of.reserve(model_.elements().size());
-  Eigen::MatrixXd Ke;
-  int last = -1;  // the element whose stiffness Ke is
+  int last = -1;  // the group of the last elastic element
   for (int e = 0; e < static_cast<int>(model_.elements().size()); ++e) {
-    const Model::Element& el = model_.elements()[e];
-    if (el.rigid) continue;  // no element stiffness
+    const int g = model_.element_group(e);
+    if (g < 0) continue;  // a rigid body's element: no element stiffness
     const Eigen::Matrix<int, 6, 1> eq = model_.element_equations(e);
     std::array<int, 6> be{};
     for (int i = 0; i < 6; ++i) be[i] = i < w ? eq(i) : -1;
     eqs.push_back(be);
-    if (last >= 0 && model_.same_element_matrices(e, last)) {  // the same block as the last
+    if (g == last) {  // the same block as the last
       block_of.push_back(block_of.back());
       continue;
     }
-    Ke = model_.element_stiffness(e, el.c, el.s);
-    last = e;
+    const Eigen::MatrixXd& Ke = model_.reference_stiffness(e);
+    last = g;
     const std::size_t nb = blocks_.size() / (w * w);
     bool same = nb > 0;
     for (int i = 0; same && i < w; ++i)

@@ -24,9 +24,9 @@ struct Nonzero {
   double v;
 };
 
-/// The matrices shared by a group of consecutive equal elements: K_e's and M_e's nonzero entries
+/// What assembly needs of a group of equal elements' matrices: K_e's and M_e's nonzero entries
 /// by rows, and M_e r for the two rigid translations r (columns: global x, y).
-struct ElementGroup {
+struct GroupEntries {
   std::vector<Nonzero> k, m;
   Eigen::Matrix<double, 6, 2> mr = Eigen::Matrix<double, 6, 2>::Zero();
 };
@@ -178,16 +178,24 @@ Model::Model(const Scene& scene, bool bending)
   Eigen::VectorXd mdiag = Eigen::VectorXd::Zero(n);
   momentum_.assign(num_bodies(), {Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)});
   const int ne = 2 * dpn;
-  // Consecutive elements with equal matrices form a group; each group's matrices are formed once
-  // (the first pass lists the groups, the second reuses them).
-  auto group_of = [&](int e) {
+  // Consecutive elements with equal matrices form a group; each group's matrices are formed once.
+  group_.assign(elements_.size(), -1);
+  for (int e = 0, last = -1; e < static_cast<int>(elements_.size()); ++e) {
     const Element& el = elements_[e];
-    const Eigen::MatrixXd Ke = element_stiffness(e, el.c, el.s), Me = element_mass(e, el.c, el.s);
-    ElementGroup grp;
+    if (el.rigid) continue;  // geometry only
+    if (last < 0 || !same_element_matrices(e, last)) {
+      groups_.push_back({element_stiffness(e, el.c, el.s), element_mass(e, el.c, el.s)});
+      last = e;
+    }
+    group_[e] = static_cast<int>(groups_.size()) - 1;
+  }
+  std::vector<GroupEntries> entries;
+  for (const ElementGroup& grp : groups_) {
+    GroupEntries& ge = entries.emplace_back();
     for (int i = 0; i < ne; ++i)
       for (int j = 0; j < ne; ++j) {
-        if (Ke(i, j) != 0.0) grp.k.push_back({i, j, Ke(i, j)});
-        if (Me(i, j) != 0.0) grp.m.push_back({i, j, Me(i, j)});
+        if (grp.K(i, j) != 0.0) ge.k.push_back({i, j, grp.K(i, j)});
+        if (grp.M(i, j) != 0.0) ge.m.push_back({i, j, grp.M(i, j)});
       }
     for (int c = 0; c < 2; ++c) {  // rigid translation along global axis c, in element DOFs
       Eigen::VectorXd r = Eigen::VectorXd::Zero(ne);
@@ -197,12 +205,10 @@ Model::Model(const Scene& scene, bool bending)
         else
           r(k) = axis_[c];
       }
-      const Eigen::VectorXd m_r = Me * r;
-      for (int i = 0; i < ne; ++i) grp.mr(i, c) = m_r(i);
+      const Eigen::VectorXd m_r = grp.M * r;
+      for (int i = 0; i < ne; ++i) ge.mr(i, c) = m_r(i);
     }
-    return grp;
-  };
-  std::vector<ElementGroup> groups;
+  }
   for (int pass = 0; pass < 2; ++pass) {
     const bool counting = pass == 0;
     if (!counting) {
@@ -229,16 +235,10 @@ Model::Model(const Scene& scene, bool bending)
           for (int k = 0; k < 2; ++k) momentum_[b][k](eq) += mc * axis_[k];  // the rod axis
       }
     }
-    int g = -1, last = -1;  // the group of the last elastic element, and its first element
     for (int e = 0; e < static_cast<int>(elements_.size()); ++e) {
       const Element& el = elements_[e];
       if (el.rigid) continue;  // geometry only
-      if (last < 0 || !same_element_matrices(e, last)) {
-        ++g;
-        last = e;
-        if (counting) groups.push_back(group_of(e));
-      }
-      const ElementGroup& grp = groups[g];
+      const GroupEntries& grp = entries[group_[e]];
       const Eigen::Matrix<int, 6, 1> eq = element_equations(e);
       if (counting)
         for (int c = 0; c < 2; ++c)

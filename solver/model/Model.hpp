@@ -90,10 +90,15 @@ class Model {
   };
   /// @brief The element list (per-element work: corotation, bounds).
   const std::vector<Element>& elements() const { return elements_; }
-  /// @brief True when elements a and b have the same section, material, length and direction,
-  /// so that their stiffness and mass matrices are equal (per-element loops compute them once
-  /// per run of equal elements).
-  bool same_element_matrices(int a, int b) const;
+  /// @brief The group of element e: a run of consecutive elastic elements with the same section,
+  /// material, length and direction, hence equal matrices; -1 for an element of a rigid body.
+  /// Per-element work that depends only on the matrices (eigenvalues, blocks) is done per group.
+  int element_group(int e) const { return group_[e]; }
+  /// @brief Stiffness of elastic element e in global axes at its reference direction, formed
+  /// once per group (element_group()).
+  const Eigen::MatrixXd& reference_stiffness(int e) const { return groups_[group_[e]].K; }
+  /// @brief Mass of elastic element e in global axes, formed once per group.
+  const Eigen::MatrixXd& reference_mass(int e) const { return groups_[group_[e]].M; }
   /// @brief Element stiffness in global axes at direction (c, s): 6x6 (frame) or 2x2 (rod).
   Eigen::MatrixXd element_stiffness(int e, double c, double s) const;
   /// @brief Element mass in global axes at direction (c, s): 6x6 (frame) or 2x2 (rod).
@@ -106,6 +111,12 @@ class Model {
 
  private:
   static constexpr int kNotRigid = -2;
+  /// The reference matrices shared by a group of consecutive equal elements.
+  struct ElementGroup {
+    Eigen::MatrixXd K, M;
+  };
+  /// True when elements a and b have the same section, material, length and direction.
+  bool same_element_matrices(int a, int b) const;
   /// Per body: equations of its centre (x, y, theta; rods: axial), -1 when fixed, kNotRigid for
   /// an elastic body.
   std::vector<std::array<int, 3>> rigid_eq_;
@@ -120,6 +131,8 @@ class Model {
   std::vector<int> dof_to_eq_;  ///< node * dofs_per_node + c -> equation or -1
   std::vector<int> free_;       ///< equation -> node * dofs_per_node + c
   std::vector<Element> elements_;
+  std::vector<ElementGroup> groups_;
+  std::vector<int> group_;  ///< element -> its group in groups_, -1 for a rigid body's
   std::vector<Vec2> body_velocity_;
   std::vector<double> body_mass_;
   std::vector<std::array<Eigen::VectorXd, 2>> momentum_;

@@ -53,25 +53,15 @@ const char* to_string(CriticalBound b) {
 }
 
 double element_bound(const Model& model) {
-  // Consecutive elements of a body are usually identical: their matrices are compared and the
-  // eigenvalue reused, so a uniform body costs one 6x6 eigen-solve.
-  double lam = 0.0;
-  Eigen::MatrixXd K_last, M_last;
-  double lam_last = 0.0;
-  int last = -1;  // the last element whose matrices were formed
+  // Consecutive equal elements share a group: one eigen-solve per group (a uniform body: one).
+  double lam = 0.0, lam_last = 0.0;
+  int last = -1;  // the group of the last elastic element
   for (int e = 0; e < static_cast<int>(model.elements().size()); ++e) {
-    const Model::Element& el = model.elements()[e];
-    if (el.rigid) continue;  // a rigid body has no element stiffness
-    if (last >= 0 && model.same_element_matrices(e, last)) {  // equal matrices: no need to form them
-      lam = std::max(lam, lam_last);
-      continue;
-    }
-    last = e;
-    Eigen::MatrixXd Ke = model.element_stiffness(e, el.c, el.s), Me = model.element_mass(e, el.c, el.s);
-    if (Ke.size() != K_last.size() || Ke != K_last || Me != M_last) {
-      lam_last = largest_generalized(Ke, Me, model.lumped());  // singular mass (no rotary inertia): inf
-      K_last = std::move(Ke);
-      M_last = std::move(Me);
+    const int g = model.element_group(e);
+    if (g < 0) continue;  // a rigid body has no element stiffness
+    if (g != last) {      // singular mass (no rotary inertia): inf
+      lam_last = largest_generalized(model.reference_stiffness(e), model.reference_mass(e), model.lumped());
+      last = g;
     }
     lam = std::max(lam, lam_last);
   }
@@ -88,8 +78,6 @@ namespace {
 struct RunScratch {
   std::vector<int> eqs, first;
   std::vector<Eigen::Matrix<int, 6, 1>> locs;
-  Eigen::MatrixXd Ke, Me;  ///< the matrices of element `formed`: consecutive equal elements share them
-  int formed = -1;
 };
 
 /// The pencil of a run of elements e, e + 1, ... (their equations: `eqk`) on its free equations
@@ -126,17 +114,12 @@ EnvelopePencil run_pencil(const Model& model, int e, const std::vector<Eigen::Ma
       if (loc(i) >= 0) s.first[loc(i)] = std::min(s.first[loc(i)], low);
   }
   EnvelopePencil run(s.first);
-  const std::vector<Model::Element>& els = model.elements();
   for (int k = e; k < e + static_cast<int>(eqk.size()); ++k) {
-    if (s.formed < 0 || !model.same_element_matrices(k, s.formed)) {
-      s.Ke = model.element_stiffness(k, els[k].c, els[k].s);
-      s.Me = model.element_mass(k, els[k].c, els[k].s);
-      s.formed = k;
-    }
+    const Eigen::MatrixXd &Ke = model.reference_stiffness(k), &Me = model.reference_mass(k);
     const Eigen::Matrix<int, 6, 1>& loc = s.locs[k - e];
     for (int i = 0; i < ne; ++i)
       for (int j = 0; j < ne; ++j)
-        if (loc(i) >= 0 && loc(j) >= 0 && loc(j) <= loc(i)) run.add(loc(i), loc(j), s.Ke(i, j), s.Me(i, j));
+        if (loc(i) >= 0 && loc(j) >= 0 && loc(j) <= loc(i)) run.add(loc(i), loc(j), Ke(i, j), Me(i, j));
   }
   return run;
 }

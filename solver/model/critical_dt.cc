@@ -41,39 +41,6 @@ double step_of(const Model& model, double omega) {
   return 2.0 / omega * (std::sqrt(1 + xi * xi) - xi);
 }
 
-}  // namespace
-
-const char* to_string(CriticalBound b) {
-  switch (b) {
-    case CriticalBound::kElement: return "element";
-    case CriticalBound::kSubdomain: return "subdomain";
-    case CriticalBound::kNone: break;
-  }
-  return "none";
-}
-
-double element_bound(const Model& model) {
-  // Consecutive equal elements share a group: one eigen-solve per group (a uniform body: one).
-  double lam = 0.0, lam_last = 0.0;
-  int last = -1;  // the group of the last elastic element
-  for (int e = 0; e < static_cast<int>(model.elements().size()); ++e) {
-    const int g = model.element_group(e);
-    if (g < 0) continue;  // a rigid body has no element stiffness
-    if (g != last) {      // singular mass (no rotary inertia): inf
-      lam_last = largest_generalized(model.reference_stiffness(e), model.reference_mass(e), model.lumped());
-      last = g;
-    }
-    lam = std::max(lam, lam_last);
-  }
-  return lam;
-}
-
-double subdomain_bound(const Model& model, int max_elements) {
-  return subdomain_bound(model, max_elements, element_bound(model)).upper;
-}
-
-namespace {
-
 /// Scratch of run_pencil(), kept across runs.
 struct RunScratch {
   std::vector<int> eqs, first;
@@ -131,6 +98,35 @@ void run_equations(const Model& model, int e, int f, std::vector<Eigen::Matrix<i
 }
 
 }  // namespace
+
+const char* to_string(CriticalBound b) {
+  switch (b) {
+    case CriticalBound::kElement: return "element";
+    case CriticalBound::kSubdomain: return "subdomain";
+    case CriticalBound::kNone: break;
+  }
+  return "none";
+}
+
+double element_bound(const Model& model) {
+  // Consecutive equal elements share a group: one eigen-solve per group (a uniform body: one).
+  double lam = 0.0, lam_last = 0.0;
+  int last = -1;  // the group of the last elastic element
+  for (int e = 0; e < static_cast<int>(model.elements().size()); ++e) {
+    const int g = model.element_group(e);
+    if (g < 0) continue;  // a rigid body has no element stiffness
+    if (g != last) {      // singular mass (no rotary inertia): inf
+      lam_last = largest_generalized(model.reference_stiffness(e), model.reference_mass(e), model.lumped());
+      last = g;
+    }
+    lam = std::max(lam, lam_last);
+  }
+  return lam;
+}
+
+double subdomain_bound(const Model& model, int max_elements) {
+  return subdomain_bound(model, max_elements, element_bound(model)).upper;
+}
 
 SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_element) {
   const std::vector<Model::Element>& els = model.elements();

@@ -51,9 +51,10 @@ class ContactPair {
   /// @brief True when the struck point can move along the target (surface contacts).
   bool can_slide() const { return kind_ != ContactKind::kEndToEnd; }
 
-  /// @brief Terms a row holds at most: the striker and two target nodes, two translations each,
-  /// and the target nodes' rotations (Hermite surface).
-  static constexpr std::size_t kMaxRowTerms = 8;
+  /// @brief Terms a row holds at most: the striker and two target nodes, up to 3 each (a node of
+  /// a rigid body projects onto its centre's x, y and rotation: Model::append_projection), and
+  /// each target node's rotation on a Hermite surface: 3 + 2 (3 + 1).
+  static constexpr std::size_t kMaxRowTerms = 11;
   /// @brief Normal row: g(U) = g0 + sum(coeff * U[eq]).
   const std::vector<DofTerm>& normal_row() const { return gn_; }
   /// @brief Tangential row: relative tangential displacement s(U) = sum(coeff * U[eq]).

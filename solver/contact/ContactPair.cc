@@ -99,6 +99,7 @@ void ContactPair::build_rows() {
   if (surface_ == SurfaceInterpolation::kLinear || kind_ == ContactKind::kEndToEnd ||
       model_.dofs_per_node() != 3) {
     linear(n_, gn_);
+    wn_ = {xi1_, xi2_};
     return;
   }
   // Hermite: w(s) = H1 w_j + H2 theta'_j + H3 w_j+1 + H4 theta'_j+1 along the element, s = xi2,
@@ -109,6 +110,7 @@ void ContactPair::build_rows() {
   const double turn = t_[0] * n_[1] - t_[1] * n_[0];  // +1: n = t turned +90 deg
   const double H[4] = {1 - 3 * s * s + 2 * s * s * s, L * (s - 2 * s * s + s * s * s),
                        3 * s * s - 2 * s * s * s, L * (-s * s + s * s * s)};
+  wn_ = {H[0], H[2]};
   gn_.clear();
   model_.append_projection(striker_, n_, 1.0, gn_);
   for (int k = 0; k < 2; ++k) {
@@ -175,6 +177,14 @@ Vec2 ContactPair::target_vector(const Eigen::VectorXd& U) const {
   const double un = us[0] * n_[0] + us[1] * n_[1] - eval(gn_, U);
   const double ut = us[0] * t_[0] + us[1] * t_[1] - eval(gt_, U);
   return {un * n_[0] + ut * t_[0], un * n_[1] + ut * t_[1]};
+}
+
+std::array<std::pair<int, Vec2>, 3> ContactPair::nodal_forces(double R, double tau) const {
+  auto force = [&](double wn, double wt) {
+    return Vec2{wn * R * n_[0] + wt * tau * t_[0], wn * R * n_[1] + wt * tau * t_[1]};
+  };
+  const int n1 = target_first_ + element_;
+  return {{{striker_, force(1.0, 1.0)}, {n1, force(-wn_[0], -xi1_)}, {n1 + 1, force(-wn_[1], -xi2_)}}};
 }
 
 }  // namespace beamimpact::paper

@@ -5,7 +5,9 @@
 /// (relative tangential displacement). Linear kinematics: normal and tangent are the target's
 /// reference axes; the struck point may slide and is then re-located every step.
 
+#include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <beamimpact/model/Model.hpp>
@@ -80,6 +82,15 @@ class ContactPair {
   /// @brief Displacement of the struck point (interpolated as the rows are) from U (m).
   Vec2 target_vector(const Eigen::VectorXd& U) const;
 
+  /// @brief The forces of contact force (R, tau) on the pair's nodes (N), as the rows apply them:
+  /// R n + tau t on the striker node, and its reaction on the target element's two nodes by the
+  /// rows' translation weights (the normal part by the surface interpolation's, the tangential
+  /// part by xi1, xi2). Unlike the rows' forces on the equations, this holds for a rigid body's
+  /// node and at a support too.
+  /// @param R normal force (N)
+  /// @param tau tangential force (N)
+  std::array<std::pair<int, Vec2>, 3> nodal_forces(double R, double tau) const;
+
  private:
   void locate(const Scene& scene, int index, int striker_body, int node, int target);
   void build_rows();
@@ -89,6 +100,7 @@ class ContactPair {
   int striker_ = 0, target_body_ = 0, target_first_ = 0, target_elements_ = 0;
   int element_ = 0;
   double xi1_ = 1.0, xi2_ = 0.0;
+  std::array<double, 2> wn_{1.0, 0.0};  ///< the normal row's weights of the target's translations
   Vec2 n_{}, t_{};
   double g0_ = 0.0;
   bool on_surface_ = true;

@@ -87,15 +87,6 @@ class ExplicitContactIntegrator {
   const Model& model() const { return model_; }
   /// @brief The internal force (its element end forces serve the field output).
   const InternalForce& internal_force() const { return fint_; }
-  /// @brief f = the contact forces of step p as they act on the equations (R^p + tau^p through
-  /// the pairs' rows, the weights of the chosen surface interpolation included).
-  /// @param f resized to the model's size and overwritten
-  void contact_force(Eigen::VectorXd& f) const {
-    if (solver_.any_force())
-      f = fc_;  // formed by resolve_contacts() (fc_ keeps stale entries only while no force acts)
-    else
-      f.setZero(model_.size());
-  }
 
  private:
   /// Predicts U^{p+1} without contact, solves the contact forces of step p and the physical

@@ -139,11 +139,18 @@ HistoryRow make_row(const ExplicitContactIntegrator& in) {
   return row;
 }
 
-/// The field output of one row: the contact forces on the equations and every element's end
-/// forces, both from the integrator's own operators.
+/// The field output of one row: the contact forces on the nodes (each pair's, as its rows apply
+/// them) and every element's end forces (the integrator's own operator).
 void write_fields(const ExplicitContactIntegrator& in, double t, FieldWriter& fields) {
-  Eigen::VectorXd fc;
-  in.contact_force(fc);
+  std::vector<Vec2> fc(static_cast<std::size_t>(in.model().num_nodes()), Vec2{0.0, 0.0});
+  for (std::size_t p = 0; p < in.pairs().size(); ++p) {
+    const ContactForce& f = in.forces()[p];
+    if (f.R == 0.0 && f.tau == 0.0) continue;
+    for (const auto& [node, F] : in.pairs()[p].nodal_forces(f.R, f.tau)) {
+      fc[node][0] += F[0];
+      fc[node][1] += F[1];
+    }
+  }
   std::vector<std::array<double, 3>> ends;
   in.internal_force().end_forces(in.U(), ends);
   fields.write(t, in.U(), in.V(), fc, ends);

@@ -88,10 +88,12 @@ void FieldWriter::section_forces(const std::vector<std::array<double, 3>>& end_f
 }
 
 void FieldWriter::write(double t, const Eigen::VectorXd& U, const Eigen::VectorXd& V,
-                        const Eigen::VectorXd& contact_force, const std::vector<std::array<double, 3>>& end_forces) {
+                        const std::vector<Vec2>& contact_force, const std::vector<std::array<double, 3>>& end_forces) {
   const int n = model_.num_nodes();
   if (end_forces.size() != model_.elements().size())
     throw std::logic_error("FieldWriter::write: one end-force triple per element expected");
+  if (contact_force.size() != static_cast<std::size_t>(n))
+    throw std::logic_error("FieldWriter::write: one contact force per node expected");
   section_forces(end_forces);
 
   fmt::memory_buffer b;
@@ -115,7 +117,8 @@ void FieldWriter::write(double t, const Eigen::VectorXd& U, const Eigen::VectorX
   });
   data_array(b, "Float64", "axial_force", n, 1, [&](int i, int) { return axial_[i]; });
   data_array(b, "Float64", "bending_moment", n, 1, [&](int i, int) { return moment_[i]; });
-  data_array(b, "Float64", "contact_force", n, 3, vec(contact_force));
+  data_array(b, "Float64", "contact_force", n, 3,
+             [&](int i, int c) { return c < 2 ? contact_force[static_cast<std::size_t>(i)][c] : 0.0; });
   fmt::format_to(out, "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
 
   const std::string name = fmt::format("fields/step_{:06d}.vtu", count_++);

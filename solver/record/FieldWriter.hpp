@@ -9,8 +9,9 @@
 /// beams); one polyline cell per body. Point data per node: displacement, velocity (3
 /// components, z = 0), rotation (rad), axial_force (N, tension > 0), bending_moment (N m,
 /// M = EI kappa in the element's left-normal convention, averaged over the elements meeting at a
-/// node) and contact_force (N: the contact forces as they act on the nodes' translations, the
-/// striker's and the reaction shared over the target's nodes by the surface interpolation). Cell data: body (index into the scene).
+/// node) and contact_force (N: the contact forces on the nodes, the striker's and the reaction
+/// shared over the target's nodes as the pair's rows apply it). Cell data: body (index into the
+/// scene).
 /// Numbers are written in shortest round-trip form, so they read back bit for bit.
 
 #include <array>
@@ -41,10 +42,10 @@ class FieldWriter {
   /// @param t time (s)
   /// @param U displacements, the model's equation vector
   /// @param V velocities, the model's equation vector
-  /// @param contact_force the contact forces on the equations (N; read per node as U is)
+  /// @param contact_force per node, the contact forces on it (N, global x and y)
   /// @param end_forces per element: axial force N (N, tension > 0) and the end moments M1, M2
   ///        (N m) the element exerts on its nodes' rotations (InternalForce::end_forces)
-  void write(double t, const Eigen::VectorXd& U, const Eigen::VectorXd& V, const Eigen::VectorXd& contact_force,
+  void write(double t, const Eigen::VectorXd& U, const Eigen::VectorXd& V, const std::vector<Vec2>& contact_force,
              const std::vector<std::array<double, 3>>& end_forces);
 
   /// @brief Closes the collection: fields.pvd appears (atomically) only now.

@@ -47,7 +47,8 @@ TEST(FieldWriter, SectionForcesOfExactlyRepresentedFields) {
     const paper::InternalForce fint(model, std::vector<bool>(model.num_bodies(), false));
     const int b = scene.body_index("B");
     const double L = 10.0, eps = 1e-6, kappa = 2e-6;
-    Eigen::VectorXd U = Eigen::VectorXd::Zero(model.size()), V = U, Fc = U;
+    Eigen::VectorXd U = Eigen::VectorXd::Zero(model.size()), V = U;
+    std::vector<Vec2> Fc(static_cast<std::size_t>(model.num_nodes()), Vec2{0.0, 0.0});
     for (int i = 0; i <= elements; ++i) {
       const int n = model.node_id(b, i);
       const double x = model.node_position(n)[0];
@@ -55,7 +56,7 @@ TEST(FieldWriter, SectionForcesOfExactlyRepresentedFields) {
       for (int c = 0; c < 3; ++c)
         if (const int e = model.equation(n, c); e >= 0) U(e) = values[c];
     }
-    Fc(model.equation(model.node_id(b, 5), 1)) = -3.0;
+    Fc[static_cast<std::size_t>(model.node_id(b, 5))][1] = -3.0;
     std::vector<std::array<double, 3>> ends;
     fint.end_forces(U, ends);
     const auto dir = temp_path("fields" + std::to_string(elements));
@@ -88,7 +89,8 @@ TEST(FieldWriter, AnUnfinishedRunLeavesNoCollection) {
   {
     FieldWriter w(model, dir);
     const Eigen::VectorXd zero = Eigen::VectorXd::Zero(model.size());
-    w.write(0.0, zero, zero, zero, std::vector<std::array<double, 3>>(model.elements().size()));
+    w.write(0.0, zero, zero, std::vector<Vec2>(static_cast<std::size_t>(model.num_nodes())),
+            std::vector<std::array<double, 3>>(model.elements().size()));
   }  // destroyed without finish(): the run threw
   EXPECT_FALSE(std::filesystem::exists(FieldWriter::collection(dir)));
   EXPECT_FALSE(std::filesystem::exists(dir / "fields.pvd.part"));

@@ -85,6 +85,26 @@ def test_contact_forces_balance_and_carry_R(s1):
         assert fx[10] == -float(row["R"])  # on the striker, against its motion (+x)
 
 
+def test_a_rigid_striker_carries_the_force_at_its_contact_node(tmp_path):
+    # rigid_rod_oblique: a rigid rod (nodes 0-2, contact node 0) falls onto a rigid horizontal
+    # surface (nodes 3-7; the struck point is its middle node 5), normal (0, 1), tangent (1, 0).
+    # The force R n + tau t acts on node 0 and its reaction on node 5; the rod's other nodes
+    # carry none (a rigid body's centre force is not a nodal force). Exact: weights 1 and 0.
+    out = tmp_path / "rigid"
+    subprocess.run([EXE, "run", str(SCENES.parent / "extra" / "rigid_rod_oblique.toml"), "--out", str(out),
+                    "--quiet", "--fields"], check=True)
+    loaded = 0
+    for row, (_, f) in zip(history(out), collection(out)):
+        _, _, a = arrays(f)
+        fx, fy = a["contact_force"][0::3], a["contact_force"][1::3]
+        R, tau = float(row["R"]), float(row["tau"])
+        assert (fx[0], fy[0]) == (tau, R)
+        assert (fx[5], fy[5]) == (-tau, -R)
+        assert len(fx) == 8 and all(fx[i] == fy[i] == 0.0 for i in (1, 2, 3, 4, 6, 7))
+        loaded += R > 0
+    assert loaded > 0  # the impact is among the rows
+
+
 def test_axial_force_matches_the_wave_solution(s1):
     # d'Alembert: while in contact both rods carry the compressive force EA v0 / (2c) = 2 N
     # (E = 100, A = 0.4, v0 = 1, c = 10 m/s) behind the fronts that leave the contact at

@@ -82,8 +82,7 @@ int main(int argc, char** argv) {
                      {"bodies.A.elements=" + std::to_string(n), "bodies.B.elements=" + std::to_string(n),
                       "time.dt=\"auto\""}));
       t_scene = std::min(t_scene, seconds_since(t0));
-      const Clock::time_point t_setup = Clock::now();
-      t0 = t_setup;
+      t0 = Clock::now();
       const Effects fx = derive_effects(*s);
       m = std::make_unique<Model>(*s, fx.bending);
       t_model = std::min(t_model, seconds_since(t0));
@@ -93,7 +92,7 @@ int main(int argc, char** argv) {
       t0 = Clock::now();
       integ_ptr = std::make_unique<paper::ExplicitContactIntegrator>(*m, *s, fx, dt);
       t_integ = std::min(t_integ, seconds_since(t0));
-      if (round == 0) t_first = seconds_since(t_setup);
+      if (round == 0) t_first = t_model + t_crit + t_integ;  // the minima are the first times yet
     }
     paper::ExplicitContactIntegrator& integ = *integ_ptr;
     const double setup = t_model + t_crit + t_integ;

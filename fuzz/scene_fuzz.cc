@@ -20,7 +20,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const auto path = fuzz::write("scene.toml", toml);
   try {
     const Scene s = load_scene(path, overrides);
-    check_run_cost(s, s.time.dt ? *s.time.dt : estimate_auto_dt(s));
+    check_run_cost(s, planned_dt(s));
   } catch (const SceneError&) {
   }
   return 0;

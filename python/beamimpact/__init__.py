@@ -23,16 +23,23 @@ __all__ = ["SceneError", "Scene", "Run", "load_scene", "run", "read_run", "read_
 __version__ = _core.__version__
 
 
+def _plain(o):
+    """json.dumps' fallback: numpy scalars and arrays as the Python values they hold."""
+    if isinstance(o, (np.generic, np.ndarray)):
+        return o.tolist()
+    raise TypeError(f"{type(o).__name__} is not a scene value (numbers, strings, booleans, lists, dicts)")
+
+
 def _toml_value(v):
     """A --set value as TOML: shortest round-trip numbers, true/false, quoted strings."""
     if isinstance(v, (np.generic, np.ndarray)):
-        v = v.tolist()  # numpy scalars and arrays: the Python values they hold (a numpy repr is no TOML number)
+        v = _plain(v)  # a numpy repr is no TOML number
     if isinstance(v, bool):
         return "true" if v else "false"
     if isinstance(v, (int, float)):
         return repr(v)
     # Strings, and lists of numbers: JSON and TOML agree (numpy scalars inside a list as well).
-    return json.dumps(v, default=lambda o: o.tolist())
+    return json.dumps(v, default=_plain)
 
 
 class Scene:
@@ -53,7 +60,7 @@ class Scene:
     @classmethod
     def from_dict(cls, tables):
         """A scene from a dict of its TOML tables ({"name": ..., "time": {...}, "bodies": [...]})."""
-        return cls(json.dumps(tables), _is_dict=True)
+        return cls(json.dumps(tables, default=_plain), _is_dict=True)
 
     def with_set(self, settings):
         """This scene with more overrides ({"time.dt": 0.005} as --set time.dt=0.005)."""

@@ -85,6 +85,17 @@ def test_from_dict_runs_as_the_file_does():
     assert a.summary["scene_file"] == "<dict>"
 
 
+def test_from_dict_takes_numpy_values():
+    # A dict built with numpy (np.int64 is no JSON number) loads as the plain values it holds.
+    tables = tomllib.loads((PAPER / "s1_central.toml").read_text())
+    tables["bodies"][1]["elements"] = np.int64(20)
+    tables["time"]["dt"] = np.float64(0.005)
+    a = beamimpact.run(beamimpact.Scene.from_dict(tables), progress=False)
+    b = beamimpact.run(PAPER / "s1_central.toml", set={"bodies.B.elements": 20, "time.dt": 0.005}, progress=False)
+    for name in b.columns:
+        assert np.array_equal(a.columns[name], b.columns[name])
+
+
 def test_bad_scene_raises_the_cli_message(tmp_path):
     path = PAPER / "s1_central.toml"
     p = cli("run", path, "--out", tmp_path / "bad", "--set", "bodies.A.area=-0.4")

@@ -23,8 +23,9 @@
 namespace beamimpact::paper {
 
 /// @brief One run of the paper's integrator on a model. The state of step p is always complete:
-/// U^p, Vbar^p, the contact forces R^p, tau^p that act on U^{p+1}, and the physical V^p. The
-/// constructor leaves step 0 complete; each step() moves to the next complete step.
+/// U^p, Vbar^p and the contact forces R^p, tau^p that act on U^{p+1}; the physical V^p is formed
+/// from them on demand (V()). The constructor leaves step 0 complete; each step() moves to the
+/// next complete step.
 class ExplicitContactIntegrator {
  public:
   /// @brief Sets up step 0 (zero displacement, the scene's velocities) and solves its contacts.
@@ -38,7 +39,7 @@ class ExplicitContactIntegrator {
                             SurfaceInterpolation surface = SurfaceInterpolation::kLinear);
 
   /// @brief Moves from step p to p+1 with the forces of step p (Eq. 3-5), then solves the
-  /// contact forces of step p+1 and V^{p+1}. dissipated() then includes the contact work of p+1.
+  /// contact forces of step p+1. dissipated() then includes the contact work of p+1.
   void step() {
     if (fused_) {
       advance_fused();

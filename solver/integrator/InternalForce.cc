@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <beamimpact/util/spread_vector.hpp>
-
 namespace beamimpact::paper {
 namespace {
 
@@ -14,6 +12,18 @@ std::array<double, 3> section(const Model::Element& el, double u, double th1, do
   const double N = el.E * el.area / el.length * u;
   const double k = el.E * el.inertia / el.length;
   return {N, k * (4 * th1 + 2 * th2), k * (2 * th1 + 4 * th2)};
+}
+
+/// A vector with no special structure, the same on every machine, for the check of the blocks:
+/// n entries in [0.5, 1.5) from a linear congruential sequence (seed 12345), every one non-zero.
+Eigen::VectorXd spread_vector(int n) {
+  Eigen::VectorXd q(n);
+  unsigned s = 12345u;
+  for (int i = 0; i < n; ++i) {
+    s = s * 1103515245u + 12345u;
+    q(i) = 0.5 + static_cast<double>((s >> 8) & 0xffff) / 65536.0;
+  }
+  return q;
 }
 
 }  // namespace

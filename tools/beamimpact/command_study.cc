@@ -6,7 +6,6 @@
 #include <fmt/format.h>
 
 #include <beamimpact/study/run_study.hpp>
-#include <beamimpact/study/task_farm.hpp>
 #include <beamimpact/version.hpp>
 
 namespace beamimpact {

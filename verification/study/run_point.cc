@@ -1,7 +1,6 @@
 #include <beamimpact/study/run_point.hpp>
 
 #include <chrono>
-#include <cmath>
 
 #include <fmt/format.h>
 
@@ -43,9 +42,16 @@ std::optional<StoredRun> run_one(const Study& s, const std::vector<std::string>&
   return out;
 }
 
-nlohmann::json opt(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 std::optional<double> opt(const nlohmann::json& j) {
   return j.is_null() ? std::nullopt : std::optional<double>(j.get<double>());
+}
+
+/// A case of `method` with one empty norm cell per Study::norms (every row has them all).
+CaseResult blank_case(const Study& s, const std::string& method) {
+  CaseResult c;
+  c.method = method;
+  c.norms.assign(s.norms.size(), std::nullopt);
+  return c;
 }
 
 }  // namespace
@@ -58,8 +64,8 @@ PointResult run_point(const Study& s, const Point& p, std::size_t index, const f
   } catch (const std::exception& e) {
     pr.reference_message = e.what();
     for (const auto& m : s.methods) {
-      CaseResult c{m, "error", e.what(), 0, 0.0, {}, {}, 0.0};
-      c.norms.assign(s.norms.size(), std::nullopt);  // one cell per norm in every row
+      CaseResult c = blank_case(s, m);
+      c.message = e.what();
       pr.cases.push_back(std::move(c));
     }
     return pr;
@@ -73,11 +79,9 @@ PointResult run_point(const Study& s, const Point& p, std::size_t index, const f
   pr.reference_message = ref.message;
   pr.reference_seconds = ref.seconds;
   for (const auto& m : s.methods) {
-    CaseResult c;
-    c.method = m;
+    CaseResult c = blank_case(s, m);
     const fs::path dir = runs_dir / fmt::format("{}.{}", index, m);
     const std::optional<StoredRun> run = run_one(s, set, m, dir, c);
-    c.norms.assign(s.norms.size(), std::nullopt);
     if (run) {
       const verification::Comparison health = verification::check_run(*run);
       if (const auto* g = health.find("energy_growth")) c.energy_growth = g->value;
@@ -124,9 +128,9 @@ nlohmann::json PointResult::to_json() const {
   nlohmann::json cs = nlohmann::json::array();
   for (const auto& c : cases) {
     nlohmann::json n = nlohmann::json::array();
-    for (const auto& v : c.norms) n.push_back(opt(v));
+    for (const auto& v : c.norms) n.push_back(json_or_null(v));
     cs.push_back({{"method", c.method}, {"status", c.status}, {"message", c.message}, {"steps", c.steps},
-                  {"dt", c.dt}, {"norms", n}, {"energy_growth", opt(c.energy_growth)}, {"seconds", c.seconds}});
+                  {"dt", c.dt}, {"norms", n}, {"energy_growth", json_or_null(c.energy_growth)}, {"seconds", c.seconds}});
   }
   return {{"reference_status", reference_status},
           {"reference_message", reference_message},

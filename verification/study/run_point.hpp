@@ -31,6 +31,11 @@ struct CaseResult {
   double seconds = 0.0;                            ///< s, wall time of this run (timing field)
 };
 
+/// @brief A value that may be missing as JSON: the number, or null.
+inline nlohmann::json json_or_null(const std::optional<double>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+
 /// @brief Everything one point produced.
 struct PointResult {
   std::string reference_status = "error", reference_message;
@@ -52,8 +57,9 @@ struct PointResult {
 /// @param runs_dir where the run directories go
 PointResult run_point(const Study& s, const Point& p, std::size_t index, const std::filesystem::path& runs_dir);
 
-/// @brief Work estimate of a point for scheduling (longest first): steps x degrees of freedom,
-/// summed over the reference and the methods. 0 when the scene cannot be loaded.
+/// @brief Work estimate of a point for scheduling (longest first): estimate_run_cost()'s work
+/// (max(steps, wave steps) x degrees of freedom), summed over the reference and the methods. 0
+/// when the scene cannot be loaded.
 /// @param s the study
 /// @param p the point
 double point_cost(const Study& s, const Point& p);

@@ -37,8 +37,8 @@ std::optional<double> metric(const Study& s, const CaseResult& c, const std::str
   return c.norms[static_cast<std::size_t>(it - s.norms.begin())];
 }
 
-}  // namespace
-
+/// True when the case counts as a breakdown of the method: not "ok", or the study's metric of
+/// one of its `breaks` rules above that rule's bound.
 bool broke(const Study& s, const CaseResult& c) {
   if (c.status != "ok") return c.status != "no_reference";
   for (const auto& rule : s.breaks) {
@@ -47,6 +47,8 @@ bool broke(const Study& s, const CaseResult& c) {
   }
   return false;
 }
+
+}  // namespace
 
 std::optional<StudyResult> execute_study(const Study& s, const fs::path& out) {
   const auto start = std::chrono::steady_clock::now();
@@ -124,7 +126,7 @@ StudyCounts write_study(const Study& s, const StudyResult& r, const fs::path& ou
       timing += fmt::format("{},{},{},{:.4f},{:.4f}\n", i, c.method, pr.rank, c.seconds, pr.reference_seconds);
       nlohmann::json norms = nlohmann::json::object();
       for (std::size_t k = 0; k < s.norms.size(); ++k)
-        norms[s.norms[k]] = c.norms[k] ? nlohmann::json(*c.norms[k]) : nlohmann::json(nullptr);
+        norms[s.norms[k]] = json_or_null(c.norms[k]);
       nlohmann::json values = nlohmann::json::object();
       for (std::size_t k = 0; k < s.parameters.size(); ++k) values[s.parameters[k].name] = pt.values[k];
       cases.push_back({{"index", i},
@@ -135,7 +137,7 @@ StudyCounts write_study(const Study& s, const StudyResult& r, const fs::path& ou
                        {"steps", c.steps},
                        {"dt", c.dt},
                        {"norms", norms},
-                       {"energy_growth", c.energy_growth ? nlohmann::json(*c.energy_growth) : nlohmann::json(nullptr)},
+                       {"energy_growth", json_or_null(c.energy_growth)},
                        {"reference_status", pr.reference_status},
                        {"broke", b}});
       if (b) {

@@ -30,12 +30,6 @@ struct StudyResult {
 /// @param out the output directory (runs go to out/runs while they are compared)
 std::optional<StudyResult> execute_study(const Study& s, const std::filesystem::path& out);
 
-/// @brief True when the case counts as a breakdown of the method: not "ok", or the study's
-/// metric of one of its `breaks` rules above that rule's bound.
-/// @param s the study (its rules)
-/// @param c the case
-bool broke(const Study& s, const CaseResult& c);
-
 /// @brief What the written tables count.
 struct StudyCounts {
   std::size_t cases = 0;   ///< points x methods

@@ -1,12 +1,12 @@
-#include <beamimpact/api/registry.hpp>
-#include <beamimpact/api/run.hpp>
+#include <api/registry.hpp>
+#include <api/run.hpp>
 
 #include <filesystem>
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact {
 namespace {

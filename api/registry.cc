@@ -1,12 +1,12 @@
-#include <beamimpact/api/registry.hpp>
+#include <api/registry.hpp>
 
-#include <beamimpact/paper/solve.hpp>
-#include <beamimpact/scene/SceneError.hpp>
+#include <solver/paper/solve.hpp>
+#include <solver/scene/SceneError.hpp>
 #ifdef BEAMIMPACT_HAVE_exact
-#include <beamimpact/exact/solve.hpp>
+#include <references/exact/solve.hpp>
 #endif
 #ifdef BEAMIMPACT_HAVE_ida
-#include <beamimpact/ida/solve.hpp>
+#include <references/ida/solve.hpp>
 #endif
 
 namespace beamimpact {

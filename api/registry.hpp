@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include <beamimpact/record/SimulationResult.hpp>
+#include <solver/record/SimulationResult.hpp>
 
 namespace beamimpact {
 

@@ -1,11 +1,11 @@
-#include <beamimpact/api/run.hpp>
+#include <api/run.hpp>
 
-#include <beamimpact/api/registry.hpp>
-#include <beamimpact/record/FieldWriter.hpp>
-#include <beamimpact/record/output_files.hpp>
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/scene/run_cost.hpp>
-#include <beamimpact/scene/scene_io.hpp>
+#include <api/registry.hpp>
+#include <solver/record/FieldWriter.hpp>
+#include <solver/record/output_files.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/scene/run_cost.hpp>
+#include <solver/scene/scene_io.hpp>
 
 namespace beamimpact {
 

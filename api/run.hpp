@@ -4,7 +4,7 @@
 /// write its run directory. What `beamimpact run` does, for programs that link beamimpact.
 ///
 /// @code
-///   #include <beamimpact/api/run.hpp>
+///   #include <api/run.hpp>
 ///   const beamimpact::SimulationResult r = beamimpact::run("s1_central.toml", "paper");
 ///   std::printf("impulse %g N s\n", r.contacts[0].impulse_normal);
 /// @endcode
@@ -15,7 +15,7 @@
 #include <string_view>
 #include <vector>
 
-#include <beamimpact/record/SimulationResult.hpp>
+#include <solver/record/SimulationResult.hpp>
 
 namespace beamimpact {
 

@@ -26,9 +26,9 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include <beamimpact/integrator/ExplicitContactIntegrator.hpp>
-#include <beamimpact/model/critical_dt.hpp>
-#include <beamimpact/scene/scene_io.hpp>
+#include <solver/integrator/ExplicitContactIntegrator.hpp>
+#include <solver/model/critical_dt.hpp>
+#include <solver/scene/scene_io.hpp>
 
 #include "step_kernel.hpp"
 

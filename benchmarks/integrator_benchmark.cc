@@ -3,9 +3,9 @@
 // (O(n) per step), consistent mass costs a sparse solve, friction and corotation cost little.
 #include <benchmark/benchmark.h>
 
-#include <beamimpact/integrator/ExplicitContactIntegrator.hpp>
-#include <beamimpact/model/critical_dt.hpp>
-#include <beamimpact/scene/scene_io.hpp>
+#include <solver/integrator/ExplicitContactIntegrator.hpp>
+#include <solver/model/critical_dt.hpp>
+#include <solver/scene/scene_io.hpp>
 
 namespace {
 

@@ -20,9 +20,9 @@
 
 #include "step_kernel.hpp"
 
-#include <beamimpact/integrator/ExplicitContactIntegrator.hpp>
-#include <beamimpact/model/critical_dt.hpp>
-#include <beamimpact/scene/scene_io.hpp>
+#include <solver/integrator/ExplicitContactIntegrator.hpp>
+#include <solver/model/critical_dt.hpp>
+#include <solver/scene/scene_io.hpp>
 #include <beamimpact/version.hpp>
 
 namespace {

@@ -1,4 +1,4 @@
-# cmake --install: the libraries, the public headers under include/beamimpact/MODULE/, the
+# cmake --install: the libraries, the public headers under include/beamimpact/ at their repository paths, the
 # `beamimpact` program, the shipped scenes and matrix, the FEniCSx script, and a CMake package
 # so that another project writes find_package(beamimpact) and links beamimpact::beamimpact.
 include(CMakePackageConfigHelpers)
@@ -12,10 +12,9 @@ add_library(beamimpact::beamimpact ALIAS beamimpact_all)
 install(TARGETS beamimpact_headers ${_libraries} beamimpact_all EXPORT beamimpactTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS beamimpact RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-foreach(_module IN LISTS BEAMIMPACT_MODULES)
-  if(NOT _module STREQUAL "testing")
-    install(DIRECTORY ${PROJECT_SOURCE_DIR}/${BEAMIMPACT_MODULE_DIR_${_module}}/
-      DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/beamimpact/${_module}
+foreach(_dir IN LISTS BEAMIMPACT_MODULE_DIRS)
+  if(NOT _dir STREQUAL "solver/testing")
+    install(DIRECTORY ${PROJECT_SOURCE_DIR}/${_dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/beamimpact/${_dir}
       FILES_MATCHING PATTERN "*.hpp" PATTERN "test_*" EXCLUDE PATTERN "tests" EXCLUDE)
   endif()
 endforeach()

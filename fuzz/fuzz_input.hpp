@@ -12,7 +12,7 @@
 
 #include <unistd.h>
 
-#include <beamimpact/util/ScratchDir.hpp>
+#include <solver/util/ScratchDir.hpp>
 
 namespace beamimpact::fuzz {
 

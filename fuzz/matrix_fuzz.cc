@@ -2,8 +2,8 @@
 // Input: a matrix file, written to SCRATCH/m/matrix.toml; SCRATCH/verification links to the
 // source tree's verification/, so the shipped matrix (root = "..") finds its scenes.
 // Contract: load() returns a matrix or throws SceneError. Anything else is a finding.
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/verification/matrix/VerificationMatrix.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <verification/matrix/VerificationMatrix.hpp>
 
 #include "fuzz_input.hpp"
 

@@ -2,8 +2,8 @@
 // Input: summary.json text, a line "#--history.csv", then history.csv text.
 // Contract: StoredRun::read returns a run or throws SceneError; a run read answers contacts()
 // and output_step(). Anything else is a finding.
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/verification/compare/StoredRun.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <verification/compare/StoredRun.hpp>
 
 #include "fuzz_input.hpp"
 

@@ -5,9 +5,9 @@
 #include <sstream>
 #include <vector>
 
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/scene/run_cost.hpp>
-#include <beamimpact/scene/scene_io.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/scene/run_cost.hpp>
+#include <solver/scene/scene_io.hpp>
 
 #include "fuzz_input.hpp"
 

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <exception>
 
-#include <beamimpact/api/run.hpp>
+#include <api/run.hpp>
 
 int main(int argc, char** argv) {
   if (argc < 2) {

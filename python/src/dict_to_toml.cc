@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <toml++/toml.h>
 
-#include <beamimpact/scene/SceneError.hpp>
+#include <solver/scene/SceneError.hpp>
 
 namespace beamimpact::python {
 namespace {

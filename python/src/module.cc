@@ -9,15 +9,15 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include <beamimpact/api/registry.hpp>
-#include <beamimpact/api/run.hpp>
-#include <beamimpact/record/output_files.hpp>
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/scene/scene_io.hpp>
-#include <beamimpact/schema/output_schema.hpp>
-#include <beamimpact/util/Progress.hpp>
-#include <beamimpact/verification/compare/compare_runs.hpp>
-#include <beamimpact/verification/matrix/sweep.hpp>
+#include <api/registry.hpp>
+#include <api/run.hpp>
+#include <solver/record/output_files.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/scene/scene_io.hpp>
+#include <solver/schema/output_schema.hpp>
+#include <solver/util/Progress.hpp>
+#include <verification/compare/compare_runs.hpp>
+#include <verification/matrix/sweep.hpp>
 #include <beamimpact/version.hpp>
 
 #include "dict_to_toml.hpp"

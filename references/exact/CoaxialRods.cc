@@ -1,4 +1,4 @@
-#include <beamimpact/exact/CoaxialRods.hpp>
+#include <references/exact/CoaxialRods.hpp>
 
 #include <algorithm>
 #include <cmath>

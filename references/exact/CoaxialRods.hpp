@@ -6,7 +6,7 @@
 #include <array>
 #include <vector>
 
-#include <beamimpact/exact/Rod.hpp>
+#include <references/exact/Rod.hpp>
 
 namespace beamimpact::exact {
 

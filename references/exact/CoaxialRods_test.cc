@@ -1,5 +1,5 @@
 // Tests of the exact coaxial-rod solution against the closed forms of references.md section 1.
-#include <beamimpact/exact/CoaxialRods.hpp>
+#include <references/exact/CoaxialRods.hpp>
 
 #include <cmath>
 

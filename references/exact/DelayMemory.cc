@@ -1,4 +1,4 @@
-#include <beamimpact/exact/DelayMemory.hpp>
+#include <references/exact/DelayMemory.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // The reflection memory's interpolation against functions known in closed form.
-#include <beamimpact/exact/DelayMemory.hpp>
+#include <references/exact/DelayMemory.hpp>
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include <beamimpact/exact/RigidRodImpact.hpp>
+#include <references/exact/RigidRodImpact.hpp>
 
 #include <cmath>
 

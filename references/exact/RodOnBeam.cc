@@ -1,5 +1,5 @@
-#include <beamimpact/exact/RodOnBeam.hpp>
-#include <beamimpact/exact/output_times.hpp>
+#include <references/exact/RodOnBeam.hpp>
+#include <references/exact/output_times.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@
 #include <gsl/gsl_odeiv2.h>
 
 #include <gsl/gsl_roots.h>
-#include <beamimpact/util/Progress.hpp>
+#include <solver/util/Progress.hpp>
 
 namespace beamimpact::exact {
 namespace {

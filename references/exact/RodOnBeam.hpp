@@ -8,10 +8,10 @@
 #include <array>
 #include <vector>
 
-#include <beamimpact/exact/CoaxialRods.hpp>
-#include <beamimpact/exact/DelayMemory.hpp>
-#include <beamimpact/exact/Rod.hpp>
-#include <beamimpact/exact/SimpleBeam.hpp>
+#include <references/exact/CoaxialRods.hpp>
+#include <references/exact/DelayMemory.hpp>
+#include <references/exact/Rod.hpp>
+#include <references/exact/SimpleBeam.hpp>
 
 namespace beamimpact::exact {
 

@@ -1,13 +1,13 @@
 // The semi-analytic rod-on-beam solution against theory (references.md section 2): the
 // contact force at first touch, the infinite-beam erfcx asymptotic, the rigid-wall limit,
 // momentum and energy balances, and convergence with the number of modes.
-#include <beamimpact/exact/RodOnBeam.hpp>
+#include <references/exact/RodOnBeam.hpp>
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/exact/erfcx.hpp>
+#include <references/exact/erfcx.hpp>
 
 namespace beamimpact::exact {
 namespace {

@@ -1,4 +1,4 @@
-#include <beamimpact/exact/erfcx.hpp>
+#include <references/exact/erfcx.hpp>
 
 #include <cmath>
 #include <numbers>

@@ -1,5 +1,5 @@
 // erfcx from GSL's hazard function against independent evaluations.
-#include <beamimpact/exact/erfcx.hpp>
+#include <references/exact/erfcx.hpp>
 
 #include <cmath>
 #include <numbers>

@@ -1,4 +1,4 @@
-#include <beamimpact/exact/output_times.hpp>
+#include <references/exact/output_times.hpp>
 
 #include <algorithm>
 

@@ -1,10 +1,10 @@
-#include <beamimpact/exact/recognise_scene.hpp>
+#include <references/exact/recognise_scene.hpp>
 
 #include <cmath>
 
 #include <fmt/format.h>
 
-#include <beamimpact/scene/SceneError.hpp>
+#include <solver/scene/SceneError.hpp>
 
 namespace beamimpact::exact {
 namespace {

@@ -5,10 +5,10 @@
 
 #include <string>
 
-#include <beamimpact/exact/Rod.hpp>
-#include <beamimpact/exact/SimpleBeam.hpp>
-#include <beamimpact/scene/Scene.hpp>
-#include <beamimpact/schema/output_schema.hpp>
+#include <references/exact/Rod.hpp>
+#include <references/exact/SimpleBeam.hpp>
+#include <solver/scene/Scene.hpp>
+#include <solver/schema/output_schema.hpp>
 
 namespace beamimpact::exact {
 

@@ -1,11 +1,11 @@
 // Scene recognition: what the exact method accepts, and the condition named when it refuses.
-#include <beamimpact/exact/recognise_scene.hpp>
+#include <references/exact/recognise_scene.hpp>
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/scene/scene_io.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/scene/scene_io.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact::exact {
 namespace {

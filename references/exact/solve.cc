@@ -1,17 +1,17 @@
-#include <beamimpact/exact/solve.hpp>
+#include <references/exact/solve.hpp>
 
 #include <cmath>
 
 #include <fmt/format.h>
 
-#include <beamimpact/exact/CoaxialRods.hpp>
-#include <beamimpact/exact/RigidRodImpact.hpp>
-#include <beamimpact/exact/RodOnBeam.hpp>
-#include <beamimpact/exact/output_times.hpp>
-#include <beamimpact/exact/recognise_scene.hpp>
-#include <beamimpact/record/ResultRecorder.hpp>
-#include <beamimpact/scene/TableReader.hpp>
-#include <beamimpact/scene/run_cost.hpp>
+#include <references/exact/CoaxialRods.hpp>
+#include <references/exact/RigidRodImpact.hpp>
+#include <references/exact/RodOnBeam.hpp>
+#include <references/exact/output_times.hpp>
+#include <references/exact/recognise_scene.hpp>
+#include <solver/record/ResultRecorder.hpp>
+#include <solver/scene/TableReader.hpp>
+#include <solver/scene/run_cost.hpp>
 
 namespace beamimpact::exact {
 namespace {

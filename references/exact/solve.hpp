@@ -4,7 +4,7 @@
 /// ours can bias (references.md sections 1-2): free coaxial rods (d'Alembert, exact) and a rod
 /// end-on onto a simply supported Euler-Bernoulli beam (exact rod waves + converged modal sum).
 
-#include <beamimpact/record/SimulationResult.hpp>
+#include <solver/record/SimulationResult.hpp>
 
 namespace beamimpact::exact {
 

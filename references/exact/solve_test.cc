@@ -1,14 +1,14 @@
 // exact::solve end to end on the paper's scenes: S1 against the closed form, S2 against the
 // balances and contact invariants, and the [exact] table's checks.
-#include <beamimpact/exact/solve.hpp>
+#include <references/exact/solve.hpp>
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/scene/scene_io.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/scene/scene_io.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact {
 namespace {

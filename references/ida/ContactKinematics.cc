@@ -1,9 +1,9 @@
-#include <beamimpact/ida/ContactKinematics.hpp>
+#include <references/ida/ContactKinematics.hpp>
 
 #include <algorithm>
 #include <cmath>
 
-#include <beamimpact/scene/SceneError.hpp>
+#include <solver/scene/SceneError.hpp>
 
 namespace beamimpact::ida {
 namespace {

@@ -11,8 +11,8 @@
 
 #include <Eigen/Dense>
 
-#include <beamimpact/model/Model.hpp>
-#include <beamimpact/schema/output_schema.hpp>
+#include <solver/model/Model.hpp>
+#include <solver/schema/output_schema.hpp>
 
 namespace beamimpact::ida {
 

@@ -1,4 +1,4 @@
-#include <beamimpact/ida/PenaltyIda.hpp>
+#include <references/ida/PenaltyIda.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -16,9 +16,9 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
-#include <beamimpact/ida/ContactKinematics.hpp>
-#include <beamimpact/ida/penalty_law.hpp>
-#include <beamimpact/model/Model.hpp>
+#include <references/ida/ContactKinematics.hpp>
+#include <references/ida/penalty_law.hpp>
+#include <solver/model/Model.hpp>
 
 namespace beamimpact::ida {
 

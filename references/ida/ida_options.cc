@@ -1,6 +1,6 @@
-#include <beamimpact/ida/ida_options.hpp>
+#include <references/ida/ida_options.hpp>
 
-#include <beamimpact/scene/TableReader.hpp>
+#include <solver/scene/TableReader.hpp>
 
 namespace beamimpact::ida {
 

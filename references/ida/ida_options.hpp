@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include <beamimpact/scene/Scene.hpp>
+#include <solver/scene/Scene.hpp>
 
 namespace beamimpact::ida {
 

@@ -16,9 +16,9 @@
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/ida/solve.hpp>
-#include <beamimpact/paper/solve.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <references/ida/solve.hpp>
+#include <solver/paper/solve.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact::ida {
 namespace {

@@ -1,4 +1,4 @@
-#include <beamimpact/ida/penalty_law.hpp>
+#include <references/ida/penalty_law.hpp>
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include <beamimpact/ida/solve.hpp>
+#include <references/ida/solve.hpp>
 
 #include <cmath>
 #include <memory>
@@ -6,18 +6,18 @@
 
 #include <fmt/format.h>
 
-#include <beamimpact/ida/ContactKinematics.hpp>
-#include <beamimpact/ida/PenaltyIda.hpp>
-#include <beamimpact/ida/ida_options.hpp>
-#include <beamimpact/model/Effects.hpp>
-#include <beamimpact/model/MassSolver.hpp>
-#include <beamimpact/model/Model.hpp>
-#include <beamimpact/model/critical_dt.hpp>
-#include <beamimpact/model/deformed_geometry.hpp>
-#include <beamimpact/record/ResultRecorder.hpp>
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/scene/run_cost.hpp>
-#include <beamimpact/util/Progress.hpp>
+#include <references/ida/ContactKinematics.hpp>
+#include <references/ida/PenaltyIda.hpp>
+#include <references/ida/ida_options.hpp>
+#include <solver/model/Effects.hpp>
+#include <solver/model/MassSolver.hpp>
+#include <solver/model/Model.hpp>
+#include <solver/model/critical_dt.hpp>
+#include <solver/model/deformed_geometry.hpp>
+#include <solver/record/ResultRecorder.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/scene/run_cost.hpp>
+#include <solver/util/Progress.hpp>
 
 namespace beamimpact::ida {
 namespace {

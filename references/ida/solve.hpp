@@ -4,7 +4,7 @@
 /// (solver/model) as the paper's integrator, with its own contact geometry and time integration
 /// (variable-order BDF, events located by root finding).
 
-#include <beamimpact/record/SimulationResult.hpp>
+#include <solver/record/SimulationResult.hpp>
 
 namespace beamimpact::ida {
 

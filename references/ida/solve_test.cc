@@ -1,13 +1,13 @@
-#include <beamimpact/ida/solve.hpp>
+#include <references/ida/solve.hpp>
 
 #include <cmath>
 #include <cstdio>
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/record/output_files.hpp>
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/record/output_files.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact::ida {
 namespace {

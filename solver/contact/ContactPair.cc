@@ -1,9 +1,9 @@
-#include <beamimpact/contact/ContactPair.hpp>
+#include <solver/contact/ContactPair.hpp>
 
 #include <algorithm>
 #include <cmath>
 
-#include <beamimpact/scene/SceneError.hpp>
+#include <solver/scene/SceneError.hpp>
 
 namespace beamimpact::paper {
 namespace {

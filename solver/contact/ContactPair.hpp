@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include <beamimpact/model/Model.hpp>
-#include <beamimpact/schema/output_schema.hpp>
+#include <solver/model/Model.hpp>
+#include <solver/schema/output_schema.hpp>
 
 namespace beamimpact::paper {
 

@@ -1,4 +1,4 @@
-#include <beamimpact/contact/ContactSolver.hpp>
+#include <solver/contact/ContactSolver.hpp>
 
 #include <cmath>
 #include <limits>

@@ -10,9 +10,9 @@
 #include <functional>
 #include <vector>
 
-#include <beamimpact/contact/ContactPair.hpp>
-#include <beamimpact/contact/contact_search.hpp>
-#include <beamimpact/schema/output_schema.hpp>
+#include <solver/contact/ContactPair.hpp>
+#include <solver/contact/contact_search.hpp>
+#include <solver/schema/output_schema.hpp>
 
 namespace beamimpact::paper {
 

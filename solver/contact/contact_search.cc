@@ -1,4 +1,4 @@
-#include <beamimpact/contact/contact_search.hpp>
+#include <solver/contact/contact_search.hpp>
 
 #include <algorithm>
 #include <cmath>

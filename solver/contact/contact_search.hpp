@@ -12,7 +12,7 @@
 
 #include <Eigen/Core>
 
-#include <beamimpact/contact/ContactPair.hpp>
+#include <solver/contact/ContactPair.hpp>
 
 namespace beamimpact::paper {
 

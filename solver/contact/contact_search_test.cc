@@ -2,19 +2,19 @@
 // evidence is geometric: the real gap of EVERY striker node against the target's deformed
 // centreline (model/deformed_geometry: chord + the beam cubic from U), measured here from U after
 // each step, never the solver's own gap.
-#include <beamimpact/contact/contact_search.hpp>
+#include <solver/contact/contact_search.hpp>
 
 #include <algorithm>
 #include <cstdio>
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/integrator/ExplicitContactIntegrator.hpp>
-#include <beamimpact/model/deformed_geometry.hpp>
-#include <beamimpact/paper/solve.hpp>
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/scene/scene_io.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/integrator/ExplicitContactIntegrator.hpp>
+#include <solver/model/deformed_geometry.hpp>
+#include <solver/paper/solve.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/scene/scene_io.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact::paper {
 namespace {

@@ -1,6 +1,6 @@
-#include <beamimpact/integrator/CorotationalMass.hpp>
+#include <solver/integrator/CorotationalMass.hpp>
 
-#include <beamimpact/model/frame_element.hpp>
+#include <solver/model/frame_element.hpp>
 
 namespace beamimpact::paper {
 

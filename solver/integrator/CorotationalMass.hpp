@@ -5,7 +5,7 @@
 /// sparsity pattern. Only the corotational elements are recomputed; a lumped mass never needs this
 /// (it is the same in every frame).
 
-#include <beamimpact/integrator/InternalForce.hpp>
+#include <solver/integrator/InternalForce.hpp>
 
 namespace beamimpact::paper {
 

@@ -1,12 +1,12 @@
 // M_A(t) of a rotating body against an independent construction: the mass of a model whose body
 // is drawn already rotated.
-#include <beamimpact/integrator/CorotationalMass.hpp>
+#include <solver/integrator/CorotationalMass.hpp>
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact::paper {
 namespace {

@@ -1,4 +1,4 @@
-#include <beamimpact/integrator/ExplicitContactIntegrator.hpp>
+#include <solver/integrator/ExplicitContactIntegrator.hpp>
 
 #include <algorithm>
 

@@ -14,11 +14,11 @@
 
 #include <memory>
 
-#include <beamimpact/contact/ContactSolver.hpp>
-#include <beamimpact/integrator/CorotationalMass.hpp>
-#include <beamimpact/integrator/InternalForce.hpp>
-#include <beamimpact/model/Effects.hpp>
-#include <beamimpact/model/MassSolver.hpp>
+#include <solver/contact/ContactSolver.hpp>
+#include <solver/integrator/CorotationalMass.hpp>
+#include <solver/integrator/InternalForce.hpp>
+#include <solver/model/Effects.hpp>
+#include <solver/model/MassSolver.hpp>
 
 namespace beamimpact::paper {
 

@@ -1,15 +1,15 @@
 // The paper's integrator against theory: the exact wave solution of S1 (shared/spec/references.md
 // section 1), the discrete facts of section 4, and the paper's Eq. 20.
-#include <beamimpact/integrator/ExplicitContactIntegrator.hpp>
+#include <solver/integrator/ExplicitContactIntegrator.hpp>
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 #include <Eigen/Dense>
 
-#include <beamimpact/paper/solve.hpp>
-#include <beamimpact/scene/scene_io.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/paper/solve.hpp>
+#include <solver/scene/scene_io.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact::paper {
 namespace {

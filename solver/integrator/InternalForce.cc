@@ -1,4 +1,4 @@
-#include <beamimpact/integrator/InternalForce.hpp>
+#include <solver/integrator/InternalForce.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -9,7 +9,7 @@
 #include <array>
 #include <vector>
 
-#include <beamimpact/model/Model.hpp>
+#include <solver/model/Model.hpp>
 
 namespace beamimpact::paper {
 
@@ -94,4 +94,4 @@ class InternalForce {
 
 }  // namespace beamimpact::paper
 
-#include <beamimpact/integrator/InternalForce_impl.hpp>
+#include <solver/integrator/InternalForce_impl.hpp>

@@ -3,7 +3,7 @@
 /// @brief The element-block product of InternalForce, templated on the caller's per-equation
 /// work (InternalForce::apply_streamed). Included by InternalForce.hpp; not for direct use.
 
-#include <beamimpact/integrator/InternalForce.hpp>
+#include <solver/integrator/InternalForce.hpp>
 
 namespace beamimpact::paper {
 

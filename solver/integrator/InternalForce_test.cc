@@ -1,12 +1,12 @@
 // The corotational element against the linear one (small motion) and against rigid motion (large).
-#include <beamimpact/integrator/InternalForce.hpp>
+#include <solver/integrator/InternalForce.hpp>
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/scene/scene_io.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/scene/scene_io.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact::paper {
 namespace {

@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/integrator/ExplicitContactIntegrator.hpp>
-#include <beamimpact/scene/scene_io.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/integrator/ExplicitContactIntegrator.hpp>
+#include <solver/scene/scene_io.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace {
 std::atomic<bool> counting{false};

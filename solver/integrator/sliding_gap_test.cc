@@ -13,10 +13,10 @@
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/integrator/ExplicitContactIntegrator.hpp>
-#include <beamimpact/model/critical_dt.hpp>
-#include <beamimpact/scene/scene_io.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/integrator/ExplicitContactIntegrator.hpp>
+#include <solver/model/critical_dt.hpp>
+#include <solver/scene/scene_io.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact::paper {
 namespace {

@@ -1,8 +1,8 @@
-#include <beamimpact/model/Effects.hpp>
+#include <solver/model/Effects.hpp>
 
 #include <set>
 
-#include <beamimpact/scene/collinear.hpp>
+#include <solver/scene/collinear.hpp>
 
 namespace beamimpact {
 

@@ -1,4 +1,4 @@
-#include <beamimpact/model/MassSolver.hpp>
+#include <solver/model/MassSolver.hpp>
 
 #include <stdexcept>
 

@@ -7,7 +7,7 @@
 
 #include <Eigen/SparseCholesky>
 
-#include <beamimpact/model/Model.hpp>
+#include <solver/model/Model.hpp>
 
 namespace beamimpact {
 

@@ -1,12 +1,12 @@
-#include <beamimpact/model/Model.hpp>
+#include <solver/model/Model.hpp>
 
 #include <cmath>
 #include <cstddef>
 #include <vector>
 
-#include <beamimpact/model/frame_element.hpp>
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/scene/collinear.hpp>
+#include <solver/model/frame_element.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/scene/collinear.hpp>
 
 namespace beamimpact {
 namespace {

@@ -15,7 +15,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
-#include <beamimpact/scene/Scene.hpp>
+#include <solver/scene/Scene.hpp>
 
 namespace beamimpact {
 

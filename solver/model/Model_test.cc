@@ -1,14 +1,14 @@
 // The assembled model against beam and rod theory: natural frequencies converge to the exact
 // ones at the order the discretisation predicts.
-#include <beamimpact/model/Model.hpp>
+#include <solver/model/Model.hpp>
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 #include <Eigen/Eigenvalues>
 
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact {
 namespace {

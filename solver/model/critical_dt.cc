@@ -1,4 +1,4 @@
-#include <beamimpact/model/critical_dt.hpp>
+#include <solver/model/critical_dt.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include <Eigen/Eigenvalues>
 
-#include <beamimpact/model/top_eigenvalue.hpp>
+#include <solver/model/top_eigenvalue.hpp>
 
 namespace beamimpact {
 namespace {

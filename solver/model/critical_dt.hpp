@@ -20,7 +20,7 @@
 /// a Rayleigh quotient of the model's (Cauchy's interlacing). omega_max lies in
 /// [omega_lower, omega_max bound].
 
-#include <beamimpact/model/Model.hpp>
+#include <solver/model/Model.hpp>
 
 namespace beamimpact {
 

@@ -12,14 +12,14 @@
 //    bound), and the uniform rotation (theta = 1, u = v = 0) has the Rayleigh quotient
 //    12 EI/h / (m h^2/39) = 468 c^2 r^2/h^4, a lower bound. So the true limit lies in
 //    [2 h^2/(sqrt(516) c r), 2 h^2/(sqrt(468) c r)] and a safe reported step is at most the right end.
-#include <beamimpact/model/critical_dt.hpp>
+#include <solver/model/critical_dt.hpp>
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/scene/scene_io.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/scene/scene_io.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact {
 namespace {

@@ -1,13 +1,13 @@
 // The critical step from the element and subdomain bounds, against closed forms and a dense solve.
-#include <beamimpact/model/critical_dt.hpp>
+#include <solver/model/critical_dt.hpp>
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 #include <Eigen/Eigenvalues>
 
-#include <beamimpact/scene/scene_io.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/scene/scene_io.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact {
 namespace {

@@ -1,4 +1,4 @@
-#include <beamimpact/model/deformed_geometry.hpp>
+#include <solver/model/deformed_geometry.hpp>
 
 #include <algorithm>
 #include <cmath>

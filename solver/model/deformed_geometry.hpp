@@ -10,7 +10,7 @@
 
 #include <Eigen/Core>
 
-#include <beamimpact/model/Model.hpp>
+#include <solver/model/Model.hpp>
 
 namespace beamimpact {
 

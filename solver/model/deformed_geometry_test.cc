@@ -1,13 +1,13 @@
 // The real gap's geometry against closed forms: a straight beam, a rigid rotation (exact), a
 // circular arc of constant curvature (the beam cubic's error is O(kappa^2 le^3)), an end-on rod.
-#include <beamimpact/model/deformed_geometry.hpp>
+#include <solver/model/deformed_geometry.hpp>
 
 #include <cmath>
 #include <numbers>
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact {
 namespace {

@@ -1,4 +1,4 @@
-#include <beamimpact/model/frame_element.hpp>
+#include <solver/model/frame_element.hpp>
 
 namespace beamimpact {
 

@@ -6,7 +6,7 @@
 
 #include <Eigen/Dense>
 
-#include <beamimpact/scene/Scene.hpp>
+#include <solver/scene/Scene.hpp>
 
 namespace beamimpact {
 

@@ -1,5 +1,5 @@
 // Element matrices checked against mechanics: rigid-body modes carry no force, mass totals.
-#include <beamimpact/model/frame_element.hpp>
+#include <solver/model/frame_element.hpp>
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include <beamimpact/model/top_eigenvalue.hpp>
+#include <solver/model/top_eigenvalue.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // The largest eigenvalue of banded pencils by inertia and Laguerre's iteration, against Eigen's
 // dense generalized solver.
-#include <beamimpact/model/top_eigenvalue.hpp>
+#include <solver/model/top_eigenvalue.hpp>
 
 #include <random>
 

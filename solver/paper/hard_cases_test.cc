@@ -1,17 +1,17 @@
 // Hard cases of the paper's integrator (issue 12), each checked against the deformed geometry
 // (node positions + displacements from the history rows), never against the solver's own gap.
-#include <beamimpact/paper/solve.hpp>
+#include <solver/paper/solve.hpp>
 
 #include <cmath>
 #include <cstdio>
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/integrator/ExplicitContactIntegrator.hpp>
-#include <beamimpact/model/critical_dt.hpp>
-#include <beamimpact/model/deformed_geometry.hpp>
-#include <beamimpact/scene/scene_io.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/integrator/ExplicitContactIntegrator.hpp>
+#include <solver/model/critical_dt.hpp>
+#include <solver/model/deformed_geometry.hpp>
+#include <solver/scene/scene_io.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact::paper {
 namespace {

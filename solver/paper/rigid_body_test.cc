@@ -1,15 +1,15 @@
 // Rigid bodies (issue 11): a rigid rod falling without spin onto an immovable rigid surface with
 // Coulomb friction, against the closed form of references.md section 3 (restitution 0).
-#include <beamimpact/paper/solve.hpp>
+#include <solver/paper/solve.hpp>
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/model/Model.hpp>
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/scene/scene_io.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/model/Model.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/scene/scene_io.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact::paper {
 namespace {

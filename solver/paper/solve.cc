@@ -1,4 +1,4 @@
-#include <beamimpact/paper/solve.hpp>
+#include <solver/paper/solve.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -6,16 +6,16 @@
 
 #include <fmt/format.h>
 
-#include <beamimpact/integrator/ExplicitContactIntegrator.hpp>
-#include <beamimpact/model/critical_dt.hpp>
-#include <beamimpact/model/deformed_geometry.hpp>
-#include <beamimpact/record/FieldWriter.hpp>
-#include <beamimpact/record/ResultRecorder.hpp>
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/scene/TableReader.hpp>
-#include <beamimpact/scene/run_cost.hpp>
-#include <beamimpact/schema/output_schema.hpp>
-#include <beamimpact/util/Progress.hpp>
+#include <solver/integrator/ExplicitContactIntegrator.hpp>
+#include <solver/model/critical_dt.hpp>
+#include <solver/model/deformed_geometry.hpp>
+#include <solver/record/FieldWriter.hpp>
+#include <solver/record/ResultRecorder.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/scene/TableReader.hpp>
+#include <solver/scene/run_cost.hpp>
+#include <solver/schema/output_schema.hpp>
+#include <solver/util/Progress.hpp>
 
 namespace beamimpact::paper {
 namespace {

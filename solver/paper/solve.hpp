@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <string>
 
-#include <beamimpact/contact/ContactPair.hpp>
-#include <beamimpact/contact/ContactSolver.hpp>
-#include <beamimpact/record/SimulationResult.hpp>
+#include <solver/contact/ContactPair.hpp>
+#include <solver/contact/ContactSolver.hpp>
+#include <solver/record/SimulationResult.hpp>
 
 namespace beamimpact::paper {
 

@@ -1,14 +1,14 @@
 // The oblique collision (issue 3): Coulomb friction with stick and slip, the sliding contact
 // point, the rotating striker, and that a scene runs only the effects it calls for.
-#include <beamimpact/paper/solve.hpp>
+#include <solver/paper/solve.hpp>
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/integrator/ExplicitContactIntegrator.hpp>
-#include <beamimpact/scene/scene_io.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/integrator/ExplicitContactIntegrator.hpp>
+#include <solver/scene/scene_io.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact::paper {
 namespace {

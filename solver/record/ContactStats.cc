@@ -1,4 +1,4 @@
-#include <beamimpact/record/ContactStats.hpp>
+#include <solver/record/ContactStats.hpp>
 
 #include <algorithm>
 

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include <beamimpact/record/SimulationResult.hpp>
+#include <solver/record/SimulationResult.hpp>
 
 namespace beamimpact {
 

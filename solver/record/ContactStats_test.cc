@@ -1,5 +1,5 @@
 // Interval, impulse and peak bookkeeping on hand-made force sequences with known answers.
-#include <beamimpact/record/ContactStats.hpp>
+#include <solver/record/ContactStats.hpp>
 
 #include <gtest/gtest.h>
 

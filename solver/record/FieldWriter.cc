@@ -1,4 +1,4 @@
-#include <beamimpact/record/FieldWriter.hpp>
+#include <solver/record/FieldWriter.hpp>
 
 #include <cmath>
 #include <stdexcept>

@@ -2,15 +2,15 @@
 // represent exactly (uniform stretch; uniform curvature, a quadratic deflection that Hermite
 // cubics reproduce) must give N = EA eps and M = EI kappa at every node, and the files must say
 // what was written (node count, times, a .pvd only once the run is complete).
-#include <beamimpact/record/FieldWriter.hpp>
+#include <solver/record/FieldWriter.hpp>
 
 #include <fstream>
 #include <sstream>
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/integrator/InternalForce.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/integrator/InternalForce.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact {
 namespace {

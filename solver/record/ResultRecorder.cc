@@ -1,4 +1,4 @@
-#include <beamimpact/record/ResultRecorder.hpp>
+#include <solver/record/ResultRecorder.hpp>
 
 #include <algorithm>
 #include <cmath>

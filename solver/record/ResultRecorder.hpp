@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include <beamimpact/record/ContactStats.hpp>
-#include <beamimpact/record/SimulationResult.hpp>
+#include <solver/record/ContactStats.hpp>
+#include <solver/record/SimulationResult.hpp>
 
 namespace beamimpact {
 

@@ -9,8 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include <beamimpact/scene/Scene.hpp>
-#include <beamimpact/schema/output_schema.hpp>
+#include <solver/scene/Scene.hpp>
+#include <solver/schema/output_schema.hpp>
 
 namespace beamimpact {
 

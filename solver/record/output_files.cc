@@ -1,4 +1,4 @@
-#include <beamimpact/record/output_files.hpp>
+#include <solver/record/output_files.hpp>
 
 #include <cmath>
 #include <fstream>
@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include <beamimpact/util/write_file_atomic.hpp>
+#include <solver/util/write_file_atomic.hpp>
 #include <beamimpact/version.hpp>
 
 namespace beamimpact {

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include <beamimpact/record/SimulationResult.hpp>
+#include <solver/record/SimulationResult.hpp>
 
 namespace beamimpact {
 

@@ -1,12 +1,12 @@
 // The writer: interface.md columns, and a non-finite value leaves nothing that looks complete.
-#include <beamimpact/record/output_files.hpp>
+#include <solver/record/output_files.hpp>
 
 #include <cmath>
 #include <fstream>
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact {
 namespace {

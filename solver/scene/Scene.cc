@@ -1,8 +1,8 @@
-#include <beamimpact/scene/Scene.hpp>
+#include <solver/scene/Scene.hpp>
 
 #include <cmath>
 
-#include <beamimpact/scene/SceneError.hpp>
+#include <solver/scene/SceneError.hpp>
 
 namespace beamimpact {
 

@@ -1,4 +1,4 @@
-#include <beamimpact/scene/TableReader.hpp>
+#include <solver/scene/TableReader.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -12,8 +12,8 @@
 
 #include <toml++/toml.h>
 
-#include <beamimpact/scene/Scene.hpp>
-#include <beamimpact/scene/SceneError.hpp>
+#include <solver/scene/Scene.hpp>
+#include <solver/scene/SceneError.hpp>
 
 namespace beamimpact {
 

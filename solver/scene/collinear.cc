@@ -1,4 +1,4 @@
-#include <beamimpact/scene/collinear.hpp>
+#include <solver/scene/collinear.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 /// @brief Whether a scene is one-dimensional: every body and every velocity on one line. Such a
 /// scene runs as axial rods (1 DOF per node) unless bending is forced on.
 
-#include <beamimpact/scene/Scene.hpp>
+#include <solver/scene/Scene.hpp>
 
 namespace beamimpact {
 

@@ -1,4 +1,4 @@
-#include <beamimpact/scene/run_cost.hpp>
+#include <solver/scene/run_cost.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include <beamimpact/scene/SceneError.hpp>
+#include <solver/scene/SceneError.hpp>
 
 namespace beamimpact {
 namespace {

@@ -1,10 +1,10 @@
 // The run-cost estimate and its guard: counts from the scene (no model built).
-#include <beamimpact/scene/run_cost.hpp>
+#include <solver/scene/run_cost.hpp>
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact {
 namespace {

@@ -1,4 +1,4 @@
-#include <beamimpact/scene/scene_io.hpp>
+#include <solver/scene/scene_io.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -7,10 +7,10 @@
 
 #include <fmt/format.h>
 
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/scene/TableReader.hpp>
-#include <beamimpact/scene/collinear.hpp>
-#include <beamimpact/util/sha256.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/scene/TableReader.hpp>
+#include <solver/scene/collinear.hpp>
+#include <solver/util/sha256.hpp>
 
 namespace beamimpact {
 namespace {

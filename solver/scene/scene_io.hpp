@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include <beamimpact/scene/Scene.hpp>
+#include <solver/scene/Scene.hpp>
 
 namespace beamimpact {
 

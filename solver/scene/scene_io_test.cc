@@ -1,13 +1,13 @@
 // Scene files: the shipped scenes load, --set overrides work, and every kind of bad input gives
 // a SceneError naming the file, the key and what was expected.
-#include <beamimpact/scene/scene_io.hpp>
+#include <solver/scene/scene_io.hpp>
 
 #include <fstream>
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact {
 namespace {

@@ -1,4 +1,4 @@
-#include <beamimpact/schema/output_schema.hpp>
+#include <solver/schema/output_schema.hpp>
 
 #include <algorithm>
 

@@ -9,9 +9,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <beamimpact/scene/Scene.hpp>
-#include <beamimpact/scene/scene_io.hpp>
-#include <beamimpact/util/ScratchDir.hpp>
+#include <solver/scene/Scene.hpp>
+#include <solver/scene/scene_io.hpp>
+#include <solver/util/ScratchDir.hpp>
 
 namespace beamimpact::testing {
 

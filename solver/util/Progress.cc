@@ -1,4 +1,4 @@
-#include <beamimpact/util/Progress.hpp>
+#include <solver/util/Progress.hpp>
 
 #include <unistd.h>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include <beamimpact/util/sha256.hpp>
+#include <solver/util/sha256.hpp>
 
 #include <array>
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include <beamimpact/util/write_file_atomic.hpp>
+#include <solver/util/write_file_atomic.hpp>
 
 #include <fstream>
 #include <stdexcept>

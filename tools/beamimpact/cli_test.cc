@@ -9,7 +9,7 @@
 #include <sys/wait.h>
 #include <nlohmann/json.hpp>
 
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace {
 

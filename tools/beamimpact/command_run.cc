@@ -4,11 +4,11 @@
 
 #include <fmt/format.h>
 
-#include <beamimpact/api/registry.hpp>
-#include <beamimpact/api/run.hpp>
-#include <beamimpact/record/FieldWriter.hpp>
-#include <beamimpact/schema/output_schema.hpp>
-#include <beamimpact/util/Progress.hpp>
+#include <api/registry.hpp>
+#include <api/run.hpp>
+#include <solver/record/FieldWriter.hpp>
+#include <solver/schema/output_schema.hpp>
+#include <solver/util/Progress.hpp>
 
 namespace beamimpact {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include <beamimpact/study/run_study.hpp>
+#include <verification/study/run_study.hpp>
 #include <beamimpact/version.hpp>
 
 namespace beamimpact {

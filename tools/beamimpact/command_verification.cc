@@ -9,17 +9,17 @@
 
 #include <fmt/format.h>
 
-#include <beamimpact/api/registry.hpp>
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/study/distributed_jobs.hpp>
-#include <beamimpact/study/task_farm.hpp>
-#include <beamimpact/verification/compare/compare_runs.hpp>
-#include <beamimpact/verification/matrix/VerificationMatrix.hpp>
-#include <beamimpact/verification/matrix/evaluate.hpp>
-#include <beamimpact/verification/matrix/execute_jobs.hpp>
-#include <beamimpact/verification/matrix/interruption.hpp>
-#include <beamimpact/verification/matrix/reports.hpp>
-#include <beamimpact/verification/matrix/sweep.hpp>
+#include <api/registry.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <verification/study/distributed_jobs.hpp>
+#include <verification/study/task_farm.hpp>
+#include <verification/compare/compare_runs.hpp>
+#include <verification/matrix/VerificationMatrix.hpp>
+#include <verification/matrix/evaluate.hpp>
+#include <verification/matrix/execute_jobs.hpp>
+#include <verification/matrix/interruption.hpp>
+#include <verification/matrix/reports.hpp>
+#include <verification/matrix/sweep.hpp>
 #include <beamimpact/version.hpp>
 #include "CommandExit.hpp"
 

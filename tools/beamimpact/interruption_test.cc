@@ -13,7 +13,7 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 extern char** environ;
 

@@ -8,8 +8,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/study/task_farm.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <verification/study/task_farm.hpp>
 #include <beamimpact/version.hpp>
 
 #include "CommandExit.hpp"

@@ -1,4 +1,4 @@
-#include <beamimpact/verification/compare/Comparison.hpp>
+#include <verification/compare/Comparison.hpp>
 
 #include <fmt/format.h>
 

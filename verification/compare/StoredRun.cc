@@ -1,4 +1,4 @@
-#include <beamimpact/verification/compare/StoredRun.hpp>
+#include <verification/compare/StoredRun.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/schema/output_schema.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/schema/output_schema.hpp>
 
 namespace beamimpact::verification {
 namespace {

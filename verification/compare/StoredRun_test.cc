@@ -1,13 +1,13 @@
 // Reading a run directory: good files parse, bad ones give one message naming file and column.
-#include <beamimpact/verification/compare/StoredRun.hpp>
+#include <verification/compare/StoredRun.hpp>
 
 #include <filesystem>
 #include <fstream>
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact::verification {
 namespace {

@@ -1,13 +1,13 @@
-#include <beamimpact/verification/compare/compare_runs.hpp>
+#include <verification/compare/compare_runs.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
 
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/schema/output_schema.hpp>
-#include <beamimpact/verification/compare/series.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/schema/output_schema.hpp>
+#include <verification/compare/series.hpp>
 
 namespace beamimpact::verification {
 namespace {

@@ -2,8 +2,8 @@
 /// @file compare_runs.hpp
 /// @brief Error norms between a run and a reference run (`beamimpact compare`).
 
-#include <beamimpact/verification/compare/Comparison.hpp>
-#include <beamimpact/verification/compare/StoredRun.hpp>
+#include <verification/compare/Comparison.hpp>
+#include <verification/compare/StoredRun.hpp>
 
 namespace beamimpact::verification {
 

@@ -1,9 +1,9 @@
 // Norms of compare_runs on synthetic histories whose errors are known in closed form.
-#include <beamimpact/verification/compare/compare_runs.hpp>
+#include <verification/compare/compare_runs.hpp>
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/verification/compare/test_histories.hpp>
+#include <verification/compare/test_histories.hpp>
 
 namespace beamimpact::verification {
 namespace {

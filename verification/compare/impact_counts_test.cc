@@ -15,8 +15,8 @@
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/api/run.hpp>
-#include <beamimpact/testing/test_scenes.hpp>
+#include <api/run.hpp>
+#include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact::verification {
 namespace {

@@ -1,9 +1,9 @@
-#include <beamimpact/verification/compare/run_checks.hpp>
+#include <verification/compare/run_checks.hpp>
 
 #include <algorithm>
 #include <cmath>
 
-#include <beamimpact/schema/output_schema.hpp>
+#include <solver/schema/output_schema.hpp>
 
 namespace beamimpact::verification {
 namespace {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include <beamimpact/verification/compare/Comparison.hpp>
-#include <beamimpact/verification/compare/StoredRun.hpp>
+#include <verification/compare/Comparison.hpp>
+#include <verification/compare/StoredRun.hpp>
 
 namespace beamimpact::verification {
 

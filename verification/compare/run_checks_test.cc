@@ -1,5 +1,5 @@
 // The health metrics of one run against hand-made histories with known answers.
-#include <beamimpact/verification/compare/run_checks.hpp>
+#include <verification/compare/run_checks.hpp>
 
 #include <gtest/gtest.h>
 

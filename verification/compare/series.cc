@@ -1,4 +1,4 @@
-#include <beamimpact/verification/compare/series.hpp>
+#include <verification/compare/series.hpp>
 
 #include <algorithm>
 #include <cmath>

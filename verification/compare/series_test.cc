@@ -1,5 +1,5 @@
 // Building blocks of the norms, against closed forms.
-#include <beamimpact/verification/compare/series.hpp>
+#include <verification/compare/series.hpp>
 
 #include <cmath>
 

@@ -6,7 +6,7 @@
 #include <functional>
 #include <numbers>
 
-#include <beamimpact/verification/compare/StoredRun.hpp>
+#include <verification/compare/StoredRun.hpp>
 
 namespace beamimpact::testing {
 using verification::StoredRun;

@@ -1,14 +1,14 @@
-#include <beamimpact/verification/matrix/JobSpec.hpp>
+#include <verification/matrix/JobSpec.hpp>
 
 #include <algorithm>
 #include <cstdlib>
 
 #include <fmt/format.h>
 
-#include <beamimpact/api/registry.hpp>
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/scene/scene_io.hpp>
-#include <beamimpact/verification/matrix/child_process.hpp>
+#include <api/registry.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/scene/scene_io.hpp>
+#include <verification/matrix/child_process.hpp>
 
 namespace beamimpact::verification {
 namespace {

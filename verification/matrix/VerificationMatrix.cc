@@ -1,4 +1,4 @@
-#include <beamimpact/verification/matrix/VerificationMatrix.hpp>
+#include <verification/matrix/VerificationMatrix.hpp>
 
 #include <cmath>
 #include <map>
@@ -7,11 +7,11 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
-#include <beamimpact/api/registry.hpp>
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/scene/TableReader.hpp>
-#include <beamimpact/verification/compare/compare_runs.hpp>
-#include <beamimpact/verification/compare/run_checks.hpp>
+#include <api/registry.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/scene/TableReader.hpp>
+#include <verification/compare/compare_runs.hpp>
+#include <verification/compare/run_checks.hpp>
 
 namespace beamimpact::verification {
 namespace {

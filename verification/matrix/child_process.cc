@@ -1,5 +1,5 @@
-#include <beamimpact/verification/matrix/child_process.hpp>
-#include <beamimpact/verification/matrix/interruption.hpp>
+#include <verification/matrix/child_process.hpp>
+#include <verification/matrix/interruption.hpp>
 
 #include <fcntl.h>
 #include <signal.h>

@@ -1,11 +1,11 @@
-#include <beamimpact/verification/matrix/evaluate.hpp>
+#include <verification/matrix/evaluate.hpp>
 
 #include <cmath>
 
 #include <fmt/format.h>
 
-#include <beamimpact/verification/compare/compare_runs.hpp>
-#include <beamimpact/verification/compare/run_checks.hpp>
+#include <verification/compare/compare_runs.hpp>
+#include <verification/compare/run_checks.hpp>
 
 namespace beamimpact::verification {
 

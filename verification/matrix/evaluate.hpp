@@ -10,9 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include <beamimpact/verification/compare/Comparison.hpp>
-#include <beamimpact/verification/matrix/VerificationMatrix.hpp>
-#include <beamimpact/verification/matrix/execute_jobs.hpp>
+#include <verification/compare/Comparison.hpp>
+#include <verification/matrix/VerificationMatrix.hpp>
+#include <verification/matrix/execute_jobs.hpp>
 
 namespace beamimpact::verification {
 

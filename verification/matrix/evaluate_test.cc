@@ -1,5 +1,5 @@
 // Gate decisions and observed orders on hand-made comparisons.
-#include <beamimpact/verification/matrix/evaluate.hpp>
+#include <verification/matrix/evaluate.hpp>
 
 #include <cmath>
 

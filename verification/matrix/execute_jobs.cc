@@ -1,4 +1,4 @@
-#include <beamimpact/verification/matrix/execute_jobs.hpp>
+#include <verification/matrix/execute_jobs.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -9,9 +9,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <beamimpact/api/registry.hpp>
-#include <beamimpact/verification/matrix/child_process.hpp>
-#include <beamimpact/verification/matrix/interruption.hpp>
+#include <api/registry.hpp>
+#include <verification/matrix/child_process.hpp>
+#include <verification/matrix/interruption.hpp>
 
 namespace beamimpact::verification {
 

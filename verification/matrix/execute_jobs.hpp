@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include <beamimpact/verification/matrix/JobSpec.hpp>
+#include <verification/matrix/JobSpec.hpp>
 
 namespace beamimpact::verification {
 

@@ -8,11 +8,11 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include <beamimpact/api/registry.hpp>
-#include <beamimpact/verification/compare/StoredRun.hpp>
-#include <beamimpact/verification/matrix/VerificationMatrix.hpp>
-#include <beamimpact/verification/matrix/evaluate.hpp>
-#include <beamimpact/verification/matrix/execute_jobs.hpp>
+#include <api/registry.hpp>
+#include <verification/compare/StoredRun.hpp>
+#include <verification/matrix/VerificationMatrix.hpp>
+#include <verification/matrix/evaluate.hpp>
+#include <verification/matrix/execute_jobs.hpp>
 
 namespace beamimpact::verification {
 namespace {

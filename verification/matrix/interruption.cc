@@ -1,4 +1,4 @@
-#include <beamimpact/verification/matrix/interruption.hpp>
+#include <verification/matrix/interruption.hpp>
 
 #include <csignal>
 

@@ -1,4 +1,4 @@
-#include <beamimpact/verification/matrix/reports.hpp>
+#include <verification/matrix/reports.hpp>
 
 #include <fstream>
 #include <map>

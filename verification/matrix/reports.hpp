@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include <beamimpact/util/write_file_atomic.hpp>
-#include <beamimpact/verification/matrix/evaluate.hpp>
+#include <solver/util/write_file_atomic.hpp>
+#include <verification/matrix/evaluate.hpp>
 
 namespace beamimpact::verification {
 

@@ -1,14 +1,14 @@
-#include <beamimpact/verification/matrix/sweep.hpp>
+#include <verification/matrix/sweep.hpp>
 
 #include <algorithm>
 
 #include <fmt/format.h>
 
-#include <beamimpact/api/registry.hpp>
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/verification/compare/compare_runs.hpp>
-#include <beamimpact/verification/matrix/evaluate.hpp>
-#include <beamimpact/verification/matrix/reports.hpp>
+#include <api/registry.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <verification/compare/compare_runs.hpp>
+#include <verification/matrix/evaluate.hpp>
+#include <verification/matrix/reports.hpp>
 
 namespace beamimpact::verification {
 namespace {

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include <beamimpact/verification/compare/Comparison.hpp>
-#include <beamimpact/verification/matrix/execute_jobs.hpp>
+#include <verification/compare/Comparison.hpp>
+#include <verification/matrix/execute_jobs.hpp>
 
 namespace beamimpact::verification {
 

@@ -1,4 +1,4 @@
-#include <beamimpact/study/Study.hpp>
+#include <verification/study/Study.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -7,13 +7,13 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
-#include <beamimpact/api/registry.hpp>
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/scene/TableReader.hpp>
-#include <beamimpact/scene/scene_io.hpp>
-#include <beamimpact/verification/compare/compare_runs.hpp>
-#include <beamimpact/verification/matrix/JobSpec.hpp>
-#include <beamimpact/verification/matrix/sweep.hpp>
+#include <api/registry.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/scene/TableReader.hpp>
+#include <solver/scene/scene_io.hpp>
+#include <verification/compare/compare_runs.hpp>
+#include <verification/matrix/JobSpec.hpp>
+#include <verification/matrix/sweep.hpp>
 
 namespace beamimpact::study {
 namespace {

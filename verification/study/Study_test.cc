@@ -1,5 +1,5 @@
 // Study files, designs and the overrides of a point.
-#include <beamimpact/study/Study.hpp>
+#include <verification/study/Study.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/scene/scene_io.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/scene/scene_io.hpp>
 
 namespace beamimpact::study {
 namespace {

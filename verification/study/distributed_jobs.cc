@@ -1,12 +1,12 @@
-#include <beamimpact/study/distributed_jobs.hpp>
+#include <verification/study/distributed_jobs.hpp>
 
 #include <cstdio>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <beamimpact/study/task_farm.hpp>
-#include <beamimpact/verification/matrix/interruption.hpp>
+#include <verification/study/task_farm.hpp>
+#include <verification/matrix/interruption.hpp>
 
 namespace beamimpact::study {
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include <beamimpact/verification/matrix/execute_jobs.hpp>
+#include <verification/matrix/execute_jobs.hpp>
 
 namespace beamimpact::study {
 

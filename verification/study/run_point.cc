@@ -1,16 +1,16 @@
-#include <beamimpact/study/run_point.hpp>
+#include <verification/study/run_point.hpp>
 
 #include <chrono>
 
 #include <fmt/format.h>
 
-#include <beamimpact/api/registry.hpp>
-#include <beamimpact/api/run.hpp>
-#include <beamimpact/scene/SceneError.hpp>
-#include <beamimpact/scene/run_cost.hpp>
-#include <beamimpact/scene/scene_io.hpp>
-#include <beamimpact/verification/compare/compare_runs.hpp>
-#include <beamimpact/verification/compare/run_checks.hpp>
+#include <api/registry.hpp>
+#include <api/run.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <solver/scene/run_cost.hpp>
+#include <solver/scene/scene_io.hpp>
+#include <verification/compare/compare_runs.hpp>
+#include <verification/compare/run_checks.hpp>
 
 namespace beamimpact::study {
 namespace {

@@ -12,7 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include <beamimpact/study/Study.hpp>
+#include <verification/study/Study.hpp>
 
 namespace beamimpact::study {
 

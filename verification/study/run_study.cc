@@ -1,4 +1,4 @@
-#include <beamimpact/study/run_study.hpp>
+#include <verification/study/run_study.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -7,9 +7,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <beamimpact/study/task_farm.hpp>
-#include <beamimpact/util/Progress.hpp>
-#include <beamimpact/util/write_file_atomic.hpp>
+#include <verification/study/task_farm.hpp>
+#include <solver/util/Progress.hpp>
+#include <solver/util/write_file_atomic.hpp>
 
 namespace beamimpact::study {
 namespace {

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include <beamimpact/study/Study.hpp>
-#include <beamimpact/study/run_point.hpp>
+#include <verification/study/Study.hpp>
+#include <verification/study/run_point.hpp>
 
 namespace beamimpact::study {
 

@@ -1,4 +1,4 @@
-#include <beamimpact/study/task_farm.hpp>
+#include <verification/study/task_farm.hpp>
 
 #include <signal.h>
 #include <unistd.h>

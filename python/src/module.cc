@@ -11,6 +11,7 @@
 
 #include <api/registry.hpp>
 #include <api/run.hpp>
+#include <solver/record/ContactStats.hpp>
 #include <solver/record/output_files.hpp>
 #include <solver/scene/SceneError.hpp>
 #include <solver/scene/scene_io.hpp>
@@ -73,6 +74,29 @@ py::tuple run_scene(const Scene& scene, const std::string& method, std::optional
 StoredRun stored(const std::map<std::string, std::vector<double>>& columns, const std::string& summary,
                  const std::string& label) {
   return StoredRun::from_columns(columns, nlohmann::json::parse(summary), label);
+}
+
+/// One contact's statistics from its samples by ContactStats (the rule of every C++ method).
+py::dict contact_stats(const std::vector<double>& t, const std::vector<double>& R, const std::vector<double>& tau,
+                       const std::vector<double>& dt, const std::vector<std::string>& states, double merge_gap) {
+  ContactStats stats(merge_gap, "");
+  for (std::size_t i = 0; i < t.size(); ++i)
+    stats.add(t.at(i), R.at(i), tau.at(i), dt.at(i),
+              states.at(i) == "stick"  ? ContactState::kStick
+              : states.at(i) == "slip" ? ContactState::kSlip
+                                       : ContactState::kClosed);
+  ContactSummary c;
+  stats.fill(c);
+  py::dict d;
+  d["intervals"] = c.intervals;
+  d["impulse_normal"] = c.impulse_normal;
+  d["impulse_tangential"] = c.impulse_tangential;
+  d["peak_R"] = c.peak_R;
+  d["peak_R_excluding_closure"] = c.peak_R_excluding_closure;
+  d["first_step_R"] = c.first_step_R;
+  d["stick_steps"] = c.stick_steps;
+  d["slip_steps"] = c.slip_steps;
+  return d;
 }
 
 }  // namespace
@@ -141,4 +165,8 @@ PYBIND11_MODULE(_core, m) {
       },
       "The compare command's norms of run a against reference b, as JSON text");
   m.def("sweep_norms", &verification::sweep_norms, "The norms the sweep command tabulates");
+  m.def("contact_stats", &contact_stats, py::arg("t"), py::arg("R"), py::arg("tau"), py::arg("dt"),
+        py::arg("states"), py::arg("merge_gap"),
+        "A contact's statistics from its samples (t, R, tau, dt; state names) by the C++ rule every "
+        "method's summary uses (solver/record/ContactStats, ContactIntervals): for conformance tests");
 }

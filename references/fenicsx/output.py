@@ -1,7 +1,9 @@
 """history.csv and summary.json in the layout of interface.md, and the contact statistics
 (intervals, impulses, peaks) computed the way solver/record/ContactStats.hpp describes them:
-a sample is "in contact" when R > 0, an interval is [first, last] contact sample time, and
-intervals separated by less than the merge gap are merged."""
+a sample is "in contact" when R > 0, each run of contact samples is a phase, and a phase that
+begins less than the merge gap after the last interval's end joins it (the rule of
+solver/record/ContactIntervals.hpp; python/tests/test_contact_stats_conformance.py checks that
+both give the same statistics)."""
 
 import glob
 import json
@@ -34,20 +36,23 @@ class ContactStats:
         self.stick = self.slip = 0
 
     def add(self, t, R, tau, dt, state):
+        if not R > 0:
+            self.in_contact = False
+            return
         self.impulse_n += R * dt
         self.impulse_t += tau * dt
-        if R > 0:
-            self.peak = max(self.peak, R)
-            if not self.in_contact and not (self.intervals and t - self.intervals[-1][1] < self.merge_gap):
+        self.peak = max(self.peak, R)
+        self.stick += state == "stick"
+        self.slip += state == "slip"
+        if not self.in_contact:
+            # A (re-)closure begins a phase: a new interval unless it begins less than merge_gap
+            # after the last interval's end. Its force is not a peak after closure.
+            if not (self.intervals and t - self.intervals[-1][1] < self.merge_gap):
                 self.intervals.append([t, t, 0.0, R])
-            else:
-                iv = self.intervals[-1]
-                iv[1], iv[2] = t, max(iv[2], R)
             self.in_contact = True
-            self.stick += state == "stick"
-            self.slip += state == "slip"
         else:
-            self.in_contact = False
+            self.intervals[-1][2] = max(self.intervals[-1][2], R)
+        self.intervals[-1][1] = t
 
     def summary(self):
         return {

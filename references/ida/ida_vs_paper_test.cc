@@ -18,6 +18,7 @@
 
 #include <references/ida/solve.hpp>
 #include <solver/paper/solve.hpp>
+#include <solver/record/ContactIntervals.hpp>
 #include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact::ida {
@@ -65,15 +66,14 @@ double displacement_difference(const SimulationResult& p, const SimulationResult
 
 using Intervals = std::vector<std::array<double, 2>>;
 
-/// Intervals separated by less than gap seconds joined into one.
+/// Intervals separated by less than gap seconds joined into one (the rule of every summary).
 Intervals merged(const Intervals& in, double gap) {
-  Intervals out;
-  for (const auto& iv : in)
-    if (!out.empty() && iv[0] - out.back()[1] < gap)
-      out.back()[1] = iv[1];
-    else
-      out.push_back(iv);
-  return out;
+  ContactIntervals out(gap);
+  for (const auto& iv : in) {
+    out.begin(iv[0]);
+    out.extend(iv[1]);
+  }
+  return out.intervals();
 }
 
 /// The contact intervals as "[start, end] s" pairs, for failure messages.

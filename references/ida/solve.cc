@@ -14,6 +14,7 @@
 #include <solver/model/Model.hpp>
 #include <solver/model/critical_dt.hpp>
 #include <solver/model/deformed_geometry.hpp>
+#include <solver/record/ContactIntervals.hpp>
 #include <solver/record/ResultRecorder.hpp>
 #include <solver/scene/SceneError.hpp>
 #include <solver/scene/run_cost.hpp>
@@ -194,29 +195,25 @@ class Observer {
   const PenaltyContacts& contacts_;
 };
 
-/// Contact i's intervals from the located onset and release events (exact switch times),
-/// merging re-contacts closer than merge_gap; an interval still closed ends at t_end.
+/// Contact i's intervals from the located onset and release events (exact switch times), each
+/// onset-to-release a phase of ContactIntervals; an interval still closed ends at t_end.
 std::vector<std::array<double, 2>> event_intervals(const std::vector<ContactEvent>& events, int i,
                                                    double merge_gap, double t_end, nlohmann::json& listed) {
-  std::vector<std::array<double, 2>> intervals;
-  double open_at = -1.0;
+  ContactIntervals intervals(merge_gap);
+  bool open = false;
   for (const ContactEvent& e : events) {
     if (e.contact != i) continue;
     listed.push_back({e.t, e.onset ? "onset" : "release"});
     if (e.onset) {
-      if (!intervals.empty() && e.t - intervals.back()[1] < merge_gap) {
-        open_at = intervals.back()[0];
-        intervals.pop_back();
-      } else {
-        open_at = e.t;
-      }
-    } else if (open_at >= 0.0) {
-      intervals.push_back({open_at, e.t});
-      open_at = -1.0;
+      intervals.begin(e.t);
+      open = true;
+    } else if (open) {
+      intervals.extend(e.t);
+      open = false;
     }
   }
-  if (open_at >= 0.0) intervals.push_back({open_at, t_end});
-  return intervals;
+  if (open) intervals.extend(t_end);
+  return intervals.intervals();
 }
 
 /// Integrates to the end, one row per output time on the paper's grid: p h for every

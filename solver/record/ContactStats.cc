@@ -5,7 +5,7 @@
 namespace beamimpact {
 
 ContactStats::ContactStats(double merge_gap, std::string rule)
-    : merge_gap_(merge_gap), rule_(std::move(rule)) {}
+    : intervals_(merge_gap), rule_(std::move(rule)) {}
 
 void ContactStats::add(double t, double R, double tau, double dt, ContactState state) {
   if (!(R > 0.0)) {
@@ -19,27 +19,24 @@ void ContactStats::add(double t, double R, double tau, double dt, ContactState s
   if (state == ContactState::kSlip) ++slip_;
   if (!in_contact_) {
     // A (re-)closure: the first sample of a contact phase carries the closure impulse.
-    const bool chatter = !intervals_.empty() && t - intervals_.back().end < merge_gap_;
-    if (!chatter) intervals_.push_back({t, t, 0.0, R});
+    if (intervals_.begin(t)) peaks_.push_back({0.0, R});
     in_contact_ = true;
   } else {
-    intervals_.back().peak_after_closure = std::max(intervals_.back().peak_after_closure, R);
+    peaks_.back().after_closure = std::max(peaks_.back().after_closure, R);
   }
-  intervals_.back().end = t;
+  intervals_.extend(t);
 }
 
 void ContactStats::fill(ContactSummary& s) const {
-  s.intervals.clear();
+  s.intervals = intervals_.intervals();
   s.peak_R_excluding_closure = 0.0;
-  for (const Interval& i : intervals_) {
-    s.intervals.push_back({i.start, i.end});
-    s.peak_R_excluding_closure = std::max(s.peak_R_excluding_closure, i.peak_after_closure);
-  }
+  for (const Peaks& p : peaks_)
+    s.peak_R_excluding_closure = std::max(s.peak_R_excluding_closure, p.after_closure);
   s.merge_rule = rule_;
   s.impulse_normal = impulse_n_;
   s.impulse_tangential = impulse_t_;
   s.peak_R = peak_;
-  s.first_step_R = intervals_.empty() ? 0.0 : intervals_.front().closure_R;
+  s.first_step_R = peaks_.empty() ? 0.0 : peaks_.front().closure_R;
   s.stick_steps = stick_;
   s.slip_steps = slip_;
 }

@@ -5,15 +5,17 @@
 
 #include <string>
 
+#include <solver/record/ContactIntervals.hpp>
 #include <solver/record/SimulationResult.hpp>
 
 namespace beamimpact {
 
 /// @brief Feed one sample per step (or per accepted adaptive step); read the summary at the end.
 ///
-/// A step is "in contact" when R > 0. Contact intervals are [first, last] contact sample time;
-/// two intervals separated by less than merge_gap seconds are merged (chatter), and the rule is
-/// written into the summary. The closure step is the first sample of each interval.
+/// A step is "in contact" when R > 0; each run of contact steps is a phase of ContactIntervals
+/// (which merges chatter), and the rule is written into the summary. A closure is the first
+/// sample of a phase: its force counts in first_step_R (the first interval's) but not in
+/// peak_R_excluding_closure, also when the phase joins an interval.
 class ContactStats {
  public:
   /// @brief merge_gap: s, gaps shorter than this are merged; rule: the sentence written out.
@@ -24,12 +26,12 @@ class ContactStats {
   void fill(ContactSummary& s) const;
 
  private:
-  struct Interval {
-    double start, end, peak_after_closure, closure_R;
+  struct Peaks {
+    double after_closure, closure_R;  ///< N, one per interval
   };
-  double merge_gap_;
+  ContactIntervals intervals_;
   std::string rule_;
-  std::vector<Interval> intervals_;
+  std::vector<Peaks> peaks_;
   bool in_contact_ = false;
   double impulse_n_ = 0.0, impulse_t_ = 0.0, peak_ = 0.0;
   long stick_ = 0, slip_ = 0;

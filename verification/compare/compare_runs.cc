@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <solver/record/ContactIntervals.hpp>
 #include <solver/scene/SceneError.hpp>
 #include <solver/schema/output_schema.hpp>
 #include <verification/compare/series.hpp>
@@ -91,21 +92,20 @@ const nlohmann::json* summary_contact(const StoredRun& h, int k) {
 std::vector<Interval> intervals_of(const StoredRun& h, const nlohmann::json* sc, const std::vector<double>& R,
                                    double threshold, double merge_gap) {
   if (sc && sc->contains("intervals")) {
-    std::vector<Interval> out;
+    ContactIntervals merged(merge_gap);  // each of the method's intervals is a phase
     for (const auto& iv : sc->at("intervals")) {
-      const double t0 = iv.at(0).get<double>(), t1 = iv.at(1).get<double>();
-      if (!out.empty() && t0 - out.back().end < merge_gap)
-        out.back().end = t1;
-      else
-        out.push_back({t0, t1, 0, 0});
+      merged.begin(iv.at(0).get<double>());
+      merged.extend(iv.at(1).get<double>());
     }
+    std::vector<Interval> out;
+    for (const auto& [start, end] : merged.intervals()) out.push_back({start, end, 0, 0});
     return out;
   }
   return contact_intervals(h.t(), R, threshold, merge_gap);
 }
 
 /// Largest R over samples that are not closures: a closure is a sample in contact whose
-/// predecessor is not (the same rule as io/ContactStats: re-closures inside merged chatter count).
+/// predecessor is not (the same rule as solver/record/ContactStats: re-closures inside merged chatter count).
 double peak_excluding_closure(const std::vector<double>& R, double threshold) {
   double p = 0.0;
   for (std::size_t r = 1; r < R.size(); ++r)

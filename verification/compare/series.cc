@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <solver/record/ContactIntervals.hpp>
+
 namespace beamimpact::verification {
 
 std::vector<double> uniform_grid(double t0, double t1, double h) {
@@ -89,15 +91,22 @@ std::vector<double> window_average(const std::vector<double>& t, const std::vect
 
 std::vector<Interval> contact_intervals(const std::vector<double>& t, const std::vector<double>& R,
                                         double threshold, double merge_gap) {
+  ContactIntervals merged(merge_gap);  // each run of samples above the threshold is a phase
   std::vector<Interval> out;
+  bool in_contact = false;  // the previous sample is
   for (std::size_t i = 0; i < t.size(); ++i) {
-    if (!(R[i] > threshold)) continue;
-    if (!out.empty() && (out.back().last + 1 == i || t[i] - out.back().end < merge_gap)) {
-      out.back().end = t[i];
-      out.back().last = i;
-    } else {
-      out.push_back({t[i], t[i], i, i});
+    if (!(R[i] > threshold)) {
+      in_contact = false;
+      continue;
     }
+    if (!in_contact && merged.begin(t[i])) out.push_back({0.0, 0.0, i, i});
+    in_contact = true;
+    merged.extend(t[i]);
+    out.back().last = i;
+  }
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    out[k].start = merged.intervals()[k][0];
+    out[k].end = merged.intervals()[k][1];
   }
   return out;
 }

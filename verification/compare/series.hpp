@@ -45,8 +45,9 @@ struct Interval {
   std::size_t first = 0, last = 0;  ///< row indices of the first and last sample in contact
 };
 
-/// @brief Intervals where R > threshold; consecutive intervals separated by a gap shorter than
-/// merge_gap (s, from the last contact sample to the next) are merged into one (chatter).
+/// @brief Intervals where R > threshold: each run of such samples is a phase, merged by
+/// ContactIntervals' rule (a gap shorter than merge_gap s, from the last contact sample to the
+/// next, is chatter).
 std::vector<Interval> contact_intervals(const std::vector<double>& t, const std::vector<double>& R,
                                         double threshold, double merge_gap);
 

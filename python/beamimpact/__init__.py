@@ -10,6 +10,8 @@ compare command's norms, over the C++ library (beamimpact._core).
 Bad input raises beamimpact.SceneError with the CLI's message (file, key, what was expected).
 """
 import json
+import os
+import shutil
 import sys
 
 import numpy as np
@@ -19,7 +21,7 @@ from ._core import SceneError
 from .fields import read_fields
 
 __all__ = ["SceneError", "Scene", "Run", "load_scene", "run", "read_run", "read_fields", "compare", "norm",
-           "sweep", "methods"]
+           "sweep", "verify", "methods"]
 __version__ = _core.__version__
 
 
@@ -144,26 +146,26 @@ def run(scene, method="paper", set=None, *, out=None, history=True, fields=False
         if isinstance(callback, _Progress):
             callback.close()
     columns = {n: rows[:, i] for i, n in enumerate(names)}
-    return Run(json.loads(summary), columns, f"{method}:{s.name}")
+    return Run(summary, columns, f"{method}:{s.name}")
 
 
 def read_run(directory):
     """Reads a run directory written by `beamimpact run` (or run(out=...)) as a Run."""
     summary, columns = _core.read_run(str(directory))
-    return Run(json.loads(summary), columns, str(directory))
+    return Run(summary, columns, str(directory))
 
 
 def _stored(r):
     if not isinstance(r, Run):
         r = read_run(r)
-    return {k: list(v) for k, v in r.columns.items()}, json.dumps(r.summary), r.label
+    return {k: list(v) for k, v in r.columns.items()}, r.summary, r.label
 
 
 def compare(run_, reference, *, grid_step=0.0, window=0.0, merge_gap=0.0, threshold=1e-6):
     """The `beamimpact compare` norms of `run_` against `reference` (Runs or run directories),
     as the dict `compare --json` writes; norms by name in result["norms"]."""
     a, b = _stored(run_), _stored(reference)
-    return json.loads(_core.compare(*a, *b, grid_step, window, merge_gap, threshold))
+    return _core.compare(*a, *b, grid_step, window, merge_gap, threshold)
 
 
 def norm(comparison, name):
@@ -197,6 +199,18 @@ def sweep(scene, dts, method="paper", reference=None, set=None, progress=False):
         row.update({n: norm(c, n) for n in _core.sweep_norms() if any(x["name"] == n for x in c["norms"])})
         table.append(row)
     return table
+
+
+def verify(matrix="verification/matrix.toml", out="out/verify", *, tier="quick", only="", jobs=1, exe=None):
+    """`beamimpact verify` as a call: runs the matrix's `tier` (items whose name contains `only`)
+    with `jobs` runs in parallel, each a process of the `beamimpact` executable `exe` (default
+    $BEAMIMPACT_EXE, else `beamimpact` on PATH), writes runs/, junit.xml, norms.json and report.md
+    under `out`, and returns norms.json's dict: result["verdict"] is "PASS" or "FAIL" by the
+    library's one pass rule (complete, no gate failed); each gate has "passed" and "margin"."""
+    exe = exe or os.environ.get("BEAMIMPACT_EXE") or shutil.which("beamimpact")
+    if not exe:
+        raise FileNotFoundError("verify: no beamimpact executable (pass exe= or set BEAMIMPACT_EXE)")
+    return _core.verify(str(matrix), str(out), tier, only, jobs, str(exe))
 
 
 def methods():

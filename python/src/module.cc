@@ -19,6 +19,7 @@
 #include <solver/util/Progress.hpp>
 #include <verification/compare/compare_runs.hpp>
 #include <verification/matrix/sweep.hpp>
+#include <verification/matrix/verify.hpp>
 #include <beamimpact/version.hpp>
 
 #include "dict_to_toml.hpp"
@@ -40,7 +41,51 @@ py::dict columns_dict(const std::vector<std::string>& names,
   return d;
 }
 
-/// Runs a loaded scene with the GIL released; returns (summary as JSON text, column names,
+/// A JSON value as the Python value json.loads would make of its text (dict, list, str, int,
+/// float, bool, None), without the text.
+py::object to_python(const nlohmann::json& j) {
+  switch (j.type()) {
+    case nlohmann::json::value_t::object: {
+      py::dict d;
+      for (const auto& [k, v] : j.items()) d[py::str(k)] = to_python(v);
+      return d;
+    }
+    case nlohmann::json::value_t::array: {
+      py::list l;
+      for (const auto& v : j) l.append(to_python(v));
+      return l;
+    }
+    case nlohmann::json::value_t::string: return py::str(j.get_ref<const std::string&>());
+    case nlohmann::json::value_t::boolean: return py::bool_(j.get<bool>());
+    case nlohmann::json::value_t::number_integer: return py::int_(j.get<std::int64_t>());
+    case nlohmann::json::value_t::number_unsigned: return py::int_(j.get<std::uint64_t>());
+    case nlohmann::json::value_t::number_float: return py::float_(j.get<double>());
+    default: return py::none();
+  }
+}
+
+/// A Python value of the kinds to_python makes (numpy scalars too) as JSON, without the text.
+nlohmann::json from_python(py::handle o) {
+  if (o.is_none()) return nullptr;
+  if (py::isinstance<py::bool_>(o)) return o.cast<bool>();
+  if (py::isinstance<py::str>(o)) return o.cast<std::string>();
+  if (py::isinstance<py::dict>(o)) {
+    nlohmann::json j = nlohmann::json::object();
+    for (const auto& [k, v] : o.cast<py::dict>()) j[py::str(k).cast<std::string>()] = from_python(v);
+    return j;
+  }
+  if (py::isinstance<py::list>(o) || py::isinstance<py::tuple>(o)) {
+    nlohmann::json j = nlohmann::json::array();
+    for (const auto& v : o) j.push_back(from_python(v));
+    return j;
+  }
+  if (py::isinstance<py::int_>(o)) return o.cast<std::int64_t>();
+  if (py::isinstance<py::float_>(o)) return o.cast<double>();
+  if (py::hasattr(o, "__index__")) return o.attr("__index__")().cast<std::int64_t>();  // numpy integers
+  return o.cast<double>();                                                             // numpy floats
+}
+
+/// Runs a loaded scene with the GIL released; returns (summary dict, column names,
 /// rows x columns array).
 py::tuple run_scene(const Scene& scene, const std::string& method, std::optional<std::filesystem::path> out,
                     std::optional<py::function> progress) {
@@ -67,18 +112,59 @@ py::tuple run_scene(const Scene& scene, const std::string& method, std::optional
     const std::vector<double> v = history_values(r.history[i]);
     for (std::size_t c = 0; c < v.size(); ++c) w(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(c)) = v[c];
   }
-  return py::make_tuple(summary_json(scene, r).dump(), names, rows);
+  return py::make_tuple(to_python(summary_json(scene, r)), names, rows);
 }
 
-/// A StoredRun from a Python run: its columns (dict of arrays) and summary (JSON text).
-StoredRun stored(const std::map<std::string, std::vector<double>>& columns, const std::string& summary,
+/// A StoredRun from a Python run: its columns (dict of arrays) and summary (dict).
+StoredRun stored(const std::map<std::string, std::vector<double>>& columns, const py::dict& summary,
                  const std::string& label) {
-  return StoredRun::from_columns(columns, nlohmann::json::parse(summary), label);
+  return StoredRun::from_columns(columns, from_python(summary), label);
+}
+
+/// Reads a run directory: (summary dict, dict of columns).
+py::tuple read_run(const std::filesystem::path& dir) {
+  const StoredRun r = StoredRun::read(dir);
+  return py::make_tuple(to_python(r.summary()), columns_dict(history_columns(r.contacts()), r.columns()));
+}
+
+/// The compare command's norms of run a against reference b (columns, summary dict, label each).
+py::object compare(const std::map<std::string, std::vector<double>>& a, const py::dict& summary_a,
+                   const std::string& label_a, const std::map<std::string, std::vector<double>>& b,
+                   const py::dict& summary_b, const std::string& label_b, double grid_step, double window,
+                   double merge_gap, double threshold) {
+  verification::CompareOptions o;
+  o.grid_step = grid_step;
+  o.window = window;
+  o.merge_gap = merge_gap;
+  o.threshold = threshold;
+  return to_python(
+      verification::compare_runs(stored(a, summary_a, label_a), stored(b, summary_b, label_b), o).to_json());
+}
+
+/// The verify command (verification::verify) with the GIL released; writes the reports, returns
+/// norms.json's dict.
+py::object verify(const std::filesystem::path& matrix, const std::filesystem::path& out,
+                  const std::string& tier, const std::string& only, int jobs,
+                  const std::filesystem::path& exe) {
+  verification::VerifyOptions o;
+  o.matrix = matrix;
+  o.out = out;
+  o.tier = tier;
+  o.only = only;
+  o.jobs = jobs;
+  std::optional<verification::VerifyResult> r;
+  {
+    py::gil_scoped_release release;
+    r = verification::verify(o, exe);
+  }
+  verification::write_verify_reports(out, *r);
+  return to_python(verification::norms_json(r->context, r->items));
 }
 
 /// One contact's statistics from its samples by ContactStats (the rule of every C++ method).
-py::dict contact_stats(const std::vector<double>& t, const std::vector<double>& R, const std::vector<double>& tau,
-                       const std::vector<double>& dt, const std::vector<std::string>& states, double merge_gap) {
+py::dict contact_stats(const std::vector<double>& t, const std::vector<double>& R,
+                       const std::vector<double>& tau, const std::vector<double>& dt,
+                       const std::vector<std::string>& states, double merge_gap) {
   ContactStats stats(merge_gap, "");
   for (std::size_t i = 0; i < t.size(); ++i)
     stats.add(t.at(i), R.at(i), tau.at(i), dt.at(i),
@@ -142,29 +228,15 @@ PYBIND11_MODULE(_core, m) {
     for (const Method& me : methods()) names.push_back(me.name);
     return names;
   });
-  m.def(
-      "read_run",
-      [](const std::filesystem::path& dir) {
-        const StoredRun r = StoredRun::read(dir);
-        return py::make_tuple(r.summary().dump(), columns_dict(history_columns(r.contacts()), r.columns()));
-      },
-      py::arg("dir"), "Reads a run directory; returns (summary JSON, dict of columns)");
-  m.def(
-      "compare",
-      [](const std::map<std::string, std::vector<double>>& a, const std::string& summary_a, const std::string& label_a,
-         const std::map<std::string, std::vector<double>>& b, const std::string& summary_b, const std::string& label_b,
-         double grid_step, double window, double merge_gap, double threshold) {
-        verification::CompareOptions o;
-        o.grid_step = grid_step;
-        o.window = window;
-        o.merge_gap = merge_gap;
-        o.threshold = threshold;
-        return verification::compare_runs(stored(a, summary_a, label_a), stored(b, summary_b, label_b), o)
-            .to_json()
-            .dump();
-      },
-      "The compare command's norms of run a against reference b, as JSON text");
+  m.def("read_run", &read_run, py::arg("dir"),
+        "Reads a run directory; returns (summary dict, dict of columns)");
+  m.def("compare", &compare,
+        "The compare command's norms of run a against reference b, as the dict compare --json writes");
   m.def("sweep_norms", &verification::sweep_norms, "The norms the sweep command tabulates");
+  m.def("verify", &verify, py::arg("matrix"), py::arg("out"), py::arg("tier"), py::arg("only"),
+        py::arg("jobs"), py::arg("exe"),
+        "The verify command as a library call (runs started with exe); writes its reports to out and "
+        "returns norms.json's dict");
   m.def("contact_stats", &contact_stats, py::arg("t"), py::arg("R"), py::arg("tau"), py::arg("dt"),
         py::arg("states"), py::arg("merge_gap"),
         "A contact's statistics from its samples (t, R, tau, dt; state names) by the C++ rule every "

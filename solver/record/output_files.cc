@@ -104,37 +104,44 @@ nlohmann::json summary_json(const Scene& scene, const SimulationResult& r) {
   return s;
 }
 
+void check_outputs_finite(const Scene& scene, const SimulationResult& r) {
+  for (double v : {r.energy_initial, r.energy_final, r.momentum_drift_max, r.critical_dt})
+    check_finite(v, "summary value");
+  for (const ContactSummary& c : r.contacts)
+    for (double v :
+         {c.impulse_normal, c.impulse_tangential, c.peak_R, c.peak_R_excluding_closure, c.real_gap_min})
+      check_finite(v, "contact summary value");
+  const auto cols = history_columns(static_cast<int>(scene.contacts.size()));
+  for (const HistoryRow& row : r.history) {
+    const std::vector<double> values = history_values(row);
+    for (std::size_t i = 0; i < values.size(); ++i)
+      if (!std::isfinite(values[i]))
+        throw std::runtime_error(fmt::format(
+            "non-finite value of '{}' at t = {} s: the run diverged (a dt above the stability limit?)",
+            cols[i], row.t));
+  }
+}
+
 void write_outputs(const Scene& scene, const SimulationResult& r, const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
   const auto summary = dir / "summary.json", history = dir / "history.csv";
   std::filesystem::remove(summary);  // a stale summary must not vouch for a new, failed run
   try {
-    for (double v : {r.energy_initial, r.energy_final, r.momentum_drift_max, r.critical_dt})
-      check_finite(v, "summary value");
-    for (const ContactSummary& c : r.contacts)
-      for (double v :
-           {c.impulse_normal, c.impulse_tangential, c.peak_R, c.peak_R_excluding_closure, c.real_gap_min})
-        check_finite(v, "contact summary value");
-    const int nc = static_cast<int>(scene.contacts.size());
-    fmt::memory_buffer b;
-    const auto cols = history_columns(nc);
-    fmt::format_to(std::back_inserter(b), "{}\n", fmt::join(cols, ","));
-    for (const HistoryRow& row : r.history) {
-      const std::vector<double> values = history_values(row);
-      for (std::size_t i = 0; i < values.size(); ++i) {
-        if (!std::isfinite(values[i]))
-          throw std::runtime_error(
-              fmt::format("non-finite value of '{}' at t = {} s: the run diverged "
-                          "(a dt above the stability limit?)",
-                          cols[i], row.t));
-        fmt::format_to(std::back_inserter(b), "{}{}", i ? "," : "", values[i]);
+    check_outputs_finite(scene, r);
+    if (scene.output.history) {
+      fmt::memory_buffer b;
+      fmt::format_to(std::back_inserter(b), "{}\n",
+                     fmt::join(history_columns(static_cast<int>(scene.contacts.size())), ","));
+      for (const HistoryRow& row : r.history) {
+        const std::vector<double> values = history_values(row);
+        for (std::size_t i = 0; i < values.size(); ++i)
+          fmt::format_to(std::back_inserter(b), "{}{}", i ? "," : "", values[i]);
+        b.push_back('\n');
       }
-      b.push_back('\n');
-    }
-    if (scene.output.history)
       write_file_atomic(history, fmt::to_string(b));
-    else
+    } else {
       std::filesystem::remove(history);  // [output] history = false: no rows were kept
+    }
     write_file_atomic(summary, summary_json(scene, r).dump(2) + "\n");
   } catch (...) {
     std::filesystem::remove(history);

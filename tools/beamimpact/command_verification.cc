@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
-#include <ctime>
 #include <filesystem>
 #include <memory>
 
@@ -20,6 +19,7 @@
 #include <verification/matrix/interruption.hpp>
 #include <verification/matrix/reports.hpp>
 #include <verification/matrix/sweep.hpp>
+#include <verification/matrix/verify.hpp>
 #include <beamimpact/version.hpp>
 #include "CommandExit.hpp"
 
@@ -45,13 +45,6 @@ struct SweepArgs {
   std::string scene;
 };
 
-std::string utc_now() {
-  const std::time_t t = std::time(nullptr);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
-  return buf;
-}
-
 /// Starts runs with this very program; external methods' scripts resolve against `root`.
 Launcher launcher(const fs::path& root) {
   Launcher l;
@@ -69,91 +62,33 @@ void compare(const CompareArgs& a) {
 }
 
 void verify(const VerifyArgs& a) {
-  const auto start = std::chrono::steady_clock::now();
-  const std::string started = utc_now();
-  if (a.jobs < 1) throw SceneError(a.matrix, "--jobs", "expected a positive number of parallel runs");
   forward_interruptions();
-  const VerificationMatrix m = VerificationMatrix::load(a.matrix);
-  std::vector<JobSpec> specs = m.runs(a.tier);
-  std::vector<const Case*> cases;
-  std::vector<const Convergence*> ladders;
-  std::vector<const RunCheck*> checks;
-  auto selected = [&](const std::string& name) {
-    return a.only.empty() || name.find(a.only) != std::string::npos;
-  };
-  for (const auto& c : m.cases)
-    if (VerificationMatrix::in_tier(c.tier, a.tier) && selected(c.name())) cases.push_back(&c);
-  for (const auto& v : m.convergence)
-    if (VerificationMatrix::in_tier(v.tier, a.tier) && selected(v.name())) ladders.push_back(&v);
-  for (const auto& c : m.checks)
-    if (VerificationMatrix::in_tier(c.tier, a.tier) && selected(c.name())) checks.push_back(&c);
-  if (!a.only.empty()) {  // only the runs the selected items need
-    specs.clear();
-    std::set<std::string> seen;
-    auto add = [&](const JobSpec& s) {
-      if (seen.insert(s.key()).second) specs.push_back(s);
-    };
-    for (const auto* c : cases) {
-      add(c->run);
-      add(c->reference);
-    }
-    for (const auto* v : ladders) {
-      for (const auto& s : v->runs) add(s);
-      if (v->reference) add(*v->reference);
-    }
-    for (const auto* c : checks) add(c->run);
-  }
+  VerifyOptions o;
+  o.matrix = a.matrix;
+  o.out = a.out;
+  o.tier = a.tier;
+  o.only = a.only;
+  o.jobs = a.jobs;
+  o.executor = study::distributed_jobs;
+  o.quiet = study::World::rank() != 0;
+  if (study::World::size() > 1) o.executor_note = fmt::format(", {} MPI ranks", study::World::size());
+  const auto result = verification::verify(o, fs::read_symlink("/proc/self/exe"));
+  if (!result) return;  // an MPI worker rank: rank 0 evaluates and writes the reports
   const fs::path out = a.out;
-  fs::create_directories(out);
-  if (study::World::rank() == 0)
-    fmt::print(stderr,
-               "verify: {} case(s), {} convergence ladder(s), {} check(s), {} run(s), tier {}, {} job(s){}\n",
-               cases.size(), ladders.size(), checks.size(), specs.size(), a.tier, a.jobs,
-               study::World::size() > 1 ? fmt::format(", {} MPI ranks", study::World::size()) : "");
-  const auto ran = study::distributed_jobs(specs, out / "runs", launcher(m.root), a.jobs, m.timeout);
-  if (!ran) return;  // an MPI worker rank: rank 0 evaluates and writes the reports
-  const auto& runs = *ran;
-
-  std::vector<ItemResult> items;
-  for (const auto* c : cases) items.push_back(evaluate_case(*c, runs));
-  for (const auto* v : ladders) items.push_back(evaluate_ladder(*v, runs));
-  for (const auto* c : checks) items.push_back(evaluate_check(*c, runs));
-
-  ReportContext ctx;
-  ctx.command = fmt::format("beamimpact verify {} --tier {} --out {} --jobs {}{}", a.matrix, a.tier, a.out,
-                            a.jobs, a.only.empty() ? "" : " --only '" + a.only + "'");
-  ctx.matrix = a.matrix;
-  ctx.tier = a.tier;
-  ctx.version = kVersion;
-  ctx.started = started;
-  ctx.jobs = a.jobs;
-  ctx.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (interruption())
-    ctx.incomplete =
-        fmt::format("interrupted by signal {}; runs not finished are failed or skipped", interruption());
-  write_junit(out / "junit.xml", ctx, items);
-  write_json(out / "norms.json", ctx, items);
-  write_markdown(out / "report.md", ctx, items);
-
-  int gates = 0, failed = 0, skipped = 0;
-  for (const auto& i : items)
-    for (const auto& g : i.gates) {
-      ++gates;
-      if (g.status == GateStatus::kFail) {
-        ++failed;
-        fmt::print("FAIL {}: {} ({})\n", i.name, g.gate.metric, g.message);
-      }
-      skipped += g.status == GateStatus::kSkipped;
-    }
+  write_verify_reports(out, *result);
+  for (const auto& i : result->items)
+    for (const auto& g : i.gates)
+      if (g.status == GateStatus::kFail) fmt::print("FAIL {}: {} ({})\n", i.name, g.gate.metric, g.message);
+  const GateCounts n = count_gates(result->items);
   fmt::print("verify {}: {} gates, {} passed, {} failed, {} skipped, {:.1f} s\nreport: {}\n",
-             failed ? "FAILED" : "passed", gates, gates - failed - skipped, failed, skipped, ctx.wall_seconds,
-             (out / "report.md").string());
+             result->passed() ? "passed" : "FAILED", n.gates, n.pass, n.fail, n.skipped,
+             result->context.wall_seconds, (out / "report.md").string());
   fmt::print("junit: {}\nnorms: {}\n", (out / "junit.xml").string(), (out / "norms.json").string());
   if (interruption()) {
     fmt::print(stderr, "verify: interrupted (signal {}): the report is marked incomplete\n", interruption());
     throw CommandExit{interrupted_exit_code()};
   }
-  if (failed) throw CommandExit{1};
+  if (!result->passed()) throw CommandExit{1};
 }
 
 void sweep(SweepArgs& a) {

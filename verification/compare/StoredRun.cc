@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include <solver/record/output_files.hpp>
 #include <solver/scene/SceneError.hpp>
 #include <solver/schema/output_schema.hpp>
 
@@ -138,6 +139,21 @@ StoredRun StoredRun::read(const std::filesystem::path& dir) {
   }
   check_times(h.columns_.at("t"), csv);
   return h;
+}
+
+StoredRun StoredRun::from_result(const Scene& scene, const SimulationResult& result, std::string label) {
+  check_outputs_finite(scene, result);
+  if (!scene.output.history)
+    throw SceneError(scene.file, "output.history",
+                     "expected true: a comparison needs the run's history rows");
+  const std::vector<std::string> names = history_columns(static_cast<int>(scene.contacts.size()));
+  std::map<std::string, std::vector<double>> columns;
+  for (const auto& n : names) columns[n].reserve(result.history.size());
+  for (const HistoryRow& row : result.history) {
+    const std::vector<double> v = history_values(row);
+    for (std::size_t i = 0; i < names.size(); ++i) columns[names[i]].push_back(v[i]);
+  }
+  return from_columns(std::move(columns), summary_json(scene, result), std::move(label));
 }
 
 StoredRun StoredRun::from_columns(std::map<std::string, std::vector<double>> columns, nlohmann::json summary,

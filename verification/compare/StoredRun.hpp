@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <solver/record/SimulationResult.hpp>
+
 namespace beamimpact::verification {
 
 /// @brief The history of one run, column by column, plus its summary.
@@ -22,6 +24,13 @@ class StoredRun {
   /// expected) for a missing file, a missing `t` or `R` column, a short row, a non-number, a
   /// non-finite value or times that do not increase.
   static StoredRun read(const std::filesystem::path& dir);
+
+  /// @brief The run a method returned, as read() would read it back from the run directory
+  /// write_outputs() writes (the same numbers: both files round-trip every double), without the
+  /// files. Throws std::runtime_error for a non-finite value (check_outputs_finite()) and
+  /// SceneError for a result without rows ([output] history = false).
+  /// @param scene the scene the run solved; @param result its result; @param label for messages
+  static StoredRun from_result(const Scene& scene, const SimulationResult& result, std::string label);
 
   /// @brief Builds a history from columns in memory (tests, perturbations); `t` must be present.
   static StoredRun from_columns(std::map<std::string, std::vector<double>> columns,

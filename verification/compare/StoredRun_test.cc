@@ -1,11 +1,14 @@
 // Reading a run directory: good files parse, bad ones give one message naming file and column.
 #include <verification/compare/StoredRun.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
 #include <gtest/gtest.h>
 
+#include <api/run.hpp>
+#include <solver/record/output_files.hpp>
 #include <solver/scene/SceneError.hpp>
 #include <solver/testing/test_scenes.hpp>
 
@@ -90,6 +93,28 @@ TEST(StoredRun, BadSummaryNamesTheKey) {
     EXPECT_NE(msg.find(c.expect), std::string::npos) << c.name << ": " << msg;
     EXPECT_NE(msg.find((dir / "summary.json").string()), std::string::npos) << c.name << ": " << msg;
   }
+}
+
+// A run in memory is the run its directory holds: from_result gives the columns and summary that
+// read() gets back from the files write_outputs writes (both formats round-trip every double).
+TEST(StoredRun, FromResultEqualsTheRunDirectory) {
+  const Scene scene = beamimpact::testing::load_paper_scene("s1_central", {"time.end=3.0"});
+  const SimulationResult r = beamimpact::run(scene, "paper");
+  const fs::path dir = beamimpact::testing::temp_path("rh_from_result");
+  fs::remove_all(dir);
+  write_outputs(scene, r, dir);
+  const StoredRun disk = StoredRun::read(dir), memory = StoredRun::from_result(scene, r, "memory");
+  ASSERT_GT(disk.t().size(), 10u);
+  EXPECT_EQ(memory.columns(), disk.columns());
+  EXPECT_EQ(memory.summary().dump(), disk.summary().dump());
+  fs::remove_all(dir);
+}
+
+TEST(StoredRun, FromResultRefusesANonFiniteValue) {
+  const Scene scene = beamimpact::testing::load_paper_scene("s1_central", {"time.end=0.1"});
+  SimulationResult r = beamimpact::run(scene, "paper");
+  r.history.back().kinetic = std::nan("");
+  EXPECT_THROW(StoredRun::from_result(scene, r, "memory"), std::runtime_error);
 }
 
 }  // namespace

@@ -63,6 +63,33 @@ std::string GateResult::limit() const {
   return s;
 }
 
+std::optional<double> GateResult::margin() const {
+  if (!value || (gate.tol.has_value() + gate.min_order.has_value() + gate.richardson.has_value()) != 1)
+    return std::nullopt;
+  if (gate.tol) return *gate.tol > 0.0 ? std::optional(*value / *gate.tol) : std::nullopt;
+  if (gate.min_order) return *value > 0.0 ? std::optional(*gate.min_order / *value) : std::nullopt;
+  return *gate.richardson > 0.0 ? std::optional(*value / *gate.richardson) : std::nullopt;
+}
+
+GateCounts count_gates(const std::vector<ItemResult>& items) {
+  GateCounts t;
+  for (const auto& i : items)
+    for (const auto& g : i.gates) {
+      ++t.gates;
+      if (g.status == GateStatus::kPass)
+        ++t.pass;
+      else if (g.status == GateStatus::kFail)
+        ++t.fail;
+      else
+        ++t.skipped;
+    }
+  return t;
+}
+
+bool verification_passed(const std::vector<ItemResult>& items, bool complete) {
+  return complete && count_gates(items).fail == 0;
+}
+
 bool ItemResult::passed() const {
   for (const auto& g : gates)
     if (g.status == GateStatus::kFail) return false;
@@ -140,8 +167,7 @@ ItemResult evaluate_case(const Case& c, const std::map<std::string, JobOutcome>&
   apply_gates(
       r, c.gates,
       [&] {
-        return compare_runs(StoredRun::read(runs.at(c.run.key()).dir),
-                            StoredRun::read(runs.at(c.reference.key()).dir));
+        return compare_runs(*stored_run(runs.at(c.run.key())), *stored_run(runs.at(c.reference.key())));
       },
       "comparison");
   return r;
@@ -151,11 +177,14 @@ ItemResult evaluate_check(const RunCheck& c, const std::map<std::string, JobOutc
   ItemResult r = item_for("check", c.run, c.name(), c.tier, c.required, c.note, runs);
   if (!runs_ok(r, {&c.run}, c.gates, runs)) return r;  // a crash, a NaN or a refusal fails every gate
   apply_gates(
-      r, c.gates, [&] { return check_run(StoredRun::read(runs.at(c.run.key()).dir)); }, "health check");
+      r, c.gates, [&] { return check_run(*stored_run(runs.at(c.run.key()))); }, "health check");
   return r;
 }
 
-ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, JobOutcome>& runs) {
+namespace {
+
+/// A ladder's item: its identity and the wall times of its rungs.
+ItemResult ladder_item(const Convergence& v, const std::map<std::string, JobOutcome>& runs) {
   ItemResult r;
   r.kind = "convergence";
   r.scene = v.runs.front().scene_name();
@@ -165,30 +194,29 @@ ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, Job
   r.required = v.required;
   r.note = v.note;
   if (v.reference) r.reference = v.reference->settings_label();
-  std::vector<const JobSpec*> specs;
-  if (v.reference) specs.push_back(&*v.reference);
-  for (const auto& s : v.runs) {
-    specs.push_back(&s);
+  for (const auto& s : v.runs)
     if (auto it = runs.find(s.key()); it != runs.end()) {
       r.wall_seconds += it->second.process_seconds;
       r.solver_seconds += it->second.solver_seconds;
     }
+  return r;
+}
+
+/// The ladder's comparisons: every rung against the reference, or consecutive pairs.
+void compare_rungs(const Convergence& v, const std::map<std::string, JobOutcome>& runs, ItemResult& r) {
+  std::vector<std::shared_ptr<const StoredRun>> rungs;  // each rung once, also when read here
+  for (const auto& s : v.runs) rungs.push_back(stored_run(runs.at(s.key())));
+  if (v.reference) {  // every rung against the reference
+    const auto ref = stored_run(runs.at(v.reference->key()));
+    for (const auto& rung : rungs) r.comparisons.push_back(compare_runs(*rung, *ref));
+  } else {  // consecutive pairs
+    for (std::size_t i = 0; i + 1 < rungs.size(); ++i)
+      r.comparisons.push_back(compare_runs(*rungs[i], *rungs[i + 1]));
   }
-  if (!runs_ok(r, specs, v.gates, runs)) return r;
-  try {
-    if (v.reference) {  // every rung against the reference
-      const StoredRun ref = StoredRun::read(runs.at(v.reference->key()).dir);
-      for (const auto& s : v.runs) r.comparisons.push_back(compare_runs(StoredRun::read(runs.at(s.key()).dir), ref));
-    } else {  // consecutive pairs
-      for (std::size_t i = 0; i + 1 < v.runs.size(); ++i)
-        r.comparisons.push_back(compare_runs(StoredRun::read(runs.at(v.runs[i].key()).dir),
-                                             StoredRun::read(runs.at(v.runs[i + 1].key()).dir)));
-    }
-  } catch (const std::exception& e) {
-    not_evaluated(r, v.gates, std::string("comparison failed: ") + e.what(), false);
-    return r;
-  }
-  // Orders of every norm (the table in the report), then the gates on the finest pair.
+}
+
+/// Orders of every norm (the table in the report) and, with a reference, the Richardson limits.
+void add_orders(const Convergence& v, ItemResult& r) {
   for (const auto& n : r.comparisons.front().norms) {
     auto& [errors, orders] = r.orders[n.name];
     for (const auto& cmp : r.comparisons) {
@@ -208,55 +236,79 @@ ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, Job
       r.richardson[n.name] = {lim->second, lim->first, *n3->b, std::abs(lim->first - *n3->b) / std::abs(*n3->b),
                               std::abs(lim->first - *n3->a) / std::abs(*n3->b)};
   }
-  for (const auto& g : v.gates) {
-    GateResult gr{g, std::nullopt, GateStatus::kPass, {}};
-    const auto it = r.orders.find(g.metric);
-    if (it == r.orders.end()) {
-      gr.status = GateStatus::kFail;
-      gr.message = "norm '" + g.metric + "' not produced";
-    } else {
-      const auto& [errors, orders] = it->second;
-      const auto finest = errors.back();
-      if (g.richardson) {
-        const auto rich = r.richardson.find(g.metric);
-        if (rich == r.richardson.end()) {
-          gr.status = GateStatus::kFail;
-          gr.message = "no Richardson limit: the last three rungs' differences do not shrink monotonically";
-        } else if (rich->second.error > *g.richardson * rich->second.estimate) {
-          gr.status = GateStatus::kFail;
-          gr.message = fmt::format(
-              "Richardson limit {:.6g} (order {:.3g}) is {:.3g} from the reference {:.6g}, beyond {:g} x its "
-              "error estimate {:.3g}",
-              rich->second.limit, rich->second.order, rich->second.error, rich->second.reference, *g.richardson,
-              rich->second.estimate);
-        }
-        // The value: the distance to the reference in units of the error estimate.
-        if (rich != r.richardson.end() && rich->second.estimate > 0.0)
-          gr.value = rich->second.error / rich->second.estimate;
-      }
-      if (g.min_order && gr.status == GateStatus::kPass) {
-        gr.value = orders.empty() ? std::nullopt : orders.back();
-        if (!gr.value) {
-          const bool zero = finest && *finest == 0.0;
-          gr.status = zero ? GateStatus::kPass : GateStatus::kFail;
-          gr.message = zero ? "errors are zero (converged to round-off): no order to observe"
-                            : "order not observable (an error is zero or unavailable)";
-        } else if (*gr.value < *g.min_order) {
-          gr.status = GateStatus::kFail;
-          gr.message = fmt::format("observed order {:.3g} below {:g}", *gr.value, *g.min_order);
-        }
-      }
-      if (g.tol && gr.status == GateStatus::kPass) {
-        if (!finest || *finest > *g.tol) {
-          gr.status = GateStatus::kFail;
-          gr.message = finest ? fmt::format("finest-pair error {:.4g} exceeds {:g}", *finest, *g.tol)
-                              : "finest-pair error unavailable";
-        }
-        if (!g.min_order && !g.richardson) gr.value = finest;
-      }
-    }
-    r.gates.push_back(gr);
+}
+
+/// The Richardson part of a ladder gate: fails gr unless the limit is within the gate's factor of
+/// its error estimate from the reference; the value is that distance in estimates.
+void richardson_gate(const Gate& g, const ItemResult& r, GateResult& gr) {
+  const auto rich = r.richardson.find(g.metric);
+  if (rich == r.richardson.end()) {
+    gr.status = GateStatus::kFail;
+    gr.message = "no Richardson limit: the last three rungs' differences do not shrink monotonically";
+  } else if (rich->second.error > *g.richardson * rich->second.estimate) {
+    gr.status = GateStatus::kFail;
+    gr.message = fmt::format(
+        "Richardson limit {:.6g} (order {:.3g}) is {:.3g} from the reference {:.6g}, beyond {:g} x its "
+        "error estimate {:.3g}",
+        rich->second.limit, rich->second.order, rich->second.error, rich->second.reference, *g.richardson,
+        rich->second.estimate);
   }
+  // The value: the distance to the reference in units of the error estimate.
+  if (rich != r.richardson.end() && rich->second.estimate > 0.0)
+    gr.value = rich->second.error / rich->second.estimate;
+}
+
+/// One gate of a ladder on its finest pair: Richardson, then order, then tolerance.
+GateResult ladder_gate(const Gate& g, const ItemResult& r) {
+  GateResult gr{g, std::nullopt, GateStatus::kPass, {}};
+  const auto it = r.orders.find(g.metric);
+  if (it == r.orders.end()) {
+    gr.status = GateStatus::kFail;
+    gr.message = "norm '" + g.metric + "' not produced";
+    return gr;
+  }
+  const auto& [errors, orders] = it->second;
+  const auto finest = errors.back();
+  if (g.richardson) richardson_gate(g, r, gr);
+  if (g.min_order && gr.status == GateStatus::kPass) {
+    gr.value = orders.empty() ? std::nullopt : orders.back();
+    if (!gr.value) {
+      const bool zero = finest && *finest == 0.0;
+      gr.status = zero ? GateStatus::kPass : GateStatus::kFail;
+      gr.message = zero ? "errors are zero (converged to round-off): no order to observe"
+                        : "order not observable (an error is zero or unavailable)";
+    } else if (*gr.value < *g.min_order) {
+      gr.status = GateStatus::kFail;
+      gr.message = fmt::format("observed order {:.3g} below {:g}", *gr.value, *g.min_order);
+    }
+  }
+  if (g.tol && gr.status == GateStatus::kPass) {
+    if (!finest || *finest > *g.tol) {
+      gr.status = GateStatus::kFail;
+      gr.message = finest ? fmt::format("finest-pair error {:.4g} exceeds {:g}", *finest, *g.tol)
+                          : "finest-pair error unavailable";
+    }
+    if (!g.min_order && !g.richardson) gr.value = finest;
+  }
+  return gr;
+}
+
+}  // namespace
+
+ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, JobOutcome>& runs) {
+  ItemResult r = ladder_item(v, runs);
+  std::vector<const JobSpec*> specs;
+  if (v.reference) specs.push_back(&*v.reference);
+  for (const auto& s : v.runs) specs.push_back(&s);
+  if (!runs_ok(r, specs, v.gates, runs)) return r;
+  try {
+    compare_rungs(v, runs, r);
+  } catch (const std::exception& e) {
+    not_evaluated(r, v.gates, std::string("comparison failed: ") + e.what(), false);
+    return r;
+  }
+  add_orders(v, r);  // the orders of every norm, then the gates on the finest pair
+  for (const auto& g : v.gates) r.gates.push_back(ladder_gate(g, r));
   return r;
 }
 
@@ -274,12 +326,11 @@ nlohmann::json to_json(const ItemResult& r) {
                    {"note", r.note}};
   auto& gates = j["gates"] = nlohmann::json::array();
   for (const auto& g : r.gates) {
-    nlohmann::json e{{"metric", g.gate.metric},
-                     {"limit", g.limit()},
-                     {"why", g.gate.why},
-                     {"status", to_string(g.status)},
-                     {"message", g.message}};
+    nlohmann::json e{{"metric", g.gate.metric},       {"limit", g.limit()},   {"why", g.gate.why},
+                     {"status", to_string(g.status)}, {"passed", g.passed()}, {"message", g.message}};
     e["value"] = g.value ? nlohmann::json(*g.value) : nlohmann::json(nullptr);
+    const auto margin = g.margin();
+    e["margin"] = margin ? nlohmann::json(*margin) : nlohmann::json(nullptr);
     if (g.gate.tol) e["tol"] = *g.gate.tol;
     if (g.gate.min_order) e["min_order"] = *g.gate.min_order;
     if (g.gate.richardson) e["richardson"] = *g.gate.richardson;

@@ -30,6 +30,12 @@ struct GateResult {
   std::string message;  ///< why it failed / was skipped; "" on pass
   /// @brief "<= 0.01" or "order >= 0.9" (and "<= tol" too for ladders with both).
   std::string limit() const;
+  /// @brief True for a passed gate (norms.json "passed").
+  bool passed() const { return status == GateStatus::kPass; }
+  /// @brief How much of its one limit the value uses, <= 1 when it holds: value / tol (an error),
+  /// min_order / value (an observed order), value / richardson (Richardson distance); empty
+  /// without a value or with more than one limit (norms.json "margin").
+  std::optional<double> margin() const;
 };
 
 /// @brief Outcome of one case or ladder: its gates and what they were computed from.
@@ -61,6 +67,19 @@ struct ItemResult {
   /// @brief True when no gate failed.
   bool passed() const;
 };
+
+/// @brief Gates of a verification run by verdict.
+struct GateCounts {
+  int gates = 0, pass = 0, fail = 0, skipped = 0;
+};
+
+/// @brief Counts the gates of every item by verdict.
+GateCounts count_gates(const std::vector<ItemResult>& items);
+
+/// @brief The one pass rule of a verification run: it is complete (no interruption: every run it
+/// planned was started) and no gate failed (a required item's skipped gate is a failed one). The
+/// exit status, norms.json's "verdict", report.md and report.html (which reads "verdict") follow it.
+bool verification_passed(const std::vector<ItemResult>& items, bool complete);
 
 /// @brief Decides one gate on a comparison (error <= tol). A missing or unavailable norm fails.
 GateResult check_gate(const Gate& gate, const Comparison& cmp);

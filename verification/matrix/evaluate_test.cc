@@ -1,7 +1,13 @@
 // Gate decisions and observed orders on hand-made comparisons.
 #include <verification/matrix/evaluate.hpp>
+#include <verification/matrix/reports.hpp>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -52,6 +58,37 @@ TEST(Richardson, ExactForAPurePowerAndRefusedOutsideTheAsymptoticRange) {
   EXPECT_NEAR(lim->second, 2.0, 1e-12);
   EXPECT_FALSE(richardson_limit(1.0, 2.0, 1.5, 2.0));  // oscillating
   EXPECT_FALSE(richardson_limit(1.0, 1.5, 2.5, 2.0));  // diverging
+}
+
+TEST(Evaluate, MarginIsTheShareOfTheLimitUsed) {
+  // An error of 0.005 under a limit of 0.01 uses half of it; an order of 2 against a minimum of 1.5
+  // uses 0.75 of it (min_order / order: below 1 while the order holds).
+  EXPECT_DOUBLE_EQ(
+      *check_gate({"impulse", 0.01, std::nullopt, "t", std::nullopt}, with_impulse(0.005)).margin(), 0.5);
+  GateResult order{{"impulse", std::nullopt, 1.5, "t", std::nullopt}, 2.0, GateStatus::kPass, ""};
+  EXPECT_DOUBLE_EQ(*order.margin(), 0.75);
+  order.gate.tol = 0.1;  // two limits: no single margin
+  EXPECT_FALSE(order.margin().has_value());
+}
+
+TEST(Evaluate, OneVerdictForEveryReport) {
+  // Every gate passes, but the run was interrupted: not a pass, in norms.json and report.md alike.
+  ItemResult item;
+  item.scene = "s";
+  item.gates.push_back(check_gate({"impulse", 0.01, std::nullopt, "t", std::nullopt}, with_impulse(0.0)));
+  ReportContext ctx;
+  ctx.incomplete = "interrupted by signal 2";
+  EXPECT_FALSE(verification_passed({item}, false));
+  EXPECT_EQ(norms_json(ctx, {item}).at("verdict"), "FAIL");
+  const auto md =
+      std::filesystem::temp_directory_path() / ("evaluate_test_" + std::to_string(::getpid()) + ".md");
+  write_markdown(md, ctx, {item});
+  std::ifstream in(md);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::filesystem::remove(md);
+  EXPECT_NE(text.find("**FAIL**: 1 gates"), std::string::npos);
+  ctx.incomplete.clear();
+  EXPECT_EQ(norms_json(ctx, {item}).at("verdict"), "PASS");
 }
 
 }  // namespace

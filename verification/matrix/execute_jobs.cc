@@ -17,7 +17,7 @@ namespace beamimpact::verification {
 
 JobOutcome execute_job(const JobSpec& spec, const std::filesystem::path& dir, const Launcher& launcher,
                        const std::string& why, double timeout) {
-  JobOutcome o{spec, dir, JobOutcome::Status::kFailed, {}, 0.0, 0.0, 0, 0.0};
+  JobOutcome o{spec, dir, JobOutcome::Status::kFailed, {}, 0.0, 0.0, 0, 0.0, nullptr};
   if (!why.empty()) {
     o.status = JobOutcome::Status::kSkipped;
     o.message = why;
@@ -46,22 +46,27 @@ JobOutcome execute_job(const JobSpec& spec, const std::filesystem::path& dir, co
                     : fmt::format("exit code {} (see {})", p.exit_code, (dir / "run.log").string());
     return o;
   }
-  std::ifstream in(dir / "summary.json");
-  if (!in) {
+  if (!std::filesystem::exists(dir / "summary.json", ec)) {
     o.message = "exit code 0 but no summary.json (see " + (dir / "run.log").string() + ")";
     return o;
   }
-  try {
-    const auto j = nlohmann::json::parse(in);
+  try {  // read once: evaluate compares this run in memory
+    o.run = std::make_shared<const StoredRun>(StoredRun::read(dir));
+    const nlohmann::json& j = o.run->summary();
     o.solver_seconds = j.value("wall_seconds", 0.0);
     o.steps = j.value("steps", 0L);
     o.dt = j.value("dt", 0.0);
   } catch (const std::exception& e) {
-    o.message = std::string("unreadable summary.json: ") + e.what();
+    o.message = std::string("unreadable run: ") + e.what();
+    o.run.reset();
     return o;
   }
   o.status = JobOutcome::Status::kOk;
   return o;
+}
+
+std::shared_ptr<const StoredRun> stored_run(const JobOutcome& o) {
+  return o.run ? o.run : std::make_shared<const StoredRun>(StoredRun::read(o.dir));
 }
 
 std::vector<JobSpec> schedule_order(const std::vector<JobSpec>& specs) {

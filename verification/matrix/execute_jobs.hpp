@@ -6,10 +6,12 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include <verification/compare/StoredRun.hpp>
 #include <verification/matrix/JobSpec.hpp>
 
 namespace beamimpact::verification {
@@ -26,7 +28,13 @@ struct JobOutcome {
   double solver_seconds = 0.0;   ///< s, summary.json wall_seconds (the method's own time)
   long steps = 0;                ///< summary.json steps
   double dt = 0.0;               ///< s, summary.json dt (the step actually used)
+  /// @brief The finished run (history.csv and summary.json), read once by execute_job; null when
+  /// not ok or when the outcome came from another MPI rank (stored_run() reads it then).
+  std::shared_ptr<const StoredRun> run;
 };
+
+/// @brief The outcome's run: JobOutcome::run, or read from its directory when the outcome has none.
+std::shared_ptr<const StoredRun> stored_run(const JobOutcome& o);
 
 /// @brief Name of a status: "ok", "failed", "skipped".
 const char* status_name(JobOutcome::Status s);

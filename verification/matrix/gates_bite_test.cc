@@ -72,6 +72,7 @@ class GatesBite : public ::testing::Test {
                                         const fs::path& dir, const std::string& metric,
                                         std::string* message = nullptr) {
     runs.at(c.run.key()).dir = dir;
+    runs.at(c.run.key()).run.reset();  // evaluate reads the perturbed directory
     const ItemResult r = evaluate_case(c, runs);
     for (const auto& g : r.gates)
       if (g.gate.metric == metric) {

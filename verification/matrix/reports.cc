@@ -1,10 +1,13 @@
 #include <verification/matrix/reports.hpp>
 
+#include <ctime>
 #include <fstream>
 #include <map>
 #include <set>
 
 #include <fmt/format.h>
+
+#include <verification/matrix/Table.hpp>
 
 namespace beamimpact::verification {
 namespace {
@@ -42,30 +45,48 @@ std::map<std::string, std::vector<const ItemResult*>> by_scene(const std::vector
   return m;
 }
 
-struct Totals {
-  int gates = 0, pass = 0, fail = 0, skipped = 0;
-};
-
-Totals totals(const std::vector<ItemResult>& items) {
-  Totals t;
-  for (const auto& i : items)
-    for (const auto& g : i.gates) {
-      ++t.gates;
-      if (g.status == GateStatus::kPass)
-        ++t.pass;
-      else if (g.status == GateStatus::kFail)
-        ++t.fail;
-      else
-        ++t.skipped;
-    }
-  return t;
+/// A ladder's tables: the errors and observed orders of every norm, then the Richardson limits.
+std::string ladder_tables(const ItemResult& i) {
+  std::string m = fmt::format(
+      "\nObserved orders, {} ({}, then orders):\n\n", i.name,
+      i.reference.empty() ? "errors of consecutive pairs" : "errors of each rung against the reference");
+  const std::size_t ne = i.orders.begin()->second.first.size();
+  std::vector<std::string> header{"norm"};
+  for (std::size_t k = 0; k < ne; ++k) header.push_back(fmt::format("e{}", k + 1));
+  for (std::size_t k = 0; k + 1 < ne; ++k) header.push_back(fmt::format("p{}", k + 1));
+  Table orders(header);
+  for (const auto& c : i.comparisons.front().norms) {
+    const auto& [e, p] = i.orders.at(c.name);
+    std::vector<std::string> row{c.name};
+    for (const auto& v : e) row.push_back(v ? fmt::format("{:.3e}", *v) : "n/a");
+    for (const auto& v : p) row.push_back(v ? fmt::format("{:.2f}", *v) : "-");
+    orders.add(row);
+  }
+  m += orders.markdown();
+  if (i.richardson.empty()) return m;
+  Table rich({"norm", "order p", "limit Q_R", "reference", "abs(Q_R - ref) / ref", "E_R / ref"});
+  for (const auto& [name, x] : i.richardson)
+    rich.add({name, fmt::format("{:.2f}", x.order), fmt::format("{:.6g}", x.limit),
+              fmt::format("{:.6g}", x.reference), fmt::format("{:.2e}", x.error),
+              fmt::format("{:.2e}", x.estimate)});
+  return m +
+         "\nRichardson limits of the last three rungs (their own observed order; the reference not "
+         "used):\n\n" +
+         rich.markdown();
 }
 
 }  // namespace
 
+std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
+  return buf;
+}
+
 void write_junit(const std::filesystem::path& file, const ReportContext& ctx,
                  const std::vector<ItemResult>& items) {
-  const Totals all = totals(items);
+  const GateCounts all = count_gates(items);
   std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   x += fmt::format(
       "<testsuites name=\"beamimpact verify {}{}\" tests=\"{}\" failures=\"{}\" skipped=\"{}\" "
@@ -113,23 +134,35 @@ void write_junit(const std::filesystem::path& file, const ReportContext& ctx,
   write_file_atomic(file, x);
 }
 
-void write_json(const std::filesystem::path& file, const ReportContext& ctx,
-                const std::vector<ItemResult>& items) {
-  const Totals t = totals(items);
-  nlohmann::json j{
-      {"command", ctx.command}, {"matrix", ctx.matrix},       {"tier", ctx.tier},
-      {"version", ctx.version}, {"started_utc", ctx.started}, {"wall_seconds", ctx.wall_seconds},
-      {"jobs", ctx.jobs},       {"gates", t.gates},           {"passed", t.pass},
-      {"failed", t.fail},       {"skipped", t.skipped},       {"complete", ctx.incomplete.empty()}};
+nlohmann::json norms_json(const ReportContext& ctx, const std::vector<ItemResult>& items) {
+  const GateCounts t = count_gates(items);
+  nlohmann::json j{{"command", ctx.command},
+                   {"matrix", ctx.matrix},
+                   {"tier", ctx.tier},
+                   {"version", ctx.version},
+                   {"started_utc", ctx.started},
+                   {"wall_seconds", ctx.wall_seconds},
+                   {"jobs", ctx.jobs},
+                   {"gates", t.gates},
+                   {"passed", t.pass},
+                   {"failed", t.fail},
+                   {"skipped", t.skipped},
+                   {"complete", ctx.incomplete.empty()},
+                   {"verdict", verification_passed(items, ctx.incomplete.empty()) ? "PASS" : "FAIL"}};
   if (!ctx.incomplete.empty()) j["incomplete"] = ctx.incomplete;
   auto& arr = j["items"] = nlohmann::json::array();
   for (const auto& i : items) arr.push_back(to_json(i));
-  write_file_atomic(file, j.dump(1) + "\n");
+  return j;
+}
+
+void write_json(const std::filesystem::path& file, const ReportContext& ctx,
+                const std::vector<ItemResult>& items) {
+  write_file_atomic(file, norms_json(ctx, items).dump(1) + "\n");
 }
 
 void write_markdown(const std::filesystem::path& file, const ReportContext& ctx,
                     const std::vector<ItemResult>& items) {
-  const Totals t = totals(items);
+  const GateCounts t = count_gates(items);
   std::string m = "# beamimpact verification report\n\n";
   if (!ctx.incomplete.empty()) m += "**INCOMPLETE: " + ctx.incomplete + "**\n\n";
   m += fmt::format(
@@ -141,18 +174,16 @@ void write_markdown(const std::filesystem::path& file, const ReportContext& ctx,
   std::string sl;
   for (const auto& s : scenes) sl += (sl.empty() ? "" : ", ") + s;
   m += "- scenes: " + sl + "\n";
-  m += fmt::format("\n**{}**: {} gates, {} passed, {} failed, {} skipped.\n\n", t.fail == 0 ? "PASS" : "FAIL",
-                   t.gates, t.pass, t.fail, t.skipped);
+  m += fmt::format("\n**{}**: {} gates, {} passed, {} failed, {} skipped.\n\n",
+                   verification_passed(items, ctx.incomplete.empty()) ? "PASS" : "FAIL", t.gates, t.pass,
+                   t.fail, t.skipped);
   m += "Value: the error of the run against its reference (relative unless the unit says s or count; "
        "definitions at the end), or the observed order p = log(e_coarse/e_fine)/log(r) for convergence "
        "ladders. "
        "Wall: process time of the run under test (ladders: all rungs).\n";
 
   for (const auto& [scene, list] : by_scene(items)) {
-    m += fmt::format(
-        "\n## {}\n\n| run | reference | norm | value | limit | result | wall s "
-        "|\n|---|---|---|---|---|---|---|\n",
-        scene);
+    Table gates({"run", "reference", "norm", "value", "limit", "result", "wall s"});
     for (const auto* i : list) {
       const std::string run =
           i->kind == "convergence" ? i->name.substr(scene.size() + 1) + " (self-convergence)" : i->settings;
@@ -160,37 +191,13 @@ void write_markdown(const std::filesystem::path& file, const ReportContext& ctx,
         const std::string res = g.status == GateStatus::kPass   ? "pass"
                                 : g.status == GateStatus::kFail ? "**FAIL**: " + g.message
                                                                 : "skipped: " + g.message;
-        m +=
-            fmt::format("| {} | {} | {} | {} | {} | {} | {:.2f} |\n", md_escape(run), md_escape(i->reference),
-                        g.gate.metric, value_text(g), g.limit(), md_escape(res), i->wall_seconds);
+        gates.add({run, i->reference, g.gate.metric, value_text(g), g.limit(), res,
+                   fmt::format("{:.2f}", i->wall_seconds)});
       }
     }
-    for (const auto* i : list) {
-      if (i->kind != "convergence" || i->orders.empty()) continue;
-      m += fmt::format("\nObserved orders, {} ({}, then orders):\n\n", i->name,
-                       i->reference.empty() ? "errors of consecutive pairs" : "errors of each rung against the reference");
-      const std::size_t ne = i->orders.begin()->second.first.size();
-      m += "| norm |";
-      for (std::size_t k = 0; k < ne; ++k) m += fmt::format(" e{} |", k + 1);
-      for (std::size_t k = 0; k + 1 < ne; ++k) m += fmt::format(" p{} |", k + 1);
-      m += "\n|---|";
-      for (std::size_t k = 0; k + 1 < 2 * ne; ++k) m += "---|";
-      m += "\n";
-      for (const auto& c : i->comparisons.front().norms) {
-        const auto& [e, p] = i->orders.at(c.name);
-        m += "| " + c.name + " |";
-        for (const auto& v : e) m += v ? fmt::format(" {:.3e} |", *v) : std::string(" n/a |");
-        for (const auto& v : p) m += v ? fmt::format(" {:.2f} |", *v) : std::string(" - |");
-        m += "\n";
-      }
-      if (!i->richardson.empty()) {
-        m += "\nRichardson limits of the last three rungs (their own observed order; the reference not used):\n\n"
-             "| norm | order p | limit Q_R | reference | abs(Q_R - ref) / ref | E_R / ref |\n|---|---|---|---|---|---|\n";
-        for (const auto& [name, x] : i->richardson)
-          m += fmt::format("| {} | {:.2f} | {:.6g} | {:.6g} | {:.2e} | {:.2e} |\n", name, x.order, x.limit, x.reference,
-                           x.error, x.estimate);
-      }
-    }
+    m += fmt::format("\n## {}\n\n", scene) + gates.markdown();
+    for (const auto* i : list)
+      if (i->kind == "convergence" && !i->orders.empty()) m += ladder_tables(*i);
   }
   // Definitions, once per norm name.
   std::map<std::string, std::string> defs;

@@ -24,14 +24,22 @@ struct ReportContext {
   std::string incomplete;  ///< why the report is incomplete (e.g. "interrupted by signal 2"), "" if complete
 };
 
+/// @brief The current UTC time as "2026-01-31T12:00:00Z" (ReportContext::started, sweep.md).
+std::string utc_now();
+
 /// @brief JUnit XML: one testsuite per scene, one testcase per gate, named
 /// "<scene> <method> dt=<dt> vs <reference>: <metric>" (classname "<scene>.<method>.dt=<dt>").
 void write_junit(const std::filesystem::path& file, const ReportContext& ctx,
                  const std::vector<ItemResult>& items);
 
-/// @brief JSON with the context, every gate and every norm of every comparison.
+/// @brief JSON with the context, every gate and every norm of every comparison: "verdict"
+/// ("PASS" | "FAIL", verification_passed()), the counts "gates", "passed", "failed", "skipped",
+/// and per gate "status", "passed" (bool) and "margin" (GateResult::margin()).
 void write_json(const std::filesystem::path& file, const ReportContext& ctx,
                 const std::vector<ItemResult>& items);
+
+/// @brief The JSON write_json writes (norms.json; the Python module's beamimpact.verify returns it).
+nlohmann::json norms_json(const ReportContext& ctx, const std::vector<ItemResult>& items);
 
 /// @brief Markdown: how it was made, totals, a table per scene (method, dt, reference, norm,
 /// value, limit, result, wall time), the observed orders of each ladder, and the definitions.

@@ -7,6 +7,7 @@
 #include <api/registry.hpp>
 #include <solver/scene/SceneError.hpp>
 #include <verification/compare/compare_runs.hpp>
+#include <verification/matrix/Table.hpp>
 #include <verification/matrix/evaluate.hpp>
 #include <verification/matrix/reports.hpp>
 
@@ -92,31 +93,55 @@ std::optional<SweepResult> execute_sweep(const SweepOptions& o, const Launcher& 
                                ro.message);
     r.reference_dir = ro.dir;
   }
-  const StoredRun reference = StoredRun::read(r.reference_dir);
+  const auto reference = ref ? stored_run(outcomes.at(ref->key()))
+                             : std::make_shared<const StoredRun>(StoredRun::read(r.reference_dir));
   for (const auto& s : specs) {
     SweepPoint p{outcomes.at(s.key()), std::nullopt};
     if (p.outcome.status == JobOutcome::Status::kOk)
-      p.comparison = compare_runs(StoredRun::read(p.outcome.dir), reference);
+      p.comparison = compare_runs(*stored_run(p.outcome), *reference);
     r.points.push_back(std::move(p));
   }
   return r;
 }
 
+namespace {
+
+/// The observed orders between consecutive dts on the same mesh (sweep.md's second table).
+Table order_table(const SweepOptions& o, const SweepResult& r) {
+  const auto& names = sweep_norms();
+  std::vector<std::string> header{"dt pair", "mesh"};
+  header.insert(header.end(), names.begin(), names.end());
+  Table t(header);
+  const std::size_t nm = o.meshes.empty() ? 1 : o.meshes.size();
+  for (std::size_t i = 0; i + nm < r.points.size(); ++i) {
+    const auto& a = r.points[i];
+    const auto& b = r.points[i + nm];
+    if (!a.comparison || !b.comparison || !(a.outcome.dt > 0.0) || !(b.outcome.dt > 0.0)) continue;
+    std::vector<std::string> row{fmt::format("{:.6g} / {:.6g}", a.outcome.dt, b.outcome.dt),
+                                 a.outcome.spec.mesh.empty() ? "scene" : a.outcome.spec.mesh};
+    for (const auto& n : names) {
+      const Norm* x = a.comparison->find(n);
+      const Norm* y = b.comparison->find(n);
+      const auto p = observed_order(x ? x->value : std::nullopt, y ? y->value : std::nullopt,
+                                    a.outcome.dt / b.outcome.dt);
+      row.push_back(p ? fmt::format("{:.2f}", *p) : "-");
+    }
+    t.add(row);
+  }
+  return t;
+}
+
+}  // namespace
+
 void write_sweep(const SweepOptions& o, const SweepResult& r, const std::string& header) {
   fs::create_directories(o.out);
   const auto& names = sweep_norms();
-  // CSV: one row per point, machine-readable.
-  std::string csv = "dt,mesh,status,steps,solver_seconds,process_seconds";
-  for (const auto& n : names) csv += "," + n;
-  csv += "\n";
-  std::string md = "# Timestep sensitivity: " + o.scene.stem().string() + "\n\n" + header;
-  md += "\nErrors against: " + r.reference_label +
-        ". Solver s: the method's own wall time (summary.json); "
-        "process s: including start-up and output.\n\n| dt (s) | mesh | steps | solver s | process s |";
-  for (const auto& n : names) md += " " + n + " |";
-  md += "\n|---|---|---|---|---|";
-  for (std::size_t i = 0; i < names.size(); ++i) md += "---|";
-  md += "\n";
+  // CSV: one row per point, machine-readable; Markdown: the same points for reading.
+  std::vector<std::string> csv_head{"dt", "mesh", "status", "steps", "solver_seconds", "process_seconds"};
+  std::vector<std::string> md_head{"dt (s)", "mesh", "steps", "solver s", "process s"};
+  csv_head.insert(csv_head.end(), names.begin(), names.end());
+  md_head.insert(md_head.end(), names.begin(), names.end());
+  Table csv(csv_head), md(md_head);
   nlohmann::json j{{"scene", o.scene.string()},
                    {"method", o.method},
                    {"reference", r.reference_label},
@@ -127,16 +152,21 @@ void write_sweep(const SweepOptions& o, const SweepResult& r, const std::string&
     const std::string dt =
         p.outcome.dt > 0.0 ? fmt::format("{:.6g}", p.outcome.dt) : (s.dt ? fmt::format("{:g}", *s.dt) : "");
     const Comparison* c = p.comparison ? &*p.comparison : nullptr;
-    csv += fmt::format("{},{},{},{},{:.6g},{:.6g}", dt, s.mesh, status_name(p.outcome.status),
-                       p.outcome.steps, p.outcome.solver_seconds, p.outcome.process_seconds);
-    md += fmt::format("| {} | {} | {} | {:.4g} | {:.4g} |", dt, s.mesh.empty() ? "scene" : s.mesh,
-                      p.outcome.steps, p.outcome.solver_seconds, p.outcome.process_seconds);
+    std::vector<std::string> csv_row{dt,
+                                     s.mesh,
+                                     status_name(p.outcome.status),
+                                     fmt::format("{}", p.outcome.steps),
+                                     fmt::format("{:.6g}", p.outcome.solver_seconds),
+                                     fmt::format("{:.6g}", p.outcome.process_seconds)};
+    std::vector<std::string> md_row{dt, s.mesh.empty() ? "scene" : s.mesh, fmt::format("{}", p.outcome.steps),
+                                    fmt::format("{:.4g}", p.outcome.solver_seconds),
+                                    fmt::format("{:.4g}", p.outcome.process_seconds)};
     for (const auto& n : names) {
-      csv += "," + cell(c, n);
-      md += " " + (c ? cell(c, n) : std::string(status_name(p.outcome.status))) + " |";
+      csv_row.push_back(cell(c, n));
+      md_row.push_back(c ? cell(c, n) : std::string(status_name(p.outcome.status)));
     }
-    csv += "\n";
-    md += "\n";
+    csv.add(csv_row);
+    md.add(md_row);
     nlohmann::json e{{"dt", dt},
                      {"mesh", s.mesh},
                      {"status", status_name(p.outcome.status)},
@@ -148,43 +178,26 @@ void write_sweep(const SweepOptions& o, const SweepResult& r, const std::string&
     if (c) e["comparison"] = c->to_json();
     pts.push_back(e);
   }
-  // Observed orders between consecutive dts on the same mesh.
-  md +=
+  std::string text = "# Timestep sensitivity: " + o.scene.stem().string() + "\n\n" + header;
+  text += "\nErrors against: " + r.reference_label +
+          ". Solver s: the method's own wall time (summary.json); "
+          "process s: including start-up and output.\n\n" +
+          md.markdown();
+  text +=
       "\nObserved order between consecutive dt on the same mesh, p = log(e_i/e_{i+1}) / "
-      "log(dt_i/dt_{i+1}):\n\n| dt pair | mesh |";
-  for (const auto& n : names) md += " " + n + " |";
-  md += "\n|---|---|";
-  for (std::size_t i = 0; i < names.size(); ++i) md += "---|";
-  md += "\n";
-  const std::size_t nm = o.meshes.empty() ? 1 : o.meshes.size();
-  for (std::size_t i = 0; i + nm < r.points.size(); ++i) {
-    const auto& a = r.points[i];
-    const auto& b = r.points[i + nm];
-    if (!a.comparison || !b.comparison || !(a.outcome.dt > 0.0) || !(b.outcome.dt > 0.0)) continue;
-    md += fmt::format("| {:.6g} / {:.6g} | {} |", a.outcome.dt, b.outcome.dt,
-                      a.outcome.spec.mesh.empty() ? "scene" : a.outcome.spec.mesh);
-    for (const auto& n : names) {
-      const Norm* x = a.comparison->find(n);
-      const Norm* y = b.comparison->find(n);
-      const auto p = observed_order(x ? x->value : std::nullopt, y ? y->value : std::nullopt,
-                                    a.outcome.dt / b.outcome.dt);
-      md += p ? fmt::format(" {:.2f} |", *p) : std::string(" - |");
+      "log(dt_i/dt_{i+1}):\n\n" +
+      order_table(o, r).markdown();
+  for (const auto& p : r.points)
+    if (p.comparison) {
+      text += "\nDefinitions:\n\n";
+      for (const auto& n : p.comparison->norms)
+        if (std::find(names.begin(), names.end(), n.name) != names.end())
+          text += "- `" + n.name + "`: " + n.definition + "\n";
+      break;
     }
-    md += "\n";
-  }
-  if (!r.points.empty()) {
-    for (const auto& p : r.points)
-      if (p.comparison) {
-        md += "\nDefinitions:\n\n";
-        for (const auto& n : p.comparison->norms)
-          if (std::find(names.begin(), names.end(), n.name) != names.end())
-            md += "- `" + n.name + "`: " + n.definition + "\n";
-        break;
-      }
-  }
-  write_file_atomic(o.out / "sweep.csv", csv);
+  write_file_atomic(o.out / "sweep.csv", csv.csv());
   write_file_atomic(o.out / "sweep.json", j.dump(1) + "\n");
-  write_file_atomic(o.out / "sweep.md", md);
+  write_file_atomic(o.out / "sweep.md", text);
 }
 
 }  // namespace beamimpact::verification

@@ -80,6 +80,54 @@ struct SplitMix {
 
 std::string number(double v) { return fmt::format("{:.17g}", v); }
 
+/// The table `reference = { method = ..., set = [...] }`.
+void read_reference(TableReader& r, const std::string& file, Study& s) {
+  const toml::node* n = r.raw("reference");
+  if (!n || !n->as_table()) r.fail("reference", "expected a table such as { method = \"ida\", set = [...] }");
+  TableReader rr(*n->as_table(), file, "reference", nullptr);
+  s.reference.method = rr.string("method", "a method name (" + method_names() + ")");
+  (void)method(s.reference.method, file, "reference.method");
+  s.reference.set = rr.strings("set");
+  rr.finish();
+}
+
+/// The optional table `design = { kind = "grid" | "lhs", samples, seed }`.
+void read_design(TableReader& r, const std::string& file, Study& s) {
+  const toml::node* n = r.raw("design");
+  if (!n) return;
+  if (!n->as_table())
+    r.fail("design", "expected a table { kind = \"grid\" } or { kind = \"lhs\", samples = N }");
+  TableReader d(*n->as_table(), file, "design", nullptr);
+  if (d.choice_or("kind", "grid", {"grid", "lhs"}) == "lhs") {
+    s.design = Study::Design::kLatinHypercube;
+    s.samples = d.integer("samples", "the number of Latin hypercube points (>= 1)");
+    if (s.samples < 1 || s.samples > 10000000) d.fail("samples", "expected 1 to 10^7 points");
+    s.seed = static_cast<std::uint64_t>(d.integer_or("seed", 1, "a non-negative seed"));
+  }
+  d.finish();
+}
+
+/// The optional array `breaks = [{ metric, above }]`, each metric one of the study's norms.
+void read_breaks(TableReader& r, const std::string& file, Study& s) {
+  const toml::node* n = r.raw("breaks");
+  if (!n) return;
+  const toml::array* a = n->as_array();
+  if (!a || a->empty()) r.fail("breaks", "expected an array such as [{ metric = \"impulse\", above = 0.1 }]");
+  s.breaks.clear();
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const toml::table* t = a->get(i)->as_table();
+    if (!t) r.fail("breaks", "expected tables { metric = \"impulse\", above = 0.1 }");
+    TableReader b(*t, file, fmt::format("breaks[{}]", i), nullptr);
+    BreakRule rule;
+    rule.metric = b.string("metric", "a comparison norm");
+    if (std::find(s.norms.begin(), s.norms.end(), rule.metric) == s.norms.end())
+      b.fail("metric", "'" + rule.metric + "' is not one of the study's norms");
+    rule.above = b.number("above", "the norm value above which a case is listed");
+    b.finish();
+    s.breaks.push_back(rule);
+  }
+}
+
 }  // namespace
 
 Study Study::load(const fs::path& file_in) {
@@ -101,26 +149,8 @@ Study Study::load(const fs::path& file_in) {
   if (s.methods.empty()) r.fail("methods", "expected at least one method (" + method_names() + ")");
   for (const auto& m : s.methods) (void)method(m, file, "methods");
   s.set = r.strings("set");
-  {
-    const toml::node* n = r.raw("reference");
-    if (!n || !n->as_table()) r.fail("reference", "expected a table such as { method = \"ida\", set = [...] }");
-    TableReader rr(*n->as_table(), file, "reference", nullptr);
-    s.reference.method = rr.string("method", "a method name (" + method_names() + ")");
-    (void)method(s.reference.method, file, "reference.method");
-    s.reference.set = rr.strings("set");
-    rr.finish();
-  }
-  if (const toml::node* n = r.raw("design")) {
-    if (!n->as_table()) r.fail("design", "expected a table { kind = \"grid\" } or { kind = \"lhs\", samples = N }");
-    TableReader d(*n->as_table(), file, "design", nullptr);
-    if (d.choice_or("kind", "grid", {"grid", "lhs"}) == "lhs") {
-      s.design = Design::kLatinHypercube;
-      s.samples = d.integer("samples", "the number of Latin hypercube points (>= 1)");
-      if (s.samples < 1 || s.samples > 10000000) d.fail("samples", "expected 1 to 10^7 points");
-      s.seed = static_cast<std::uint64_t>(d.integer_or("seed", 1, "a non-negative seed"));
-    }
-    d.finish();
-  }
+  read_reference(r, file, s);
+  read_design(r, file, s);
   s.energy_growth = r.number_or("energy_growth", s.energy_growth,
                                 "the stability bound: energy created / initial energy (e.g. 0.01)");
   if (!(s.energy_growth > 0.0)) r.fail("energy_growth", "expected a positive fraction");
@@ -128,23 +158,7 @@ Study Study::load(const fs::path& file_in) {
   if (s.norms.empty()) s.norms = verification::sweep_norms();
   for (const auto& n : s.norms)
     if (!verification::known_norm(n)) r.fail("norms", "unknown norm '" + n + "' (see `beamimpact compare`)");
-  if (const toml::node* n = r.raw("breaks")) {
-    const toml::array* a = n->as_array();
-    if (!a || a->empty()) r.fail("breaks", "expected an array such as [{ metric = \"impulse\", above = 0.1 }]");
-    s.breaks.clear();
-    for (std::size_t i = 0; i < a->size(); ++i) {
-      const toml::table* t = a->get(i)->as_table();
-      if (!t) r.fail("breaks", "expected tables { metric = \"impulse\", above = 0.1 }");
-      TableReader b(*t, file, fmt::format("breaks[{}]", i), nullptr);
-      BreakRule rule;
-      rule.metric = b.string("metric", "a comparison norm");
-      if (std::find(s.norms.begin(), s.norms.end(), rule.metric) == s.norms.end())
-        b.fail("metric", "'" + rule.metric + "' is not one of the study's norms");
-      rule.above = b.number("above", "the norm value above which a case is listed");
-      b.finish();
-      s.breaks.push_back(rule);
-    }
-  }
+  read_breaks(r, file, s);
   s.keep_runs = r.boolean_or("keep_runs", false);
   const toml::node* ps = r.raw("parameter");
   const toml::array* pa = ps ? ps->as_array() : nullptr;

@@ -35,9 +35,15 @@ std::optional<std::map<std::string, JobOutcome>> distributed_jobs(const std::vec
       },
       [&](std::size_t i, const std::string& payload, int rank) {
         const auto j = nlohmann::json::parse(payload);
-        JobOutcome o{order[i], out_dir / order[i].key(), static_cast<JobOutcome::Status>(j.at("status").get<int>()),
-                     j.at("message").get<std::string>(), j.at("process_seconds").get<double>(),
-                     j.at("solver_seconds").get<double>(), j.at("steps").get<long>(), j.at("dt").get<double>()};
+        JobOutcome o{order[i],
+                     out_dir / order[i].key(),
+                     static_cast<JobOutcome::Status>(j.at("status").get<int>()),
+                     j.at("message").get<std::string>(),
+                     j.at("process_seconds").get<double>(),
+                     j.at("solver_seconds").get<double>(),
+                     j.at("steps").get<long>(),
+                     j.at("dt").get<double>(),
+                     nullptr};  // the run stays on disk: evaluate reads it (stored_run)
         std::string line = verification::progress_line(++done, order.size(), o);
         line.insert(line.size() - 1, fmt::format(" rank {}", rank));
         fmt::print(stderr, "{}", line);

@@ -18,18 +18,20 @@ namespace {
 namespace fs = std::filesystem;
 using verification::StoredRun;
 
-/// Runs one method into dir; the stored run when it finished, else status and message set.
-std::optional<StoredRun> run_one(const Study& s, const std::vector<std::string>& set, const std::string& method,
-                                 const fs::path& dir, CaseResult& c) {
+/// Runs one method; the run in memory when it finished, else status and message set. The run
+/// directory is written only when the study keeps its runs (or the scene asks for fields).
+std::optional<StoredRun> run_one(const Study& s, const std::vector<std::string>& set,
+                                 const std::string& method, const fs::path& dir, CaseResult& c) {
   const auto start = std::chrono::steady_clock::now();
   std::optional<StoredRun> out;
   try {
     const Scene scene = load_scene(s.scene, set);
-    fs::create_directories(dir);
-    const SimulationResult r = beamimpact::run(scene, method, RunOptions{{}, dir});
+    RunOptions options;
+    if (s.keep_runs || scene.output.fields) options.out = dir;
+    const SimulationResult r = beamimpact::run(scene, method, options);
     c.steps = r.steps;
     c.dt = r.dt;
-    out = StoredRun::read(dir);
+    out = StoredRun::from_result(scene, r, dir.string());
     c.status = "ok";
   } catch (const SceneError& e) {
     c.status = "error";
@@ -102,7 +104,7 @@ PointResult run_point(const Study& s, const Point& p, std::size_t index, const f
         c.message = "reference " + ref.status + ": " + ref.message;
       }
     }
-    if (!s.keep_runs) fs::remove_all(dir);
+    if (!s.keep_runs) fs::remove_all(dir);  // fields, when the scene asked for them
     pr.cases.push_back(std::move(c));
   }
   if (!s.keep_runs) fs::remove_all(ref_dir);

@@ -49,8 +49,9 @@ struct PointResult {
   static PointResult from_json(const nlohmann::json& j);
 };
 
-/// @brief Runs point `index` with the reference and every method; run directories go under
-/// runs_dir/INDEX.METHOD and are removed after the comparison unless the study keeps them.
+/// @brief Runs point `index` with the reference and every method and compares the runs in
+/// memory; run directories runs_dir/INDEX.METHOD are written only when the study keeps its runs
+/// (keep_runs) or the scene writes fields (removed after the comparison unless kept).
 /// @param s the study
 /// @param p the point's parameter values
 /// @param index the point's index in the design (names its run directories)

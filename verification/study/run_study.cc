@@ -10,6 +10,7 @@
 #include <verification/study/task_farm.hpp>
 #include <solver/util/Progress.hpp>
 #include <solver/util/write_file_atomic.hpp>
+#include <verification/matrix/Table.hpp>
 
 namespace beamimpact::study {
 namespace {
@@ -17,12 +18,6 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string num(const std::optional<double>& v) { return v ? fmt::format("{:.6g}", *v) : ""; }
-
-std::string csv_text(const std::string& s) {
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
-  return q + "\"";
-}
 
 std::string point_label(const Study& s, const Point& p) {
   std::string l;
@@ -93,107 +88,140 @@ std::optional<StudyResult> execute_study(const Study& s, const fs::path& out) {
   return r;
 }
 
-StudyCounts write_study(const Study& s, const StudyResult& r, const fs::path& out, const std::string& command,
-                 const std::string& version) {
-  fs::create_directories(out);
-  std::string csv = "index";
-  for (const auto& p : s.parameters) csv += "," + p.name;
-  csv += ",method,status,steps,dt";
-  for (const auto& n : s.norms) csv += "," + n;
-  csv += ",energy_growth,broke,message\n";
-  std::string timing = "index,method,rank,seconds,reference_seconds\n";
+namespace {
+
+/// What the study's outputs tabulate, filled in one pass over the cases.
+struct StudyTables {
+  verification::Table csv, timing, broken;         ///< study.csv, timing.csv, study.md's breakdowns
+  nlohmann::json cases = nlohmann::json::array();  ///< study.json's cases
+  std::map<std::string, int> counts;               ///< cases by "method status"
+  std::size_t n_cases = 0, n_broken = 0;
+};
+
+StudyTables empty_tables(const Study& s) {
+  std::vector<std::string> head{"index"};
+  for (const auto& p : s.parameters) head.push_back(p.name);
+  head.insert(head.end(), {"method", "status", "steps", "dt"});
+  head.insert(head.end(), s.norms.begin(), s.norms.end());
+  head.insert(head.end(), {"energy_growth", "broke", "message"});
+  std::vector<std::string> broken_head{"#", "point", "method", "status"};
+  for (const auto& rule : s.breaks) broken_head.push_back(rule.metric);
+  broken_head.push_back("message");
+  StudyTables t{verification::Table(head),
+                verification::Table({"index", "method", "rank", "seconds", "reference_seconds"}),
+                verification::Table(broken_head),
+                nlohmann::json::array(),
+                {},
+                0,
+                0};
+  t.csv.quote_column(head.size() - 1);  // the message: free text
+  return t;
+}
+
+/// Adds case c of point i to every table.
+void add_case(const Study& s, std::size_t i, const Point& pt, const PointResult& pr, const CaseResult& c,
+              StudyTables& t) {
+  ++t.n_cases;
+  ++t.counts[c.method + " " + c.status];
+  const bool b = broke(s, c);
+  std::vector<std::string> row{fmt::format("{}", i)};
+  for (double v : pt.values) row.push_back(fmt::format("{:.10g}", v));
+  row.insert(row.end(), {c.method, c.status, fmt::format("{}", c.steps), fmt::format("{:.6g}", c.dt)});
+  for (const auto& v : c.norms) row.push_back(num(v));
+  row.insert(row.end(), {num(c.energy_growth), b ? "yes" : "no", c.message});
+  t.csv.add(row);
+  t.timing.add({fmt::format("{}", i), c.method, fmt::format("{}", pr.rank), fmt::format("{:.4f}", c.seconds),
+                fmt::format("{:.4f}", pr.reference_seconds)});
+  nlohmann::json norms = nlohmann::json::object();
+  for (std::size_t k = 0; k < s.norms.size(); ++k) norms[s.norms[k]] = json_or_null(c.norms[k]);
+  nlohmann::json values = nlohmann::json::object();
+  for (std::size_t k = 0; k < s.parameters.size(); ++k) values[s.parameters[k].name] = pt.values[k];
+  t.cases.push_back({{"index", i},
+                     {"parameters", values},
+                     {"method", c.method},
+                     {"status", c.status},
+                     {"message", c.message},
+                     {"steps", c.steps},
+                     {"dt", c.dt},
+                     {"norms", norms},
+                     {"energy_growth", json_or_null(c.energy_growth)},
+                     {"reference_status", pr.reference_status},
+                     {"broke", b}});
+  if (!b) return;
+  ++t.n_broken;
+  std::vector<std::string> cells{fmt::format("{}", i), point_label(s, pt), c.method, c.status};
+  for (const auto& rule : s.breaks) cells.push_back(num(metric(s, c, rule.metric)));
+  cells.push_back(c.message.substr(0, 160));
+  t.broken.add(cells);
+}
+
+/// study.json: the study's definition and its cases.
+nlohmann::json study_json(const Study& s, const std::string& version, const nlohmann::json& cases) {
   nlohmann::json params = nlohmann::json::array();
   for (const auto& p : s.parameters) {
     const char* kind = p.kind == Parameter::Kind::kKey ? "key" : p.kind == Parameter::Kind::kMesh ? "mesh" : "rake";
     params.push_back({{"name", p.name}, {"kind", kind}, {"target", p.target}, {"values", p.values}});
   }
-  nlohmann::json cases = nlohmann::json::array();
-  std::map<std::string, int> counts;
-  std::string broken;
-  std::size_t n_broken = 0, n_cases = 0;
-  for (std::size_t i = 0; i < r.points.size(); ++i) {
-    const Point& pt = r.points[i];
-    const PointResult& pr = r.results[i];
-    for (const auto& c : pr.cases) {
-      ++n_cases;
-      ++counts[c.method + " " + c.status];
-      const bool b = broke(s, c);
-      csv += fmt::format("{}", i);
-      for (double v : pt.values) csv += fmt::format(",{:.10g}", v);
-      csv += fmt::format(",{},{},{},{:.6g}", c.method, c.status, c.steps, c.dt);
-      for (const auto& v : c.norms) csv += "," + num(v);
-      csv += fmt::format(",{},{},{}\n", num(c.energy_growth), b ? "yes" : "no", csv_text(c.message));
-      timing += fmt::format("{},{},{},{:.4f},{:.4f}\n", i, c.method, pr.rank, c.seconds, pr.reference_seconds);
-      nlohmann::json norms = nlohmann::json::object();
-      for (std::size_t k = 0; k < s.norms.size(); ++k)
-        norms[s.norms[k]] = json_or_null(c.norms[k]);
-      nlohmann::json values = nlohmann::json::object();
-      for (std::size_t k = 0; k < s.parameters.size(); ++k) values[s.parameters[k].name] = pt.values[k];
-      cases.push_back({{"index", i},
-                       {"parameters", values},
-                       {"method", c.method},
-                       {"status", c.status},
-                       {"message", c.message},
-                       {"steps", c.steps},
-                       {"dt", c.dt},
-                       {"norms", norms},
-                       {"energy_growth", json_or_null(c.energy_growth)},
-                       {"reference_status", pr.reference_status},
-                       {"broke", b}});
-      if (b) {
-        ++n_broken;
-        broken += fmt::format("| {} | {} | {} | {} |", i, point_label(s, pt), c.method, c.status);
-        for (const auto& rule : s.breaks) broken += " " + num(metric(s, c, rule.metric)) + " |";
-        broken += " " + c.message.substr(0, 160) + " |\n";
-      }
-    }
-  }
   nlohmann::json rules = nlohmann::json::array();
-  std::string rule_text, rule_head, rule_bar;
-  for (const auto& rule : s.breaks) {
-    rules.push_back({{"metric", rule.metric}, {"above", rule.above}});
-    rule_text += fmt::format(", or {} above {:g}", rule.metric, rule.above);
-    rule_head += " " + rule.metric + " |";
-    rule_bar += "---|";
-  }
-  nlohmann::json j{{"study", s.name},
-                   {"description", s.description},
-                   {"file", s.file.filename().string()},
-                   {"scene", s.scene.filename().string()},
-                   {"version", version},
-                   {"methods", s.methods},
-                   {"reference", {{"method", s.reference.method}, {"set", s.reference.set}}},
-                   {"set", s.set},
-                   {"design", s.design == Study::Design::kGrid ? "grid" : "lhs"},
-                   {"seed", s.seed},
-                   {"parameters", params},
-                   {"norms", s.norms},
-                   {"energy_growth_bound", s.energy_growth},
-                   {"breaks", rules},
-                   {"cases", cases}};
-  const double rate = r.wall_seconds > 0 ? static_cast<double>(n_cases) / r.wall_seconds : 0.0;
-  nlohmann::json t{{"ranks", r.ranks},
-                   {"points", r.points.size()},
-                   {"cases", n_cases},
-                   {"wall_seconds", r.wall_seconds},
-                   {"cases_per_second", rate}};
+  for (const auto& rule : s.breaks) rules.push_back({{"metric", rule.metric}, {"above", rule.above}});
+  return {{"study", s.name},
+          {"description", s.description},
+          {"file", s.file.filename().string()},
+          {"scene", s.scene.filename().string()},
+          {"version", version},
+          {"methods", s.methods},
+          {"reference", {{"method", s.reference.method}, {"set", s.reference.set}}},
+          {"set", s.set},
+          {"design", s.design == Study::Design::kGrid ? "grid" : "lhs"},
+          {"seed", s.seed},
+          {"parameters", params},
+          {"norms", s.norms},
+          {"energy_growth_bound", s.energy_growth},
+          {"breaks", rules},
+          {"cases", cases}};
+}
+
+/// study.md: how it was made, the outcomes by method and status, and where the method broke.
+std::string study_markdown(const Study& s, const StudyResult& r, const StudyTables& t,
+                           const std::string& command, const std::string& version) {
+  std::string rule_text;
+  for (const auto& rule : s.breaks) rule_text += fmt::format(", or {} above {:g}", rule.metric, rule.above);
   std::string md = fmt::format(
       "# Study {}\n\n{}\n\n- command: `{}`\n- version: `{}`\n- scene: `{}` with `{}`\n- reference: {} {}\n"
-      "- {} point(s) ({}), {} case(s); timing in timing.json\n\n## Outcomes\n\n| method status | cases |\n|---|---|\n",
+      "- {} point(s) ({}), {} case(s); timing in timing.json\n\n## Outcomes\n\n",
       s.name, s.description, command, version, s.scene.filename().string(), fmt::join(s.set, "`, `"),
       s.reference.method, fmt::join(s.reference.set, " "), r.points.size(),
-      s.design == Study::Design::kGrid ? "grid" : "Latin hypercube", n_cases);
-  for (const auto& [k, v] : counts) md += fmt::format("| {} | {} |\n", k, v);
+      s.design == Study::Design::kGrid ? "grid" : "Latin hypercube", t.n_cases);
+  verification::Table outcomes({"method status", "cases"});
+  for (const auto& [k, v] : t.counts) outcomes.add({k, fmt::format("{}", v)});
+  md += outcomes.markdown();
   md += fmt::format(
-      "\n## Where the method broke ({} case(s))\n\nStatus not ok (error: refused; diverged: the run failed; energy: "
-      "energy created above {:g} of E0){}.\n\n| # | point | method | status |{} message |\n|---|---|---|---|{}---|\n{}",
-      n_broken, s.energy_growth, rule_text, rule_head, rule_bar, broken);
-  write_file_atomic(out / "study.csv", csv);
-  write_file_atomic(out / "study.json", j.dump(1) + "\n");
-  write_file_atomic(out / "study.md", md);
-  write_file_atomic(out / "timing.csv", timing);
-  write_file_atomic(out / "timing.json", t.dump(1) + "\n");
-  return {n_cases, n_broken, rate};
+      "\n## Where the method broke ({} case(s))\n\nStatus not ok (error: refused; diverged: the run failed; "
+      "energy: energy created above {:g} of E0){}.\n\n",
+      t.n_broken, s.energy_growth, rule_text);
+  return md + t.broken.markdown();
+}
+
+}  // namespace
+
+StudyCounts write_study(const Study& s, const StudyResult& r, const fs::path& out, const std::string& command,
+                        const std::string& version) {
+  fs::create_directories(out);
+  StudyTables t = empty_tables(s);
+  for (std::size_t i = 0; i < r.points.size(); ++i)
+    for (const auto& c : r.results[i].cases) add_case(s, i, r.points[i], r.results[i], c, t);
+  const double rate = r.wall_seconds > 0 ? static_cast<double>(t.n_cases) / r.wall_seconds : 0.0;
+  const nlohmann::json timing{{"ranks", r.ranks},
+                              {"points", r.points.size()},
+                              {"cases", t.n_cases},
+                              {"wall_seconds", r.wall_seconds},
+                              {"cases_per_second", rate}};
+  write_file_atomic(out / "study.csv", t.csv.csv());
+  write_file_atomic(out / "study.json", study_json(s, version, t.cases).dump(1) + "\n");
+  write_file_atomic(out / "study.md", study_markdown(s, r, t, command, version));
+  write_file_atomic(out / "timing.csv", t.timing.csv());
+  write_file_atomic(out / "timing.json", timing.dump(1) + "\n");
+  return {t.n_cases, t.n_broken, rate};
 }
 
 }  // namespace beamimpact::study

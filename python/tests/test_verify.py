@@ -1,0 +1,30 @@
+"""beamimpact.verify against `beamimpact verify`: the same matrix items give the same norms.json
+numbers (timings aside) and the same verdict, and the verdict follows the gates. Run from ctest
+(PYTHONPATH=build/python, BEAMIMPACT_EXE, BEAMIMPACT_SOURCE)."""
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import beamimpact
+
+SOURCE = Path(os.environ["BEAMIMPACT_SOURCE"])
+sys.path.insert(0, str(SOURCE / "tools" / "bench"))
+from compare_norms import leaves  # noqa: E402  (every number of a JSON tree, timings left out)
+
+MATRIX = SOURCE / "verification" / "matrix.toml"
+
+
+def test_verify_call_equals_the_command(tmp_path):
+    only = "s1_central"
+    p = subprocess.run([os.environ["BEAMIMPACT_EXE"], "verify", str(MATRIX), "--out", str(tmp_path / "cli"),
+                        "--only", only, "--jobs", "2"], capture_output=True, text=True, cwd=SOURCE)
+    cli = json.loads((tmp_path / "cli" / "norms.json").read_text())
+    py = beamimpact.verify(MATRIX, tmp_path / "py", only=only, jobs=2)
+    assert json.loads((tmp_path / "py" / "norms.json").read_text())["verdict"] == py["verdict"]
+    assert dict(leaves(py["items"])) == dict(leaves(cli["items"]))
+    assert py["gates"] > 0 and py["verdict"] == cli["verdict"]
+    # The verdict is the gates' (a complete run): PASS exactly when every gate passed, as the exit status.
+    every_gate = all(g["passed"] for item in py["items"] for g in item["gates"])
+    assert (py["verdict"] == "PASS") == every_gate == (p.returncode == 0)

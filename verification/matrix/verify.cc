@@ -1,0 +1,104 @@
+#include <verification/matrix/verify.hpp>
+
+#include <chrono>
+#include <set>
+
+#include <fmt/format.h>
+
+#include <beamimpact/version.hpp>
+#include <solver/scene/SceneError.hpp>
+#include <verification/matrix/VerificationMatrix.hpp>
+#include <verification/matrix/interruption.hpp>
+
+namespace beamimpact::verification {
+namespace {
+
+/// The items of the tier whose names contain `only`, and the runs they need.
+struct Selection {
+  std::vector<const Case*> cases;
+  std::vector<const Convergence*> ladders;
+  std::vector<const RunCheck*> checks;
+  std::vector<JobSpec> specs;
+};
+
+Selection select(const VerificationMatrix& m, const VerifyOptions& o) {
+  Selection s;
+  auto selected = [&](const std::string& name) {
+    return o.only.empty() || name.find(o.only) != std::string::npos;
+  };
+  for (const auto& c : m.cases)
+    if (VerificationMatrix::in_tier(c.tier, o.tier) && selected(c.name())) s.cases.push_back(&c);
+  for (const auto& v : m.convergence)
+    if (VerificationMatrix::in_tier(v.tier, o.tier) && selected(v.name())) s.ladders.push_back(&v);
+  for (const auto& c : m.checks)
+    if (VerificationMatrix::in_tier(c.tier, o.tier) && selected(c.name())) s.checks.push_back(&c);
+  if (o.only.empty()) {
+    s.specs = m.runs(o.tier);
+    return s;
+  }
+  std::set<std::string> seen;  // only the runs the selected items need
+  auto add = [&](const JobSpec& spec) {
+    if (seen.insert(spec.key()).second) s.specs.push_back(spec);
+  };
+  for (const auto* c : s.cases) {
+    add(c->run);
+    add(c->reference);
+  }
+  for (const auto* v : s.ladders) {
+    for (const auto& spec : v->runs) add(spec);
+    if (v->reference) add(*v->reference);
+  }
+  for (const auto* c : s.checks) add(c->run);
+  return s;
+}
+
+}  // namespace
+
+std::optional<VerifyResult> verify(const VerifyOptions& o, const std::filesystem::path& exe) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string started = utc_now();
+  if (o.jobs < 1)
+    throw SceneError(o.matrix.string(), "--jobs", "expected a positive number of parallel runs");
+  const VerificationMatrix m = VerificationMatrix::load(o.matrix);
+  const Selection s = select(m, o);
+  Launcher launcher;
+  launcher.exe = exe;
+  launcher.root = m.root;
+  std::filesystem::create_directories(o.out);
+  if (!o.quiet)
+    fmt::print(stderr,
+               "verify: {} case(s), {} convergence ladder(s), {} check(s), {} run(s), tier {}, {} job(s){}\n",
+               s.cases.size(), s.ladders.size(), s.checks.size(), s.specs.size(), o.tier, o.jobs,
+               o.executor_note);
+  const auto ran = o.executor
+                       ? o.executor(s.specs, o.out / "runs", launcher, o.jobs, m.timeout)
+                       : std::optional(execute_jobs(s.specs, o.out / "runs", launcher, o.jobs, m.timeout));
+  if (!ran) return std::nullopt;  // an MPI worker rank: rank 0 evaluates
+  VerifyResult r;
+  for (const auto* c : s.cases) r.items.push_back(evaluate_case(*c, *ran));
+  for (const auto* v : s.ladders) r.items.push_back(evaluate_ladder(*v, *ran));
+  for (const auto* c : s.checks) r.items.push_back(evaluate_check(*c, *ran));
+  ReportContext& ctx = r.context;
+  ctx.command = !o.command.empty() ? o.command
+                                   : fmt::format("beamimpact verify {} --tier {} --out {} --jobs {}{}",
+                                                 o.matrix.string(), o.tier, o.out.string(), o.jobs,
+                                                 o.only.empty() ? "" : " --only '" + o.only + "'");
+  ctx.matrix = o.matrix.string();
+  ctx.tier = o.tier;
+  ctx.version = kVersion;
+  ctx.started = started;
+  ctx.jobs = o.jobs;
+  ctx.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (interruption())
+    ctx.incomplete =
+        fmt::format("interrupted by signal {}; runs not finished are failed or skipped", interruption());
+  return r;
+}
+
+void write_verify_reports(const std::filesystem::path& out, const VerifyResult& r) {
+  write_junit(out / "junit.xml", r.context, r.items);
+  write_json(out / "norms.json", r.context, r.items);
+  write_markdown(out / "report.md", r.context, r.items);
+}
+
+}  // namespace beamimpact::verification

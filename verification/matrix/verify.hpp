@@ -1,0 +1,49 @@
+#pragma once
+/// @file verify.hpp
+/// @brief `verify` as a library function: runs a verification matrix's tier, evaluates every
+/// case, ladder and check, and returns the result with its one pass rule; the command line
+/// (`beamimpact verify`) and the Python module (`beamimpact.verify`) are thin calls of it.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <verification/matrix/evaluate.hpp>
+#include <verification/matrix/execute_jobs.hpp>
+#include <verification/matrix/reports.hpp>
+
+namespace beamimpact::verification {
+
+/// @brief What to verify and where the runs go.
+struct VerifyOptions {
+  std::filesystem::path matrix = "verification/matrix.toml";  ///< the matrix file
+  std::filesystem::path out;   ///< runs/ (one directory per run) and the reports
+  std::string tier = "quick";  ///< VerificationMatrix::tier_names()
+  std::string only;            ///< only items whose name contains this text ("" all)
+  int jobs = 1;                ///< runs in parallel (>= 1)
+  std::string command;         ///< the command line written into the reports ("" made from these options)
+  JobExecutor executor;        ///< where the runs go (empty: execute_jobs, threads of this process)
+  std::string executor_note;   ///< appended to the plan line on stderr (", 2 MPI ranks")
+  bool quiet = false;          ///< no plan line (an MPI worker rank)
+};
+
+/// @brief A verification run: how it was made, every item's gates, and the verdict.
+struct VerifyResult {
+  ReportContext context;
+  std::vector<ItemResult> items;
+  /// @brief The one pass rule (verification_passed()): complete and no gate failed.
+  bool passed() const { return verification_passed(items, context.incomplete.empty()); }
+};
+
+/// @brief Checks the options (SceneError naming the option), loads the matrix, runs the selected
+/// items' runs into out/runs/ and evaluates them. Returns nullopt on an MPI rank other than 0
+/// (see JobExecutor). An interruption (interruption()) leaves a result marked incomplete.
+/// @param exe the beamimpact executable the runs start (external methods' paths resolve against
+/// the matrix's root)
+std::optional<VerifyResult> verify(const VerifyOptions& o, const std::filesystem::path& exe);
+
+/// @brief Writes out/junit.xml, out/norms.json and out/report.md of a result.
+void write_verify_reports(const std::filesystem::path& out, const VerifyResult& r);
+
+}  // namespace beamimpact::verification

@@ -48,7 +48,11 @@ check(np.abs(sig).max() <= 1e-9, f"no stress before contact (max |sigma| {np.abs
 # fronts; tolerance 10 %: Q2 dispersion rings behind a front.
 i = int(np.argmin(np.abs(h["t"] - 1.25)))
 x, u, sig = arrays(sets[i][1])
-behind = ((x[:, 0] > 6.0) & (x[:, 0] < 10.0)) | ((x[:, 0] > 10.5) & (x[:, 0] < 14.5))
+# More than 3.5 m behind, by a margin far above the coordinates' rounding: the mesh's nodes at
+# x = 6.0 m (12 % ringing there) come out a few ulp either side of 6.0 depending on the dolfinx
+# build, and an exact comparison picked one of its three nodes on one machine and none on another.
+far = 1e-6
+behind = ((x[:, 0] > 6.0 + far) & (x[:, 0] < 10.0)) | ((x[:, 0] > 10.5) & (x[:, 0] < 14.5 - far))
 sxx = sig[behind, 0]
 check(np.abs(sxx + 5.0).max() <= 0.5, f"t = {sets[i][0]} s: sigma_xx behind the fronts in "
       f"[{sxx.min():.3f}, {sxx.max():.3f}] N/m^2, exact -5")

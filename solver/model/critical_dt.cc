@@ -97,6 +97,56 @@ void run_equations(const Model& model, int e, int f, std::vector<Eigen::Matrix<i
   for (int k = e; k < f; ++k) eqk.push_back(model.element_equations(k));
 }
 
+/// A run whose top eigenvalue Laguerre's iteration solved: its bound and its elements [e, f).
+struct Solved {
+  double upper;
+  int e, f;
+};
+
+/// The run's key: each element's section, geometry and equation pattern relative to the run's
+/// first equation. An equal key gives equal matrices.
+void run_key(const Model& model, int e, int f, const std::vector<Eigen::Matrix<int, 6, 1>>& eqk,
+             std::vector<double>& key) {
+  const std::vector<Model::Element>& els = model.elements();
+  const int ne = 2 * model.dofs_per_node();
+  key.clear();
+  const int first_eq = eqk.front().maxCoeff();
+  for (int k = e; k < f; ++k) {
+    const Model::Element& el = els[k];
+    key.insert(key.end(), {el.E, el.area, el.inertia, el.rho, el.length, el.c, el.s});
+    const Eigen::Matrix<int, 6, 1>& eq = eqk[k - e];
+    for (int i = 0; i < ne; ++i) key.push_back(eq(i) >= 0 ? eq(i) - first_eq : -1e9);
+  }
+}
+
+/// A run with the equations it shares with the rest of its body held at zero is the whole
+/// model's pencil restricted to its other equations: by Cauchy's interlacing its top eigenvalue
+/// is a lower bound of the model's. The largest over the solved runs, tried from the highest
+/// bound down (a held run's top is below its own bound, so the search stops when the next bound
+/// is below the best so far); each from its bound (1e-8: the factorization's roundoff), and
+/// Laguerre's bracket gives the lower end. Returns max(lower, what the held runs give).
+double held_runs_lower_bound(const Model& model, std::vector<Solved> solved, double lower,
+                             RunScratch& scratch) {
+  const std::vector<Model::Element>& els = model.elements();
+  const int nel = static_cast<int>(els.size()), ne = 2 * model.dofs_per_node();
+  std::vector<Eigen::Matrix<int, 6, 1>> eqk;
+  std::sort(solved.begin(), solved.end(), [](const Solved& a, const Solved& b) { return a.upper > b.upper; });
+  std::vector<int> held;
+  for (const auto& [upper, e, f] : solved) {
+    if (upper <= lower) break;
+    held.clear();
+    for (int k : {e - 1, f})
+      if (k >= 0 && k < nel && els[k].body == els[e].body)
+        for (int i = 0; i < ne; ++i)
+          if (const int q = model.element_equations(k)(i); q >= 0) held.push_back(q);
+    std::sort(held.begin(), held.end());
+    run_equations(model, e, f, eqk);
+    const TopEigenvalue top = top_eigenvalue(run_pencil(model, e, eqk, held, scratch), upper * (1 + 1e-8));
+    if (top.ok) lower = std::max(lower, top.lower);
+  }
+  return lower;
+}
+
 }  // namespace
 
 const char* to_string(CriticalBound b) {
@@ -130,14 +180,10 @@ double subdomain_bound(const Model& model, int max_elements) {
 
 SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_element) {
   const std::vector<Model::Element>& els = model.elements();
-  const int nel = static_cast<int>(els.size()), ne = 2 * model.dofs_per_node();
+  const int nel = static_cast<int>(els.size());
   SubdomainBound out;
   out.exact = true;
   double lam = 0.0, lam_last = 0.0, bracket_lower = 0.0;
-  struct Solved {
-    double upper;  // the run's bound
-    int e, f;      // its elements [e, f)
-  };
   std::vector<Solved> solved;  // the runs Laguerre's iteration solved
   RunScratch scratch;
   std::vector<Eigen::Matrix<int, 6, 1>> eqk;  // the run's elements' equations
@@ -149,19 +195,11 @@ SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_
     }
     int f = e;  // the subdomain: elements [e, f) of one elastic body
     while (f < nel && f - e < max_elements && els[f].body == els[e].body && !els[f].rigid) ++f;
-    if ((e > 0 && els[e - 1].body == els[e].body) || (f < nel && els[f].body == els[e].body)) out.exact = false;
-    // The run's key: each element's section, geometry and equation pattern relative to the
-    // run's first equation. An equal key gives equal matrices: reuse the last eigenvalue.
+    if ((e > 0 && els[e - 1].body == els[e].body) || (f < nel && els[f].body == els[e].body))
+      out.exact = false;
     run_equations(model, e, f, eqk);
-    key.clear();
-    const int first_eq = eqk.front().maxCoeff();
-    for (int k = e; k < f; ++k) {
-      const Model::Element& el = els[k];
-      key.insert(key.end(), {el.E, el.area, el.inertia, el.rho, el.length, el.c, el.s});
-      const Eigen::Matrix<int, 6, 1>& eq = eqk[k - e];
-      for (int i = 0; i < ne; ++i) key.push_back(eq(i) >= 0 ? eq(i) - first_eq : -1e9);
-    }
-    if (key == key_last) {
+    run_key(model, e, f, eqk, key);
+    if (key == key_last) {  // equal matrices: reuse the last eigenvalue
       lam = std::max(lam, lam_last);
       e = f;
       continue;
@@ -189,30 +227,8 @@ SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_
     e = f;
   }
   out.upper = lam;
-  if (out.exact) {
-    out.lower = bracket_lower;  // each body is one run: its bracket holds its top eigenvalue
-  } else {
-    // A run with the equations it shares with the rest of its body held at zero is the whole
-    // model's pencil restricted to its other equations: by Cauchy's interlacing its top
-    // eigenvalue is a lower bound of the model's. The largest over the solved runs, tried from
-    // the highest bound down (a held run's top is below its own bound, so the search stops when
-    // the next bound is below the best so far); each from its bound (1e-8: the factorization's
-    // roundoff), and Laguerre's bracket gives the lower end.
-    std::sort(solved.begin(), solved.end(), [](const Solved& a, const Solved& b) { return a.upper > b.upper; });
-    std::vector<int> held;
-    for (const auto& [upper, e, f] : solved) {
-      if (upper <= out.lower) break;
-      held.clear();
-      for (int k : {e - 1, f})
-        if (k >= 0 && k < nel && els[k].body == els[e].body)
-          for (int i = 0; i < ne; ++i)
-            if (const int q = model.element_equations(k)(i); q >= 0) held.push_back(q);
-      std::sort(held.begin(), held.end());
-      run_equations(model, e, f, eqk);
-      const TopEigenvalue top = top_eigenvalue(run_pencil(model, e, eqk, held, scratch), upper * (1 + 1e-8));
-      if (top.ok) out.lower = std::max(out.lower, top.lower);
-    }
-  }
+  // Each body one run: its bracket holds its top eigenvalue; else the held runs give the lower end.
+  out.lower = out.exact ? bracket_lower : held_runs_lower_bound(model, std::move(solved), out.lower, scratch);
   return out;
 }
 

@@ -1,8 +1,8 @@
 // Fuzz target: the verification matrix loader and its tier expansion.
 // Input: a matrix file, written to SCRATCH/m/matrix.toml; SCRATCH/verification links to the
 // source tree's verification/, so the shipped matrix (root = "..") finds its scenes.
-// Contract: load() returns a matrix or throws SceneError. Anything else is a finding.
-#include <solver/scene/SceneError.hpp>
+// Contract: load() returns a matrix or throws InputError. Anything else is a finding.
+#include <solver/util/InputError.hpp>
 #include <verification/matrix/VerificationMatrix.hpp>
 
 #include "fuzz_input.hpp"
@@ -20,7 +20,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
     const auto m = verification::VerificationMatrix::load(path);
     for (const char* tier : {"quick", "full"}) (void)m.runs(tier);
-  } catch (const SceneError&) {
+  } catch (const InputError&) {
   }
   return 0;
 }

@@ -1,8 +1,8 @@
 // Fuzz target: the run reader (summary.json + history.csv of a run directory).
 // Input: summary.json text, a line "#--history.csv", then history.csv text.
-// Contract: StoredRun::read returns a run or throws SceneError; a run read answers contacts()
+// Contract: StoredRun::read returns a run or throws InputError; a run read answers contacts()
 // and output_step(). Anything else is a finding.
-#include <solver/scene/SceneError.hpp>
+#include <solver/util/InputError.hpp>
 #include <verification/compare/StoredRun.hpp>
 
 #include "fuzz_input.hpp"
@@ -16,7 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const auto run = verification::StoredRun::read(fuzz::scratch());
     (void)run.contacts();
     (void)run.output_step();
-  } catch (const SceneError&) {
+  } catch (const InputError&) {
   }
   return 0;
 }

@@ -7,7 +7,8 @@ compare command's norms, over the C++ library (beamimpact._core).
     run.summary["contacts"][0]["impulse_normal"], run.history["R"]
     beamimpact.compare(run, beamimpact.run(scene, method="exact"))["norms"]
 
-Bad input raises beamimpact.SceneError with the CLI's message (file, key, what was expected).
+Bad input raises beamimpact.InputError with the CLI's message (file, key, what was expected);
+beamimpact.SceneError is the same class under its earlier name (deprecated).
 """
 import json
 import os
@@ -17,11 +18,11 @@ import sys
 import numpy as np
 
 from . import _core
-from ._core import SceneError
+from ._core import InputError, SceneError
 from .fields import read_fields
 
-__all__ = ["SceneError", "Scene", "Run", "load_scene", "run", "read_run", "read_fields", "compare", "norm",
-           "sweep", "verify", "methods"]
+__all__ = ["InputError", "SceneError", "Scene", "Run", "load_scene", "run", "read_run", "read_fields", "compare",
+           "norm", "sweep", "verify", "methods"]
 __version__ = _core.__version__
 
 

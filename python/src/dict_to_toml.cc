@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <toml++/toml.h>
 
-#include <solver/scene/SceneError.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact::python {
 namespace {
@@ -52,8 +52,7 @@ void convert(Container& into, const std::string& key, const json& v, const std::
     case json::value_t::number_float:
       put(into, key, v.get<double>());
       break;
-    default:
-      throw SceneError(label, where, "expected a number, string, boolean, list or dict, got None");
+    default: throw InputError(label, where, "expected a number, string, boolean, list or dict, got None");
   }
 }
 
@@ -67,7 +66,7 @@ toml::table to_table(const json& j, const std::string& label, const std::string&
 
 std::string toml_from_json(const std::string& json_text, const std::string& label) {
   const json j = json::parse(json_text);
-  if (!j.is_object()) throw SceneError(label, "", "expected a dict of the scene's tables and keys");
+  if (!j.is_object()) throw InputError(label, "", "expected a dict of the scene's tables and keys");
   std::ostringstream os;
   os << to_table(j, label, "");
   return os.str() + "\n";

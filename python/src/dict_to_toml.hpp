@@ -8,7 +8,7 @@
 namespace beamimpact::python {
 
 /// @brief The TOML text of a JSON object: objects become tables, arrays of objects arrays of
-/// tables, numbers stay integers or floats. Throws SceneError naming `label` and the key for a
+/// tables, numbers stay integers or floats. Throws InputError naming `label` and the key for a
 /// value TOML cannot hold (null, mixed arrays).
 /// @param json_text a JSON object (Python's json.dumps of the dict)
 /// @param label what the messages call the scene ("<dict>")

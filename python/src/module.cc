@@ -11,16 +11,16 @@
 
 #include <api/registry.hpp>
 #include <api/run.hpp>
+#include <beamimpact/version.hpp>
 #include <solver/record/ContactStats.hpp>
 #include <solver/record/output_files.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/scene_io.hpp>
 #include <solver/schema/output_schema.hpp>
+#include <solver/util/InputError.hpp>
 #include <solver/util/Progress.hpp>
 #include <verification/compare/compare_runs.hpp>
 #include <verification/matrix/sweep.hpp>
 #include <verification/matrix/verify.hpp>
-#include <beamimpact/version.hpp>
 
 #include "dict_to_toml.hpp"
 
@@ -192,7 +192,8 @@ PYBIND11_MODULE(_core, m) {
   using namespace beamimpact;
   using namespace beamimpact::python;
   m.doc() = "beamimpact's compiled core; use the package `beamimpact`, not this module";
-  py::register_exception<SceneError>(m, "SceneError", PyExc_ValueError);
+  py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
+  m.attr("SceneError") = m.attr("InputError");  // the earlier name, kept for a deprecation period
   m.attr("__version__") = kVersion;
 
   py::class_<Scene>(m, "_Scene")
@@ -212,7 +213,7 @@ PYBIND11_MODULE(_core, m) {
       .def_property_readonly("end_time", [](const Scene& s) { return s.time.end; });
 
   m.def("load_scene", &load_scene, py::arg("path"), py::arg("overrides") = std::vector<std::string>{},
-        "Loads and validates a scene file (raises SceneError as the CLI reports it)");
+        "Loads and validates a scene file (raises InputError as the CLI reports it)");
   m.def(
       "load_scene_dict",
       [](const std::string& json_text, const std::string& label, const std::vector<std::string>& overrides) {

@@ -37,7 +37,7 @@ std::string TableReader::path(const std::string& key) const {
 }
 
 void TableReader::fail(const std::string& key, const std::string& message) const {
-  throw SceneError(file_, path(key), message);
+  throw InputError(file_, path(key), message);
 }
 
 const toml::node* TableReader::find(const std::string& key) {

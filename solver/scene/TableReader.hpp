@@ -50,9 +50,9 @@ class TableReader {
   bool has(const std::string& key);
   /// @brief The raw node (marks it as known); nullptr when absent.
   const toml::node* raw(const std::string& key);
-  /// @brief Throws SceneError for a value that fails a check (positivity, range, ...).
+  /// @brief Throws InputError for a value that fails a check (positivity, range, ...).
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
-  /// @brief Throws SceneError naming the first key that no read asked for.
+  /// @brief Throws InputError naming the first key that no read asked for.
   void finish() const;
   /// @brief "prefix.key" (or "key" when the prefix is empty).
   std::string path(const std::string& key) const;

@@ -9,9 +9,8 @@
 #include <fmt/format.h>
 
 #include <api/registry.hpp>
-#include <solver/scene/SceneError.hpp>
-#include <verification/study/distributed_jobs.hpp>
-#include <verification/study/task_farm.hpp>
+#include <beamimpact/version.hpp>
+#include <solver/util/InputError.hpp>
 #include <verification/compare/compare_runs.hpp>
 #include <verification/matrix/VerificationMatrix.hpp>
 #include <verification/matrix/evaluate.hpp>
@@ -20,7 +19,8 @@
 #include <verification/matrix/reports.hpp>
 #include <verification/matrix/sweep.hpp>
 #include <verification/matrix/verify.hpp>
-#include <beamimpact/version.hpp>
+#include <verification/study/distributed_jobs.hpp>
+#include <verification/study/task_farm.hpp>
 #include "CommandExit.hpp"
 
 namespace beamimpact {

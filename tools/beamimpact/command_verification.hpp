@@ -6,7 +6,7 @@
 
 namespace beamimpact {
 
-/// @brief Registers compare, verify and sweep on app. Exit codes (via CommandExit / SceneError):
+/// @brief Registers compare, verify and sweep on app. Exit codes (via CommandExit / InputError):
 /// 0 all gates pass, 1 a gate failed, 2 bad input (matrix, run directory, options).
 void add_verification_commands(CLI::App& app);
 

@@ -8,9 +8,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include <solver/scene/SceneError.hpp>
-#include <verification/study/task_farm.hpp>
 #include <beamimpact/version.hpp>
+#include <solver/util/InputError.hpp>
+#include <verification/study/task_farm.hpp>
 
 #include "CommandExit.hpp"
 #include "command_run.hpp"
@@ -44,14 +44,14 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : fail(2);
   } catch (const CommandExit& e) {
     return e.code;
-  } catch (const SceneError& e) {
+  } catch (const InputError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return fail(2);
   } catch (const std::filesystem::filesystem_error& e) {
     // A path the file system refuses (too long, not writable, not a directory): the user's --out
     // or an input path, so bad input, named without the library's wording.
     std::fprintf(stderr, "error: %s: %s (check --out and the paths given)\n",
-                 SceneError::clip(e.path1().string(), 160).c_str(), e.code().message().c_str());
+                 InputError::clip(e.path1().string(), 160).c_str(), e.code().message().c_str());
     return fail(2);
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "error: out of memory: the run needs more memory than this machine has\n");

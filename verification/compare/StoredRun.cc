@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include <solver/record/output_files.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/schema/output_schema.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact::verification {
 namespace {
@@ -28,10 +28,10 @@ std::vector<std::string> split_csv(const std::string& line) {
 }
 
 void check_times(const std::vector<double>& t, const std::string& file) {
-  if (t.empty()) throw SceneError(file, "", "expected at least one data row after the header");
+  if (t.empty()) throw InputError(file, "", "expected at least one data row after the header");
   for (std::size_t i = 1; i < t.size(); ++i) {
     if (!(t[i] > t[i - 1])) {
-      throw SceneError(file, "t",
+      throw InputError(file, "t",
                        "expected strictly increasing times, row " + std::to_string(i + 2) +
                            " has t = " + std::to_string(t[i]) + " after " + std::to_string(t[i - 1]));
     }
@@ -40,7 +40,7 @@ void check_times(const std::vector<double>& t, const std::string& file) {
 
 /// Refuses a null anywhere (no writer produces one; it would read as 0 or throw later).
 void check_no_null(const nlohmann::json& j, const std::string& file, const std::string& where) {
-  if (j.is_null()) throw SceneError(file, where.empty() ? "/" : where, "expected a value, found null");
+  if (j.is_null()) throw InputError(file, where.empty() ? "/" : where, "expected a value, found null");
   if (j.is_object())
     for (const auto& [k, v] : j.items()) check_no_null(v, file, where + "/" + k);
   if (j.is_array())
@@ -50,10 +50,10 @@ void check_no_null(const nlohmann::json& j, const std::string& file, const std::
 /// The keys the comparison reads, checked for their types once here (so that a wrong type is
 /// bad input naming the key, not a JSON library error later).
 void check_summary(const nlohmann::json& s, const std::string& file) {
-  if (!s.is_object()) throw SceneError(file, "", "expected a JSON object");
+  if (!s.is_object()) throw InputError(file, "", "expected a JSON object");
   check_no_null(s, file, "");
   auto fail = [&](const std::string& key, const std::string& what) {
-    throw SceneError(file, key, "expected " + what);
+    throw InputError(file, key, "expected " + what);
   };
   auto pair_of_numbers = [](const nlohmann::json& v) {
     return v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number();
@@ -92,28 +92,28 @@ StoredRun StoredRun::read(const std::filesystem::path& dir) {
 
   // summary.json is written last by every method: without it the run is not complete.
   std::ifstream sin(sum);
-  if (!sin) throw SceneError(sum, "", "expected summary.json of a complete run (not found or unreadable)");
+  if (!sin) throw InputError(sum, "", "expected summary.json of a complete run (not found or unreadable)");
   try {
     h.summary_ = nlohmann::json::parse(sin);
   } catch (const nlohmann::json::exception& e) {
-    throw SceneError(sum, "", std::string("expected valid JSON: ") + e.what());
+    throw InputError(sum, "", std::string("expected valid JSON: ") + e.what());
   }
   check_summary(h.summary_, sum);
 
   std::ifstream in(csv);
-  if (!in) throw SceneError(csv, "", "expected history.csv (not found or unreadable)");
+  if (!in) throw InputError(csv, "", "expected history.csv (not found or unreadable)");
   std::string line;
-  if (!std::getline(in, line)) throw SceneError(csv, "", "expected a header line, the file is empty");
+  if (!std::getline(in, line)) throw InputError(csv, "", "expected a header line, the file is empty");
   const std::vector<std::string> names = split_csv(line);
   std::vector<std::vector<double>*> cols;
   for (const auto& n : names) {
-    if (n.empty()) throw SceneError(csv, "", "expected a column name in every header cell");
-    if (h.columns_.count(n)) throw SceneError(csv, n, "column appears twice in the header");
+    if (n.empty()) throw InputError(csv, "", "expected a column name in every header cell");
+    if (h.columns_.count(n)) throw InputError(csv, n, "column appears twice in the header");
     cols.push_back(&h.columns_[n]);
   }
   for (const char* required : {"t", "R"}) {
     if (!h.columns_.count(required)) {
-      throw SceneError(csv, required, "expected this column in the header (interface.md), found: " + line);
+      throw InputError(csv, required, "expected this column in the header (interface.md), found: " + line);
     }
   }
   long row = 1;
@@ -122,7 +122,7 @@ StoredRun StoredRun::read(const std::filesystem::path& dir) {
     if (line.empty() || line == "\r") continue;
     const auto cells = split_csv(line);
     if (cells.size() != names.size()) {
-      throw SceneError(csv, "",
+      throw InputError(csv, "",
                        "row " + std::to_string(row) + " has " + std::to_string(cells.size()) +
                            " cells, expected " + std::to_string(names.size()));
     }
@@ -130,7 +130,7 @@ StoredRun StoredRun::read(const std::filesystem::path& dir) {
       char* end = nullptr;
       const double v = std::strtod(cells[c].c_str(), &end);
       if (cells[c].empty() || end != cells[c].c_str() + cells[c].size() || !std::isfinite(v)) {
-        throw SceneError(
+        throw InputError(
             csv, names[c],
             "row " + std::to_string(row) + ": expected a finite number, found '" + cells[c] + "'");
       }
@@ -144,7 +144,7 @@ StoredRun StoredRun::read(const std::filesystem::path& dir) {
 StoredRun StoredRun::from_result(const Scene& scene, const SimulationResult& result, std::string label) {
   check_outputs_finite(scene, result);
   if (!scene.output.history)
-    throw SceneError(scene.file, "output.history",
+    throw InputError(scene.file, "output.history",
                      "expected true: a comparison needs the run's history rows");
   const std::vector<std::string> names = history_columns(static_cast<int>(scene.contacts.size()));
   std::map<std::string, std::vector<double>> columns;
@@ -160,10 +160,10 @@ StoredRun StoredRun::from_columns(std::map<std::string, std::vector<double>> col
                                   std::string label) {
   StoredRun h;
   h.label_ = std::move(label);
-  if (!columns.count("t")) throw SceneError(h.label_, "t", "expected a time column");
+  if (!columns.count("t")) throw InputError(h.label_, "t", "expected a time column");
   for (const auto& [name, v] : columns) {
     if (v.size() != columns.at("t").size()) {
-      throw SceneError(h.label_, name, "expected as many values as times");
+      throw InputError(h.label_, name, "expected as many values as times");
     }
   }
   h.columns_ = std::move(columns);
@@ -175,7 +175,7 @@ StoredRun StoredRun::from_columns(std::map<std::string, std::vector<double>> col
 const std::vector<double>& StoredRun::column(const std::string& name) const {
   const auto it = columns_.find(name);
   if (it == columns_.end()) {
-    throw SceneError(label_ + "/history.csv", name, "expected this column (interface.md), it is absent");
+    throw InputError(label_ + "/history.csv", name, "expected this column (interface.md), it is absent");
   }
   return it->second;
 }

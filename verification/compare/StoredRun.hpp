@@ -20,7 +20,7 @@ namespace beamimpact::verification {
 /// norm that needs a missing column reports itself unavailable with the reason (see compare_runs).
 class StoredRun {
  public:
-  /// @brief Reads dir/history.csv and dir/summary.json. Throws SceneError (file, column, what was
+  /// @brief Reads dir/history.csv and dir/summary.json. Throws InputError (file, column, what was
   /// expected) for a missing file, a missing `t` or `R` column, a short row, a non-number, a
   /// non-finite value or times that do not increase.
   static StoredRun read(const std::filesystem::path& dir);
@@ -28,7 +28,7 @@ class StoredRun {
   /// @brief The run a method returned, as read() would read it back from the run directory
   /// write_outputs() writes (the same numbers: both files round-trip every double), without the
   /// files. Throws std::runtime_error for a non-finite value (check_outputs_finite()) and
-  /// SceneError for a result without rows ([output] history = false).
+  /// InputError for a result without rows ([output] history = false).
   /// @param scene the scene the run solved; @param result its result; @param label for messages
   static StoredRun from_result(const Scene& scene, const SimulationResult& result, std::string label);
 
@@ -41,7 +41,7 @@ class StoredRun {
   const std::vector<double>& t() const { return columns_.at("t"); }
   /// @brief True when the column exists.
   bool has(const std::string& name) const { return columns_.count(name) > 0; }
-  /// @brief The column; throws SceneError naming the file and the column when it is absent.
+  /// @brief The column; throws InputError naming the file and the column when it is absent.
   const std::vector<double>& column(const std::string& name) const;
   /// @brief All columns by name.
   const std::map<std::string, std::vector<double>>& columns() const { return columns_; }

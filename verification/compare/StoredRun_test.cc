@@ -9,8 +9,8 @@
 
 #include <api/run.hpp>
 #include <solver/record/output_files.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/testing/test_scenes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact::verification {
 namespace {
@@ -29,7 +29,7 @@ fs::path make_run(const std::string& name, const std::string& csv, bool summary 
 std::string error_of(const fs::path& dir) {
   try {
     StoredRun::read(dir);
-  } catch (const SceneError& e) {
+  } catch (const InputError& e) {
     return e.what();
   }
   return "";
@@ -42,7 +42,7 @@ TEST(StoredRun, ReadsColumnsAndContacts) {
   EXPECT_DOUBLE_EQ(h.column("R")[1], 2.5);
   EXPECT_DOUBLE_EQ(h.output_step(), 0.01);
   EXPECT_EQ(h.summary().at("method"), "paper");
-  EXPECT_THROW(h.column("kinetic"), SceneError);
+  EXPECT_THROW(h.column("kinetic"), InputError);
   fs::remove_all(dir);
 }
 

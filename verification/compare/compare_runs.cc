@@ -6,8 +6,8 @@
 #include <fmt/format.h>
 
 #include <solver/record/ContactIntervals.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/schema/output_schema.hpp>
+#include <solver/util/InputError.hpp>
 #include <verification/compare/series.hpp>
 
 namespace beamimpact::verification {
@@ -289,7 +289,7 @@ Comparison compare_runs(const StoredRun& a, const StoredRun& b, const CompareOpt
   cmp.t0 = std::max(a.t().front(), b.t().front());
   cmp.t1 = std::min(a.t().back(), b.t().back());
   if (!(cmp.t1 > cmp.t0)) {
-    throw SceneError(a.label(), "t",
+    throw InputError(a.label(), "t",
                      fmt::format("expected a time span overlapping the reference's [{}, {}] s, "
                                  "found [{}, {}] s",
                                  b.t().front(), b.t().back(), a.t().front(), a.t().back()));
@@ -297,7 +297,7 @@ Comparison compare_runs(const StoredRun& a, const StoredRun& b, const CompareOpt
   const double ha = a.output_step(), hb = b.output_step();
   for (const StoredRun* h : {&a, &b})
     if (!(h->output_step() > 0.0))
-      throw SceneError(h->label(), "t", "expected at least two rows in history.csv");
+      throw InputError(h->label(), "t", "expected at least two rows in history.csv");
   const double fine = std::min(ha, hb), coarse = std::max(ha, hb);
   cmp.grid_step = options.grid_step != 0.0 ? options.grid_step : fine;
   cmp.window = options.window != 0.0 ? options.window : 10.0 * coarse;
@@ -312,10 +312,10 @@ Comparison compare_runs(const StoredRun& a, const StoredRun& b, const CompareOpt
   for (const auto& [key, v] : {std::pair{"--grid", options.grid_step}, std::pair{"--window", options.window},
                                std::pair{"--merge", options.merge_gap}})
     if (v != 0.0 && !(v > 0.0 && std::isfinite(v)))
-      throw SceneError(a.label(), key, fmt::format("expected a positive finite time (s), got {}", v));
+      throw InputError(a.label(), key, fmt::format("expected a positive finite time (s), got {}", v));
   constexpr double kMostGridPoints = 1e8;  // 0.8 GB per resampled series: beyond any output
   if ((cmp.t1 - cmp.t0) / cmp.grid_step > kMostGridPoints)
-    throw SceneError(a.label(), "--grid",
+    throw InputError(a.label(), "--grid",
                      fmt::format("expected a step giving at most {:g} grid points on [{:g}, {:g}] s, "
                                  "got {:g} s",
                                  kMostGridPoints, cmp.t0, cmp.t1, cmp.grid_step));

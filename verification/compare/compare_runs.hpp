@@ -20,7 +20,7 @@ struct CompareOptions {
 /// both contact points (every contact), and scalar errors (impulse, contact start and end,
 /// number of impacts, peak force excluding closure samples, final velocities, final energy).
 /// Both histories are resampled onto one uniform grid over their common time span.
-/// Throws SceneError when the histories do not overlap in time.
+/// Throws InputError when the histories do not overlap in time.
 Comparison compare_runs(const StoredRun& a, const StoredRun& b, const CompareOptions& options = {});
 
 /// @brief True when compare_runs produces a norm of this name for some number of contacts

@@ -6,8 +6,8 @@
 #include <fmt/format.h>
 
 #include <api/registry.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/scene_io.hpp>
+#include <solver/util/InputError.hpp>
 #include <verification/matrix/child_process.hpp>
 
 namespace beamimpact::verification {
@@ -23,7 +23,7 @@ int mesh_factor(const JobSpec& s) {
   char* end = nullptr;
   const long m = std::strtol(s.mesh.c_str(), &end, 10);
   if (end == s.mesh.c_str() || *end != '\0' || m < 1 || m > 64) {
-    throw SceneError(
+    throw InputError(
         s.scene.string(), "mesh",
         "expected an element multiplier 1..64 for method '" + s.method + "', got '" + s.mesh + "'");
   }
@@ -87,7 +87,7 @@ std::string Launcher::unavailable(const JobSpec& spec) const {
 std::vector<std::string> Launcher::argv(const JobSpec& spec, const std::filesystem::path& out_dir) const {
   const Method& m = method(spec.method, spec.scene.string(), "method");
   if ((spec.dt && !m.accepts.dt) || (!spec.set.empty() && !m.accepts.overrides))
-    throw SceneError(spec.scene.string(), spec.dt ? "dt" : "set",
+    throw InputError(spec.scene.string(), spec.dt ? "dt" : "set",
                      "the method '" + m.name + "' takes no " + (spec.dt ? "dt" : "--set overrides") +
                          "; use args = [...] with its own options");
   std::vector<std::string> a;

@@ -39,7 +39,7 @@ struct Launcher {
   /// @brief Reason the spec cannot run here ("" when it can): a method not in the registry, or
   /// an external program's interpreter, script or check failing (checked once per method).
   std::string unavailable(const JobSpec& spec) const;
-  /// @brief The argument vector writing the run to out_dir. Throws SceneError for settings the
+  /// @brief The argument vector writing the run to out_dir. Throws InputError for settings the
   /// method does not take (dt or --set for a method that picks its own, a mesh preset for a
   /// method that takes an element multiplier and the reverse).
   std::vector<std::string> argv(const JobSpec& spec, const std::filesystem::path& out_dir) const;

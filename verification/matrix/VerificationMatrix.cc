@@ -8,8 +8,8 @@
 #include <toml++/toml.h>
 
 #include <api/registry.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/TableReader.hpp>
+#include <solver/util/InputError.hpp>
 #include <verification/compare/compare_runs.hpp>
 #include <verification/compare/run_checks.hpp>
 
@@ -46,7 +46,7 @@ class Loader {
     try {
       doc = toml::parse_file(file_);
     } catch (const toml::parse_error& e) {
-      throw SceneError(file_, "", std::string("expected valid TOML: ") + std::string(e.description()));
+      throw InputError(file_, "", std::string("expected valid TOML: ") + std::string(e.description()));
     }
     VerificationMatrix m;
     m.file = fs::absolute(file_);
@@ -76,7 +76,7 @@ class Loader {
     each(top, "check", [&](TableReader& r, const std::string& p) { m.checks.push_back(read_check(r, p)); });
     top.finish();
     if (m.cases.empty() && m.convergence.empty() && m.checks.empty())
-      throw SceneError(file_, "case", "expected at least one [[case]], [[convergence]] or [[check]]");
+      throw InputError(file_, "case", "expected at least one [[case]], [[convergence]] or [[check]]");
     return m;
   }
 
@@ -90,7 +90,7 @@ class Loader {
     for (std::size_t i = 0; i < a->size(); ++i) {
       const toml::table* t = (*a)[i].as_table();
       const std::string p = fmt::format("{}[{}]", key, i);
-      if (!t) throw SceneError(file_, p, "expected a table");
+      if (!t) throw InputError(file_, p, "expected a table");
       TableReader r(*t, file_, p, nullptr);
       f(r, p);
       r.finish();
@@ -145,7 +145,7 @@ class Loader {
     for (std::size_t i = 0; i < a->size(); ++i) {
       const std::string p = fmt::format("{}.gates[{}]", prefix, i);
       const toml::table* t = (*a)[i].as_table();
-      if (!t) throw SceneError(file_, p, "expected { metric = ..., tol = ..., why = ... }");
+      if (!t) throw InputError(file_, p, "expected { metric = ..., tol = ..., why = ... }");
       TableReader g(*t, file_, p, nullptr);
       Gate gate;
       gate.metric =

@@ -73,7 +73,7 @@ struct VerificationMatrix {
   std::vector<Convergence> convergence;
   std::vector<RunCheck> checks;
 
-  /// @brief Reads and checks a matrix file. Throws SceneError (file, key, what was expected) for
+  /// @brief Reads and checks a matrix file. Throws InputError (file, key, what was expected) for
   /// unknown keys, unknown metrics, gates without a tolerance or reason, and missing scenes.
   static VerificationMatrix load(const std::filesystem::path& file);
   /// @brief Every distinct run needed by the cases, ladders and checks of a tier.

@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include <api/registry.hpp>
-#include <solver/scene/SceneError.hpp>
+#include <solver/util/InputError.hpp>
 #include <verification/compare/compare_runs.hpp>
 #include <verification/matrix/Table.hpp>
 #include <verification/matrix/evaluate.hpp>
@@ -36,12 +36,12 @@ std::optional<SweepResult> execute_sweep(const SweepOptions& o, const Launcher& 
   const std::string key = by_fraction ? "--fraction" : "--dt";
   const auto& steps = by_fraction ? o.fractions : o.dts;
   if (steps.empty() || (!o.fractions.empty() && !o.dts.empty()))
-    throw SceneError(o.scene.string(), "--dt",
+    throw InputError(o.scene.string(), "--dt",
                      "expected either --dt LIST or --fraction LIST (for dt = \"auto\" scenes)");
   for (double v : steps)
-    if (!(v > 0.0)) throw SceneError(o.scene.string(), key, "expected positive values");
+    if (!(v > 0.0)) throw InputError(o.scene.string(), key, "expected positive values");
   std::error_code unreadable;  // a path the file system refuses (too long) is not found either
-  if (!fs::exists(o.scene, unreadable)) throw SceneError(o.scene.string(), "", "scene file not found");
+  if (!fs::exists(o.scene, unreadable)) throw InputError(o.scene.string(), "", "scene file not found");
   const Method& method = beamimpact::method(o.method, o.scene.string(), "--method");
   const std::vector<std::string> meshes = o.meshes.empty() ? std::vector<std::string>{""} : o.meshes;
 
@@ -68,7 +68,7 @@ std::optional<SweepResult> execute_sweep(const SweepOptions& o, const Launcher& 
     else
       ref->dt = finest;
     if (!method.accepts.dt)
-      throw SceneError(o.scene.string(), "--reference",
+      throw InputError(o.scene.string(), "--reference",
                        "give a reference method or directory for " + o.method);
     r.reference_label = ref->settings_label() + " (the finest step / 4 on the finest mesh)";
   } else if (fs::exists(fs::path(o.reference) / "summary.json", unreadable)) {

@@ -40,7 +40,7 @@ struct SweepResult {
 };
 
 /// @brief Runs the sweep (runs in parallel) and compares each point with the reference.
-/// Throws SceneError for bad options and std::runtime_error when the reference run fails.
+/// Throws InputError for bad options and std::runtime_error when the reference run fails.
 /// Returns nullopt on an MPI rank other than 0 (see JobExecutor).
 std::optional<SweepResult> execute_sweep(const SweepOptions& o, const Launcher& launcher);
 

@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include <beamimpact/version.hpp>
-#include <solver/scene/SceneError.hpp>
+#include <solver/util/InputError.hpp>
 #include <verification/matrix/VerificationMatrix.hpp>
 #include <verification/matrix/interruption.hpp>
 
@@ -58,7 +58,7 @@ std::optional<VerifyResult> verify(const VerifyOptions& o, const std::filesystem
   const auto start = std::chrono::steady_clock::now();
   const std::string started = utc_now();
   if (o.jobs < 1)
-    throw SceneError(o.matrix.string(), "--jobs", "expected a positive number of parallel runs");
+    throw InputError(o.matrix.string(), "--jobs", "expected a positive number of parallel runs");
   const VerificationMatrix m = VerificationMatrix::load(o.matrix);
   const Selection s = select(m, o);
   Launcher launcher;

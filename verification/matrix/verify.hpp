@@ -36,7 +36,7 @@ struct VerifyResult {
   bool passed() const { return verification_passed(items, context.incomplete.empty()); }
 };
 
-/// @brief Checks the options (SceneError naming the option), loads the matrix, runs the selected
+/// @brief Checks the options (InputError naming the option), loads the matrix, runs the selected
 /// items' runs into out/runs/ and evaluates them. Returns nullopt on an MPI rank other than 0
 /// (see JobExecutor). An interruption (interruption()) leaves a result marked incomplete.
 /// @param exe the beamimpact executable the runs start (external methods' paths resolve against

@@ -8,9 +8,9 @@
 #include <toml++/toml.h>
 
 #include <api/registry.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/TableReader.hpp>
 #include <solver/scene/scene_io.hpp>
+#include <solver/util/InputError.hpp>
 #include <verification/compare/compare_runs.hpp>
 #include <verification/matrix/JobSpec.hpp>
 #include <verification/matrix/sweep.hpp>
@@ -136,7 +136,7 @@ Study Study::load(const fs::path& file_in) {
   try {
     doc = toml::parse_file(file);
   } catch (const toml::parse_error& e) {
-    throw SceneError(file, "", std::string("expected valid TOML: ") + std::string(e.description()));
+    throw InputError(file, "", std::string("expected valid TOML: ") + std::string(e.description()));
   }
   Study s;
   s.file = fs::absolute(file_in).lexically_normal();
@@ -183,7 +183,7 @@ Study Study::load(const fs::path& file_in) {
     (void)load_scene(s.scene, first);
     first.insert(first.end(), s.reference.set.begin(), s.reference.set.end());
     (void)load_scene(s.scene, first);
-  } catch (const SceneError& e) {
+  } catch (const InputError& e) {
     r.fail("set", std::string("the overrides do not apply to the scene: ") + e.what());
   }
   return s;
@@ -246,7 +246,9 @@ std::vector<std::string> overrides(const Study& s, const Point& pt) {
         case Parameter::Kind::kRake: {
           const Scene sc = load_scene(s.scene, out);
           const int b = sc.body_index(p.target);
-          if (b < 0) throw SceneError(s.file.string(), "parameter." + p.name + ".rake", "no body '" + p.target + "' in the scene");
+          if (b < 0)
+            throw InputError(s.file.string(), "parameter." + p.name + ".rake",
+                             "no body '" + p.target + "' in the scene");
           const Body& body = sc.bodies[static_cast<std::size_t>(b)];
           const double a = v * std::numbers::pi / 180.0, len = body.length();
           const double speed = std::hypot(body.velocity[0], body.velocity[1]);
@@ -257,8 +259,8 @@ std::vector<std::string> overrides(const Study& s, const Point& pt) {
           break;
         }
       }
-    } catch (const SceneError& e) {
-      throw SceneError(s.file.string(), "parameter." + p.name, std::string("cannot apply: ") + e.what());
+    } catch (const InputError& e) {
+      throw InputError(s.file.string(), "parameter." + p.name, std::string("cannot apply: ") + e.what());
     }
   }
   return out;

@@ -57,7 +57,7 @@ struct Study {
   std::vector<BreakRule> breaks{BreakRule{}};  ///< `breaks = [{ metric, above }, ...]`
   bool keep_runs = false;  ///< keep each run's history.csv / summary.json under DIR/runs
 
-  /// @brief Reads and checks a study file. Throws SceneError (file, key, what was expected) for a
+  /// @brief Reads and checks a study file. Throws InputError (file, key, what was expected) for a
   /// missing scene, an unknown method or norm, a parameter without values, a bad design.
   /// @param file the study file (TOML)
   static Study load(const std::filesystem::path& file);
@@ -76,7 +76,7 @@ std::vector<Point> design_points(const Study& s);
 
 /// @brief The --set overrides of one point: the study's fixed set, then each parameter's. The
 /// rake transform reads the scene (with the overrides before it) for the body's end, length and
-/// speed. Throws SceneError naming the study file and the parameter when it cannot apply.
+/// speed. Throws InputError naming the study file and the parameter when it cannot apply.
 /// @param s the study
 /// @param p the point
 std::vector<std::string> overrides(const Study& s, const Point& p);

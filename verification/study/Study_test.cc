@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/scene_io.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact::study {
 namespace {
@@ -108,7 +108,7 @@ TEST(Study, BadInputNamesTheFileAndTheKey) {
   auto message = [](const std::string& name, const std::string& text) -> std::string {
     try {
       (void)Study::load(write_study(name, text));
-    } catch (const SceneError& e) {
+    } catch (const InputError& e) {
       return e.what();
     }
     return "no error";

@@ -6,9 +6,9 @@
 
 #include <api/registry.hpp>
 #include <api/run.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/run_cost.hpp>
 #include <solver/scene/scene_io.hpp>
+#include <solver/util/InputError.hpp>
 #include <verification/compare/compare_runs.hpp>
 #include <verification/compare/run_checks.hpp>
 
@@ -33,7 +33,7 @@ std::optional<StoredRun> run_one(const Study& s, const std::vector<std::string>&
     c.dt = r.dt;
     out = StoredRun::from_result(scene, r, dir.string());
     c.status = "ok";
-  } catch (const SceneError& e) {
+  } catch (const InputError& e) {
     c.status = "error";
     c.message = e.what();
   } catch (const std::exception& e) {

@@ -8,7 +8,7 @@ set -euo pipefail
 pkgs=(cmake g++ make libeigen3-dev libsundials-dev libgsl-dev libgtest-dev libbenchmark-dev
       libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev
       python3-numpy python3-matplotlib python3-dev pybind11-dev python3-pytest
-      chromium libopenmpi-dev openmpi-bin)
+      chromium libopenmpi-dev openmpi-bin python3-vtk9)
 [[ "${1:-}" == "--no-fenicsx" ]] || pkgs+=(python3-dolfinx)
 [[ "${1:-}" == "--sanitizers" ]] && pkgs=(clang libclang-rt-14-dev ninja-build)
 missing=()

@@ -19,16 +19,41 @@ def steps(run_dir):
     return [(float(d.get("timestep")), os.path.join(run_dir, d.get("file"))) for d in root.iter("DataSet")]
 
 
+_DTYPES = {"Float64": "<f8", "Int64": "<i8", "Int32": "<i4", "UInt8": "u1"}
+_APPENDED = b'<AppendedData encoding="raw">'
+
+
+def _parse(path):
+    """(XML root, appended raw bytes or None) of a .vtu: the binary files carry their arrays
+    after the XML header (VTK's appended raw encoding), which an XML parser cannot read."""
+    with open(path, "rb") as f:
+        data = f.read()
+    cut = data.find(_APPENDED)
+    if cut < 0:
+        return ET.fromstring(data), None
+    start = data.index(b"_", cut + len(_APPENDED)) + 1
+    return ET.fromstring(data[:cut] + b"</VTKFile>"), memoryview(data)[start:]
+
+
+def _values(d, raw):
+    """The values of one DataArray, inline (ascii) or from the appended block at its offset."""
+    if d.get("format") != "appended":
+        return np.array(d.text.split(), dtype=float)
+    at = int(d.get("offset"))
+    nbytes = int(np.frombuffer(raw[at:at + 8], dtype="<u8")[0])
+    return np.frombuffer(raw[at + 8:at + 8 + nbytes], dtype=_DTYPES[d.get("type")]).astype(float)
+
+
 def read_vtu(path):
     """One step: {"points": (n, 3) reference positions, "bodies": [node index arrays], and each
-    point-data array by name as (n, components)}."""
-    root = ET.parse(path).getroot()
+    point-data array by name as (n, components)}. Reads both encodings (output.field_format)."""
+    root, raw = _parse(path)
     piece = root.find("UnstructuredGrid/Piece")
     n = int(piece.get("NumberOfPoints"))
     frame = {}
     for d in piece.iter("DataArray"):
         k = int(d.get("NumberOfComponents", "1"))
-        a = np.array(d.text.split(), dtype=float)
+        a = _values(d, raw)
         frame[d.get("Name")] = a.reshape(-1, k) if k > 1 else a
     conn = frame.pop("connectivity").astype(int)
     ends = frame.pop("offsets").astype(int)

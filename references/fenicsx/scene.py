@@ -318,6 +318,9 @@ def load_scene(path, overrides=None):
             raise SceneError(file, tbl, "expected a table")
     o = _Table(doc.get("output", {}), file, "output", assumed)
     fields = o.boolean("fields", False)
+    # The beam methods' encoding choice; dolfinx's VTKFile writes the continuum's files in its
+    # own encoding whichever is asked (ParaView reads both).
+    o.string("field_format", "binary or ascii", default="binary", allowed=("binary", "ascii"))
     if not o.boolean("history", True):
         o.fail("history", "the FEniCSx reference keeps its history rows (its summary is made from "
                           "them); expected true")

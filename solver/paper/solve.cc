@@ -224,7 +224,7 @@ SimulationResult solve(const Scene& scene_in, const std::filesystem::path& field
   for (const ContactPair& pair : integ.pairs())
     surfaces.emplace_back(model, pair.target_body(), pair.striker_node());
   std::optional<FieldWriter> fields;
-  if (!fields_dir.empty()) fields.emplace(model, fields_dir);
+  if (!fields_dir.empty()) fields.emplace(model, fields_dir, scene.output.field_format);
   Progress progress("paper", scene.time.end);
   for (long p = 0;; ++p) {
     record_step(integ, p, N, scene, cs.dt, surfaces, rec, fields ? &*fields : nullptr);

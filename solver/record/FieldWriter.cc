@@ -1,7 +1,10 @@
 #include <solver/record/FieldWriter.hpp>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
+#include <type_traits>
 
 #include <fmt/format.h>
 
@@ -12,29 +15,55 @@ constexpr int kPolyLine = 4;  // VTK cell type VTK_POLY_LINE
 
 std::filesystem::path part_of(const std::filesystem::path& p) { return p.string() + ".part"; }
 
-/// Appends one <DataArray> of `n` tuples; value(i, c) gives component c of tuple i.
-template <typename F>
-void data_array(fmt::memory_buffer& b, const char* type, const char* name, int n, int components, F value) {
-  fmt::format_to(std::back_inserter(b), "<DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"ascii\">\n",
-                 type, name, components);
+/// VTK's name of the element type T.
+template <typename T>
+constexpr const char* vtk_type() {
+  if constexpr (std::is_same_v<T, double>) return "Float64";
+  if constexpr (std::is_same_v<T, std::int64_t>) return "Int64";
+  if constexpr (std::is_same_v<T, std::int32_t>) return "Int32";
+  if constexpr (std::is_same_v<T, std::uint8_t>) return "UInt8";
+}
+
+/// Appends one <DataArray> of `n` tuples of `components` values of type T; value(i, c) gives
+/// component c of tuple i. ASCII: the values inline in `xml`. Binary: an empty element in `xml`
+/// whose offset points into the appended data, and the block (UInt64 byte count, then the
+/// values in the machine's little-endian order) at `offset` = raw.size() + `base` in `raw`.
+template <typename T, typename F>
+void data_array(std::string& xml, std::string& raw, std::size_t base, FieldFormat format, const char* name,
+                int n, int components, F value) {
+  static_assert(std::endian::native == std::endian::little, "the VTK files declare LittleEndian");
+  auto out = std::back_inserter(xml);
+  const bool binary = format == FieldFormat::kBinary;
+  fmt::format_to(out, "<DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"{}\"",
+                 vtk_type<T>(), name, components, binary ? "appended" : "ascii");
+  if (binary) {
+    fmt::format_to(out, " offset=\"{}\"/>\n", base + raw.size());
+    const std::uint64_t bytes = sizeof(T) * static_cast<std::uint64_t>(n) * components;
+    raw.append(reinterpret_cast<const char*>(&bytes), sizeof bytes);
+  } else {
+    xml += ">\n";
+  }
   for (int i = 0; i < n; ++i) {
     for (int c = 0; c < components; ++c) {
-      const double v = value(i, c);
-      if (!std::isfinite(v))
+      const auto v = value(i, c);
+      if (!std::isfinite(static_cast<double>(v)))
         throw std::runtime_error(fmt::format("non-finite {} in the fields: the run diverged", name));
-      fmt::format_to(std::back_inserter(b), "{}{}", c ? " " : "", v);
+      if (binary) {
+        const T x = static_cast<T>(v);
+        raw.append(reinterpret_cast<const char*>(&x), sizeof x);
+      } else {
+        fmt::format_to(out, "{}{}", c ? " " : "", static_cast<T>(v));
+      }
     }
-    b.push_back('\n');
+    if (!binary) xml.push_back('\n');
   }
-  fmt::format_to(std::back_inserter(b), "</DataArray>\n");
+  if (!binary) xml += "</DataArray>\n";
 }
 
 }  // namespace
 
-FieldWriter::FieldWriter(const Model& model, std::filesystem::path dir)
-    : model_(model),
-      dir_(std::move(dir)),
-      touching_(model.num_nodes(), 0) {
+FieldWriter::FieldWriter(const Model& model, std::filesystem::path dir, FieldFormat format)
+    : model_(model), dir_(std::move(dir)), format_(format), touching_(model.num_nodes(), 0) {
   std::filesystem::remove(collection(dir_));
   std::filesystem::remove_all(dir_ / "fields");
   std::filesystem::create_directories(dir_ / "fields");
@@ -47,19 +76,20 @@ FieldWriter::FieldWriter(const Model& model, std::filesystem::path dir)
     if (!e.rigid) ++touching_[e.n1], ++touching_[e.n2];
   // The piece's points, cells and cell data: the same in every step's file, formatted once.
   const int n = model.num_nodes(), nb = model.num_bodies();
-  fmt::memory_buffer b;
-  auto out = std::back_inserter(b);
-  fmt::format_to(out, "<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n<Points>\n", n, nb);
-  data_array(b, "Float64", "reference_position", n, 3,
-             [&](int i, int c) { return c < 2 ? model.node_position(i)[c] : 0.0; });
-  fmt::format_to(out, "</Points>\n<Cells>\n");
-  data_array(b, "Int64", "connectivity", n, 1, [](int i, int) { return i; });
-  data_array(b, "Int64", "offsets", nb, 1, [&](int body, int) { return body + 1 < nb ? model.node_id(body + 1, 0) : n; });
-  data_array(b, "UInt8", "types", nb, 1, [](int, int) { return kPolyLine; });
-  fmt::format_to(out, "</Cells>\n<CellData Scalars=\"body\">\n");
-  data_array(b, "Int32", "body", nb, 1, [](int body, int) { return body; });
-  fmt::format_to(out, "</CellData>\n<PointData Vectors=\"displacement\">\n");
-  geometry_ = fmt::to_string(b);
+  std::string& x = geometry_;
+  std::string& raw = geometry_raw_;
+  fmt::format_to(std::back_inserter(x), "<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n<Points>\n", n,
+                 nb);
+  data_array<double>(x, raw, 0, format_, "reference_position", n, 3,
+                     [&](int i, int c) { return c < 2 ? model.node_position(i)[c] : 0.0; });
+  x += "</Points>\n<Cells>\n";
+  data_array<std::int64_t>(x, raw, 0, format_, "connectivity", n, 1, [](int i, int) { return i; });
+  data_array<std::int64_t>(x, raw, 0, format_, "offsets", nb, 1,
+                           [&](int body, int) { return body + 1 < nb ? model.node_id(body + 1, 0) : n; });
+  data_array<std::uint8_t>(x, raw, 0, format_, "types", nb, 1, [](int, int) { return kPolyLine; });
+  x += "</Cells>\n<CellData Scalars=\"body\">\n";
+  data_array<std::int32_t>(x, raw, 0, format_, "body", nb, 1, [](int body, int) { return body; });
+  x += "</CellData>\n<PointData Vectors=\"displacement\">\n";
 }
 
 FieldWriter::~FieldWriter() {
@@ -87,43 +117,61 @@ void FieldWriter::section_forces(const std::vector<std::array<double, 3>>& end_f
   }
 }
 
-void FieldWriter::write(double t, const Eigen::VectorXd& U, const Eigen::VectorXd& V,
-                        const std::vector<Vec2>& contact_force, const std::vector<std::array<double, 3>>& end_forces) {
+void FieldWriter::write_arrays(const Eigen::VectorXd& U, const Eigen::VectorXd& V,
+                               const std::vector<Vec2>& contact_force) {
   const int n = model_.num_nodes();
-  if (end_forces.size() != model_.elements().size())
-    throw std::logic_error("FieldWriter::write: one end-force triple per element expected");
-  if (contact_force.size() != static_cast<std::size_t>(n))
-    throw std::logic_error("FieldWriter::write: one contact force per node expected");
-  section_forces(end_forces);
-
-  fmt::memory_buffer b;
-  auto out = std::back_inserter(b);
-  fmt::format_to(out,
-                 "<?xml version=\"1.0\"?>\n"
-                 "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-                 "<UnstructuredGrid>\n<FieldData>\n"
-                 "<DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" format=\"ascii\">{}</DataArray>\n"
-                 "</FieldData>\n",
-                 t);
-  b.append(geometry_.data(), geometry_.data() + geometry_.size());
+  const std::size_t base = geometry_raw_.size();
   auto vec = [&](const Eigen::VectorXd& X) {
     return [&](int i, int c) { return c < 2 ? model_.node_vector(X, i)[c] : 0.0; };
   };
-  data_array(b, "Float64", "displacement", n, 3, vec(U));
-  data_array(b, "Float64", "velocity", n, 3, vec(V));
-  data_array(b, "Float64", "rotation", n, 1, [&](int i, int) {
+  data_array<double>(xml_, raw_, base, format_, "displacement", n, 3, vec(U));
+  data_array<double>(xml_, raw_, base, format_, "velocity", n, 3, vec(V));
+  data_array<double>(xml_, raw_, base, format_, "rotation", n, 1, [&](int i, int) {
     const int eq = model_.equation(i, 2);
     return eq >= 0 ? U(eq) : 0.0;
   });
-  data_array(b, "Float64", "axial_force", n, 1, [&](int i, int) { return axial_[i]; });
-  data_array(b, "Float64", "bending_moment", n, 1, [&](int i, int) { return moment_[i]; });
-  data_array(b, "Float64", "contact_force", n, 3,
-             [&](int i, int c) { return c < 2 ? contact_force[static_cast<std::size_t>(i)][c] : 0.0; });
-  fmt::format_to(out, "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
+  data_array<double>(xml_, raw_, base, format_, "axial_force", n, 1, [&](int i, int) { return axial_[i]; });
+  data_array<double>(xml_, raw_, base, format_, "bending_moment", n, 1,
+                     [&](int i, int) { return moment_[i]; });
+  data_array<double>(xml_, raw_, base, format_, "contact_force", n, 3, [&](int i, int c) {
+    return c < 2 ? contact_force[static_cast<std::size_t>(i)][c] : 0.0;
+  });
+}
+
+void FieldWriter::write(double t, const Eigen::VectorXd& U, const Eigen::VectorXd& V,
+                        const std::vector<Vec2>& contact_force,
+                        const std::vector<std::array<double, 3>>& end_forces) {
+  if (end_forces.size() != model_.elements().size())
+    throw std::logic_error("FieldWriter::write: one end-force triple per element expected");
+  if (contact_force.size() != static_cast<std::size_t>(model_.num_nodes()))
+    throw std::logic_error("FieldWriter::write: one contact force per node expected");
+  section_forces(end_forces);
+
+  const bool binary = format_ == FieldFormat::kBinary;
+  xml_.clear();
+  raw_.clear();
+  fmt::format_to(
+      std::back_inserter(xml_),
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\"{}>\n"
+      "<UnstructuredGrid>\n<FieldData>\n"
+      "<DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" format=\"ascii\">{}</DataArray>\n"
+      "</FieldData>\n",
+      binary ? " header_type=\"UInt64\"" : "", t);
+  xml_ += geometry_;
+  write_arrays(U, V, contact_force);
+  xml_ += "</PointData>\n</Piece>\n</UnstructuredGrid>\n";
+  if (binary) xml_ += "<AppendedData encoding=\"raw\">\n_";
 
   const std::string name = fmt::format("fields/step_{:06d}.vtu", count_++);
   std::ofstream f(dir_ / name, std::ios::binary);
-  f.write(b.data(), static_cast<std::streamsize>(b.size()));
+  f.write(xml_.data(), static_cast<std::streamsize>(xml_.size()));
+  if (binary) {
+    f.write(geometry_raw_.data(), static_cast<std::streamsize>(geometry_raw_.size()));
+    f.write(raw_.data(), static_cast<std::streamsize>(raw_.size()));
+    f << "\n</AppendedData>\n";
+  }
+  f << "</VTKFile>\n";
   if (!f) throw std::runtime_error("cannot write " + (dir_ / name).string());
   pvd_ << fmt::format("<DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n", t, name);
 }

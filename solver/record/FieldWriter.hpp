@@ -12,7 +12,9 @@
 /// node) and contact_force (N: the contact forces on the nodes, the striker's and the reaction
 /// shared over the target's nodes as the pair's rows apply it). Cell data: body (index into the
 /// scene).
-/// Numbers are written in shortest round-trip form, so they read back bit for bit.
+/// Numbers are stored as output.field_format says: VTK's appended raw binary (the default: each
+/// array a block of little-endian values behind a UInt64 byte count, after the XML header) or
+/// ASCII in shortest round-trip form. Both read back bit for bit; ParaView reads both.
 
 #include <array>
 #include <filesystem>
@@ -23,6 +25,7 @@
 #include <Eigen/Core>
 
 #include <solver/model/Model.hpp>
+#include <solver/scene/Scene.hpp>
 
 namespace beamimpact {
 
@@ -32,7 +35,8 @@ class FieldWriter {
   /// @brief Removes any fields of an earlier run in `dir` and starts the collection.
   /// @param model the beam model (nodes, elements, equations)
   /// @param dir the run directory (fields.pvd and fields/ go there)
-  FieldWriter(const Model& model, std::filesystem::path dir);
+  /// @param format how the numbers are stored (binary or ASCII)
+  FieldWriter(const Model& model, std::filesystem::path dir, FieldFormat format = FieldFormat::kBinary);
   FieldWriter(const FieldWriter&) = delete;
   FieldWriter& operator=(const FieldWriter&) = delete;
   /// @brief An unfinished collection (the run failed) is removed: no .pvd vouches for it.
@@ -45,8 +49,8 @@ class FieldWriter {
   /// @param contact_force per node, the contact forces on it (N, global x and y)
   /// @param end_forces per element: axial force N (N, tension > 0) and the end moments M1, M2
   ///        (N m) the element exerts on its nodes' rotations (InternalForce::end_forces)
-  void write(double t, const Eigen::VectorXd& U, const Eigen::VectorXd& V, const std::vector<Vec2>& contact_force,
-             const std::vector<std::array<double, 3>>& end_forces);
+  void write(double t, const Eigen::VectorXd& U, const Eigen::VectorXd& V,
+             const std::vector<Vec2>& contact_force, const std::vector<std::array<double, 3>>& end_forces);
 
   /// @brief Closes the collection: fields.pvd appears (atomically) only now.
   void finish();
@@ -58,13 +62,20 @@ class FieldWriter {
   /// Axial force and bending moment at each node: the element end forces, averaged.
   void section_forces(const std::vector<std::array<double, 3>>& end_forces);
 
+  /// Appends the point data of one step to xml_ and raw_.
+  void write_arrays(const Eigen::VectorXd& U, const Eigen::VectorXd& V,
+                    const std::vector<Vec2>& contact_force);
+
   const Model& model_;
   std::filesystem::path dir_;
+  FieldFormat format_;
   std::ofstream pvd_;  ///< fields.pvd.part while the run goes on
   long count_ = 0;
   std::vector<double> axial_, moment_;
   std::vector<int> touching_;  ///< elements meeting at each node
   std::string geometry_;       ///< each .vtu's points, cells and cell data (the same every step)
+  std::string geometry_raw_;   ///< binary: their appended blocks (the same every step)
+  std::string xml_, raw_;      ///< the step being written: its XML and (binary) appended blocks
 };
 
 }  // namespace beamimpact

@@ -67,7 +67,10 @@ nlohmann::json summary_json(const Scene& scene, const SimulationResult& r) {
                      {"kinematics", to_string(scene.model.kinematics)},
                      {"rayleigh_mass", scene.model.rayleigh_mass},
                      {"rayleigh_stiffness", scene.model.rayleigh_stiffness}}},
-                   {"output", {{"history", scene.output.history}, {"fields", scene.output.fields}}}};
+                   {"output",
+                    {{"history", scene.output.history},
+                     {"fields", scene.output.fields},
+                     {"field_format", to_string(scene.output.field_format)}}}};
   json s = {{"scene", scene.name},
             {"scene_file", scene.file},
             {"scene_sha256", scene.sha256},

@@ -16,6 +16,7 @@ Vec2 Body::node_position(int i) const {
 const char* to_string(MassKind m) { return m == MassKind::kLumped ? "lumped" : "consistent"; }
 const char* to_string(RotaryInertia r) { return r == RotaryInertia::kHrz ? "hrz" : "section"; }
 const char* to_string(Kinematics k) { return k == Kinematics::kLinear ? "linear" : "corotational"; }
+const char* to_string(FieldFormat f) { return f == FieldFormat::kBinary ? "binary" : "ascii"; }
 
 int Scene::body_index(const std::string& n) const {
   for (std::size_t i = 0; i < bodies.size(); ++i)

@@ -23,6 +23,11 @@ struct TimeSettings {
   bool allow_long_run = false;        ///< accept a run beyond the ordinary cost (run_cost.hpp)
 };
 
+/// @brief How the field files store their numbers: VTK's appended raw binary (little-endian,
+/// UInt64 block headers; the default: compact and fast) or ASCII text (shortest round-trip
+/// decimals). Both read back bit for bit.
+enum class FieldFormat { kBinary, kAscii };
+
 /// @brief What a run writes besides summary.json: [output] table.
 struct OutputSettings {
   /// history.csv rows kept and written (false: only the first and last rows' energies reach the
@@ -31,6 +36,8 @@ struct OutputSettings {
   /// VTK XML fields (one .vtu per output row and a .pvd collection) in the run directory's
   /// fields/ folder, for ParaView (record/FieldWriter.hpp).
   bool fields = false;
+  /// Encoding of the field files (output.field_format = "binary" | "ascii").
+  FieldFormat field_format = FieldFormat::kBinary;
 };
 
 /// @brief Mass lumping choice for the element mass matrix.
@@ -45,6 +52,7 @@ enum class Kinematics { kLinear, kCorotational };
 const char* to_string(MassKind m);
 const char* to_string(RotaryInertia r);
 const char* to_string(Kinematics k);
+const char* to_string(FieldFormat f);
 
 /// @brief Model choices: [model] table.
 struct ModelSettings {

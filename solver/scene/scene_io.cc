@@ -311,6 +311,9 @@ void read_output(TableReader& top, Scene& sc) {
   TableReader r(sub_table(top, "output", false, empty), sc.file, "output", &sc.assumed);
   sc.output.history = r.boolean_or("history", true);
   sc.output.fields = r.boolean_or("fields", false);
+  sc.output.field_format = r.choice_or("field_format", "binary", {"binary", "ascii"}) == "binary"
+                               ? FieldFormat::kBinary
+                               : FieldFormat::kAscii;
   r.finish();
 }
 

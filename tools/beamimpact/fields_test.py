@@ -1,6 +1,8 @@
 """Field output (`beamimpact run --fields`): the VTK files against the run's own history.csv and
-against the exact 1D wave solution of S1. Run from ctest: BEAMIMPACT_EXE and BEAMIMPACT_SOURCE
-name the program and the source tree."""
+against the exact 1D wave solution of S1. The files are read with VTK's own XML reader (Debian's
+python3-vtk9, the library ParaView reads them with), not with the project's reader, and the
+binary and ASCII encodings are checked to hold the same bits. Run from ctest: BEAMIMPACT_EXE and
+BEAMIMPACT_SOURCE name the program and the source tree."""
 import csv
 import os
 import subprocess
@@ -8,6 +10,9 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
 EXE = os.environ["BEAMIMPACT_EXE"]
 SCENES = Path(os.environ["BEAMIMPACT_SOURCE"]) / "verification" / "scenes" / "paper"
@@ -21,7 +26,30 @@ def run(tmp_path, scene, *args):
 
 
 def arrays(vtu):
-    """Every DataArray of a .vtu by name, as lists of floats (parsing fails on malformed XML)."""
+    """Every DataArray of a .vtu by name, as lists of floats, read by VTK (ParaView's reader): an
+    error or warning of the reader fails the test, so does a file it cannot read whole."""
+    r = vtkXMLUnstructuredGridReader()
+    complaints = []
+    r.AddObserver(vtkCommand.ErrorEvent, lambda *_: complaints.append("error"))
+    r.AddObserver(vtkCommand.WarningEvent, lambda *_: complaints.append("warning"))
+    r.SetFileName(str(vtu))
+    r.Update()
+    assert not complaints and r.GetErrorCode() == 0, f"VTK could not read {vtu}"
+    g = r.GetOutput()
+    a = {"reference_position": vtk_to_numpy(g.GetPoints().GetData()).ravel().tolist(),
+         "connectivity": vtk_to_numpy(g.GetCells().GetConnectivityArray()).tolist(),
+         "offsets": vtk_to_numpy(g.GetCells().GetOffsetsArray()).tolist()[1:],  # VTK keeps a leading 0
+         "types": vtk_to_numpy(g.GetCellTypesArray()).tolist(),
+         "body": vtk_to_numpy(g.GetCellData().GetArray("body")).tolist()}
+    pd = g.GetPointData()
+    for k in range(pd.GetNumberOfArrays()):
+        a[pd.GetArrayName(k)] = vtk_to_numpy(pd.GetArray(k)).ravel().tolist()
+    a = {name: [float(x) for x in values] for name, values in a.items()}
+    return g.GetNumberOfPoints(), g.GetNumberOfCells(), a
+
+
+def ascii_arrays(vtu):
+    """Every DataArray of an ASCII .vtu by name, parsed as XML text (parsing fails on malformed XML)."""
     root = ET.parse(vtu).getroot()
     assert root.get("type") == "UnstructuredGrid"
     piece = root.find("UnstructuredGrid/Piece")
@@ -154,7 +182,46 @@ def test_history_false_keeps_no_rows_but_the_same_energies(tmp_path, s1):
     out = run(tmp_path, "s1_central", "--set", "output.history=false")
     assert not (out / "history.csv").exists()
     lean, full = (json.loads((d / "summary.json").read_text()) for d in (out, s1))
-    assert lean["settings"]["output"] == {"history": False, "fields": False}
+    assert lean["settings"]["output"] == {"history": False, "fields": False, "field_format": "binary"}
     for key in ("energy_initial", "energy_final", "momentum_drift_max"):
         assert lean[key] == full[key]  # the same run; only the rows were not kept
     assert lean["contacts"][0]["impulse_normal"] == full["contacts"][0]["impulse_normal"]
+
+
+def test_binary_and_ascii_files_hold_the_same_bits(tmp_path, s1):
+    # The same run written in both encodings: the binary file is the default (appended raw,
+    # UInt64 block headers); the ASCII one prints shortest round-trip decimals. Every value of
+    # every array must be the same double.
+    out = run(tmp_path, "s1_central", "--fields", "--set", "output.field_format=ascii")
+    text, binary = collection(out), collection(s1)
+    assert len(text) == len(binary)
+    for (t1, f1), (t2, f2) in list(zip(text, binary))[::40]:
+        assert t1 == t2
+        n1, c1, a1 = ascii_arrays(f1)
+        n2, c2, a2 = arrays(f2)
+        assert (n1, c1) == (n2, c2)
+        for name in a1:
+            if name != "TimeValue":
+                assert a1[name] == a2[name], name
+
+
+def test_the_python_reader_reads_both_encodings_as_vtk_does(tmp_path, s1):
+    # python/beamimpact/fields.py (used by reports/animate.py and beamimpact.read_fields) against
+    # VTK's reader on the same binary file, and on the ASCII file of the same run.
+    import sys
+    sys.path.insert(0, str(Path(os.environ["BEAMIMPACT_SOURCE"]) / "python" / "beamimpact"))
+    import fields as reader
+    out = run(tmp_path, "s1_central", "--fields", "--set", "output.field_format=ascii", "--set", "time.end=0.6")
+    for f in (collection(s1)[55][1], collection(out)[55][1]):
+        _, _, a = arrays(f)
+        frame = reader.read_vtu(f)
+        assert frame["displacement"].ravel().tolist() == a["displacement"]
+        assert frame["contact_force"].ravel().tolist() == a["contact_force"]
+        assert [b.tolist() for b in frame["bodies"]] == [list(range(11)), list(range(11, 22))]
+
+
+def test_a_bad_field_format_is_refused_with_the_key(tmp_path):
+    p = subprocess.run([EXE, "run", str(SCENES / "s1_central.toml"), "--out", str(tmp_path / "x"), "--fields",
+                        "--set", "output.field_format=hdf5"], capture_output=True, text=True)
+    assert p.returncode == 2
+    assert "output.field_format" in p.stderr and "binary" in p.stderr

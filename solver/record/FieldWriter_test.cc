@@ -61,7 +61,7 @@ TEST(FieldWriter, SectionForcesOfExactlyRepresentedFields) {
     fint.end_forces(U, ends);
     const auto dir = temp_path("fields" + std::to_string(elements));
     {
-      FieldWriter w(model, dir);
+      FieldWriter w(model, dir, FieldFormat::kAscii);  // the values parsed as text below
       w.write(0.0, U, V, Fc, ends);
       w.finish();
     }

@@ -8,7 +8,9 @@ set -euo pipefail
 pkgs=(cmake g++ make libeigen3-dev libsundials-dev libgsl-dev libgtest-dev libbenchmark-dev
       libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev
       python3-numpy python3-matplotlib python3-dev pybind11-dev python3-pytest
-      chromium libopenmpi-dev openmpi-bin python3-vtk9)
+      chromium libopenmpi-dev openmpi-bin python3-vtk9
+      python3-venv python3-setuptools
+      python3-sphinx furo python3-myst-parser doxygen python3-breathe)
 [[ "${1:-}" == "--no-fenicsx" ]] || pkgs+=(python3-dolfinx)
 [[ "${1:-}" == "--sanitizers" ]] && pkgs=(clang libclang-rt-14-dev ninja-build)
 missing=()

@@ -3,17 +3,21 @@ compare command's norms, over the C++ library (beamimpact._core).
 
     import beamimpact
     scene = beamimpact.load_scene("verification/scenes/paper/s1_central.toml")
-    run = beamimpact.run(scene, method="paper", set={"time.dt": 0.005})
+    run = beamimpact.run(scene, method="paper", overrides={"time.dt": 0.005})
     run.summary["contacts"][0]["impulse_normal"], run.history["R"]
     beamimpact.compare(run, beamimpact.run(scene, method="exact"))["norms"]
 
 Bad input raises beamimpact.InputError with the CLI's message (file, key, what was expected);
 beamimpact.SceneError is the same class under its earlier name (deprecated).
 """
+from __future__ import annotations
+
 import json
 import os
 import shutil
 import sys
+import warnings
+from typing import Any, Callable, Iterable, Mapping, Optional, Sequence, Union
 
 import numpy as np
 
@@ -24,6 +28,23 @@ from .fields import read_fields
 __all__ = ["InputError", "SceneError", "Scene", "Run", "load_scene", "run", "read_run", "read_fields", "compare",
            "norm", "sweep", "verify", "methods"]
 __version__ = _core.__version__
+
+#: A scene given as a loaded Scene or as the path of its TOML file.
+SceneLike = Union["Scene", str, "os.PathLike[str]"]
+#: Scene overrides by key, as --set KEY=VALUE: {"time.dt": 0.005, "bodies.B.elements": 20}.
+Overrides = Mapping[str, Any]
+#: A progress callback: (label, value, total).
+ProgressFn = Callable[[str, float, float], None]
+
+
+def _overrides(overrides: Optional[Overrides], set_: Optional[Overrides], where: str) -> Optional[Overrides]:
+    """The overrides of a call that may still use the deprecated keyword set= (it shadows the builtin)."""
+    if set_ is None:
+        return overrides
+    warnings.warn(f"beamimpact.{where}(set=...) is deprecated: use overrides=...", DeprecationWarning, stacklevel=3)
+    if overrides is not None:
+        raise TypeError(f"beamimpact.{where}: give overrides= or set=, not both")
+    return set_
 
 
 def _plain(o):
@@ -52,7 +73,7 @@ class Scene:
     those of the C++ Scene.
     """
 
-    def __init__(self, source, overrides=(), *, _is_dict=False):
+    def __init__(self, source: Union[str, os.PathLike], overrides: Iterable[str] = (), *, _is_dict: bool = False):
         self._source, self._is_dict = source, _is_dict
         self._overrides = list(overrides)
         if _is_dict:
@@ -61,35 +82,42 @@ class Scene:
             self._scene = _core.load_scene(str(source), self._overrides)
 
     @classmethod
-    def from_dict(cls, tables):
+    def from_dict(cls, tables: Mapping[str, Any]) -> Scene:
         """A scene from a dict of its TOML tables ({"name": ..., "time": {...}, "bodies": [...]})."""
         return cls(json.dumps(tables, default=_plain), _is_dict=True)
 
-    def with_set(self, settings):
+    def with_overrides(self, settings: Optional[Overrides]) -> Scene:
         """This scene with more overrides ({"time.dt": 0.005} as --set time.dt=0.005)."""
         extra = [f"{k}={_toml_value(v)}" for k, v in (settings or {}).items()]
         return Scene(self._source, self._overrides + extra, _is_dict=self._is_dict)
 
-    def __getattr__(self, name):
+    def with_set(self, settings: Optional[Overrides]) -> Scene:
+        """The same as with_overrides()."""
+        return self.with_overrides(settings)
+
+    def __getattr__(self, name: str) -> Any:
         scene = self.__dict__.get("_scene")
         if scene is None:
             raise AttributeError(name)
         return getattr(scene, name)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"<beamimpact.Scene {self.name!r} from {self.file}>"
 
 
-def load_scene(path, set=None):
-    """Loads and validates a scene file; `set` as Scene.with_set()."""
-    return Scene(path).with_set(set) if set else Scene(path)
+def load_scene(path: Union[str, os.PathLike], overrides: Optional[Overrides] = None, *,
+               set: Optional[Overrides] = None) -> Scene:
+    """Loads and validates a scene file; `overrides` as Scene.with_overrides() (`set` is the
+    deprecated name of `overrides`)."""
+    overrides = _overrides(overrides, set, "load_scene")
+    return Scene(path).with_overrides(overrides) if overrides else Scene(path)
 
 
 class Run:
     """One run: `summary` (the summary.json dict) and `history` (history.csv's columns as numpy
     arrays, or a pandas DataFrame when pandas is installed; `columns` is always the dict)."""
 
-    def __init__(self, summary, columns, label):
+    def __init__(self, summary: dict, columns: dict[str, np.ndarray], label: str):
         self.summary, self.columns, self.label = summary, columns, label
         try:
             import pandas
@@ -97,12 +125,12 @@ class Run:
         except ImportError:
             self.history = columns
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         rows = len(next(iter(self.columns.values()))) if self.columns else 0
         return f"<beamimpact.Run {self.summary.get('method')} on {self.summary.get('scene')}: {rows} rows>"
 
 
-def _as_scene(scene):
+def _as_scene(scene: SceneLike) -> Scene:
     return scene if isinstance(scene, Scene) else load_scene(scene)
 
 
@@ -123,23 +151,25 @@ class _Progress:
             sys.stderr.write("\n")
 
 
-def run(scene, method="paper", set=None, *, out=None, history=True, fields=False, progress=True):
+def run(scene: SceneLike, method: str = "paper", overrides: Optional[Overrides] = None, *,
+        out: Optional[Union[str, os.PathLike]] = None, history: bool = True, fields: bool = False,
+        progress: Union[bool, ProgressFn] = True, set: Optional[Overrides] = None) -> Run:
     """Runs a scene (a Scene or a path) with a method of the registry (methods()).
 
-    set: overrides {"time.dt": 0.005}; out: also write the run directory there (as
+    overrides: {"time.dt": 0.005} as --set time.dt=0.005 (`set` is its deprecated name); out: also write the run directory there (as
     `beamimpact run --out`); history=False keeps no rows (memory independent of the steps; the
     summary still has the energies); fields=True writes VTK fields into `out`; progress: True
     (a line on stderr, shown in notebooks), False, or a function (label, value, total).
     The GIL is released while the run goes on.
     """
     s = _as_scene(scene)
-    settings = dict(set or {})
+    settings = dict(_overrides(overrides, set, "run") or {})
     if not history:
         settings["output.history"] = False
     if fields:
         settings["output.fields"] = True
     if settings:
-        s = s.with_set(settings)
+        s = s.with_overrides(settings)
     callback = _Progress() if progress is True else (progress or None)
     try:
         summary, names, rows = _core.run(s._scene, method, None if out is None else str(out), callback)
@@ -150,7 +180,7 @@ def run(scene, method="paper", set=None, *, out=None, history=True, fields=False
     return Run(summary, columns, f"{method}:{s.name}")
 
 
-def read_run(directory):
+def read_run(directory: Union[str, os.PathLike]) -> Run:
     """Reads a run directory written by `beamimpact run` (or run(out=...)) as a Run."""
     summary, columns = _core.read_run(str(directory))
     return Run(summary, columns, str(directory))
@@ -162,14 +192,16 @@ def _stored(r):
     return {k: list(v) for k, v in r.columns.items()}, r.summary, r.label
 
 
-def compare(run_, reference, *, grid_step=0.0, window=0.0, merge_gap=0.0, threshold=1e-6):
+def compare(run_: Union[Run, str, os.PathLike], reference: Union[Run, str, os.PathLike], *,
+            grid_step: float = 0.0, window: float = 0.0, merge_gap: float = 0.0,
+            threshold: float = 1e-6) -> dict:
     """The `beamimpact compare` norms of `run_` against `reference` (Runs or run directories),
     as the dict `compare --json` writes; norms by name in result["norms"]."""
     a, b = _stored(run_), _stored(reference)
     return _core.compare(*a, *b, grid_step, window, merge_gap, threshold)
 
 
-def norm(comparison, name):
+def norm(comparison: dict, name: str) -> Optional[float]:
     """The value of the norm `name` ("impulse", "R.rel_l2", ...) of a compare() result, or None."""
     for n in comparison["norms"]:
         if n["name"] == name:
@@ -177,15 +209,18 @@ def norm(comparison, name):
     raise KeyError(f"no norm {name!r} in the comparison")
 
 
-def sweep(scene, dts, method="paper", reference=None, set=None, progress=False):
+def sweep(scene: SceneLike, dts: Sequence[float], method: str = "paper",
+          reference: Optional[Union[Run, str, os.PathLike]] = None, overrides: Optional[Overrides] = None,
+          progress: Union[bool, ProgressFn] = False, *, set: Optional[Overrides] = None) -> list[dict]:
     """A dt ladder: runs `scene` at each dt (s) and compares each run with `reference` (a Run,
     a run directory, or a method name run at the scene's own settings; default: the smallest
     dt's run, whose own errors are then 0 - unlike `beamimpact sweep`'s reference "self", a
     separate run at the finest dt / 4). Returns one dict per dt: dt, steps, wall_seconds and
     the norms `beamimpact sweep` tabulates."""
     s = _as_scene(scene)
-    if set:
-        s = s.with_set(set)
+    overrides = _overrides(overrides, set, "sweep")
+    if overrides:
+        s = s.with_overrides(overrides)
     runs = [run(s, method, {"time.dt": dt}, progress=progress) for dt in dts]
     if reference is None:
         ref = runs[min(range(len(dts)), key=lambda i: dts[i])]
@@ -202,7 +237,8 @@ def sweep(scene, dts, method="paper", reference=None, set=None, progress=False):
     return table
 
 
-def verify(matrix="verification/matrix.toml", out="out/verify", *, tier="quick", only="", jobs=1, exe=None):
+def verify(matrix: Union[str, os.PathLike] = "verification/matrix.toml", out: Union[str, os.PathLike] = "out/verify", *,
+           tier: str = "quick", only: str = "", jobs: int = 1, exe: Optional[Union[str, os.PathLike]] = None) -> dict:
     """`beamimpact verify` as a call: runs the matrix's `tier` (items whose name contains `only`)
     with `jobs` runs in parallel, each a process of the `beamimpact` executable `exe` (default
     $BEAMIMPACT_EXE, else `beamimpact` on PATH), writes runs/, junit.xml, norms.json and report.md
@@ -214,6 +250,6 @@ def verify(matrix="verification/matrix.toml", out="out/verify", *, tier="quick",
     return _core.verify(str(matrix), str(out), tier, only, jobs, str(exe))
 
 
-def methods():
+def methods() -> list[str]:
     """The names of the methods of the registry (in-process ones run with run())."""
     return _core.methods()

@@ -1,15 +1,18 @@
-"""Reading the VTK fields of a run directory (fields.pvd and fields/*.vtu, written by
-`beamimpact run --fields`, layout in solver/record/FieldWriter.hpp), one step at a time.
+"""Reading the VTK fields of a run directory (``fields.pvd`` and ``fields/*.vtu``, written by
+``beamimpact run --fields``, layout in solver/record/FieldWriter.hpp), one step at a time.
 
 Pure Python (xml, numpy): reports/animate.py loads this file without the compiled module.
 """
+from __future__ import annotations
+
 import os
 import xml.etree.ElementTree as ET
+from typing import Any, Iterator, Union
 
 import numpy as np
 
 
-def steps(run_dir):
+def steps(run_dir: Union[str, os.PathLike]) -> list[tuple[float, str]]:
     """[(t, path of the .vtu)] of every step fields.pvd lists, in order."""
     pvd = os.path.join(run_dir, "fields.pvd")
     if not os.path.exists(pvd):
@@ -44,7 +47,7 @@ def _values(d, raw):
     return np.frombuffer(raw[at + 8:at + 8 + nbytes], dtype=_DTYPES[d.get("type")]).astype(float)
 
 
-def read_vtu(path):
+def read_vtu(path: Union[str, os.PathLike]) -> dict[str, Any]:
     """One step: {"points": (n, 3) reference positions, "bodies": [node index arrays], and each
     point-data array by name as (n, components)}. Reads both encodings (output.field_format)."""
     root, raw = _parse(path)
@@ -62,7 +65,7 @@ def read_vtu(path):
     return frame
 
 
-def read_fields(run_dir):
+def read_fields(run_dir: Union[str, os.PathLike]) -> Iterator[tuple[float, dict[str, Any]]]:
     """Yields (t, frame) for every step of a run's fields, reading one file at a time."""
     for t, path in steps(run_dir):
         yield t, read_vtu(path)

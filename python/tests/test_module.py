@@ -62,15 +62,32 @@ def test_module_equals_cli_bit_for_bit(tmp_path, scene, method):
 
 def test_set_overrides_equal_cli_set(tmp_path):
     out = cli_run(tmp_path, PAPER / "s1_central.toml", "paper", "time.dt=0.005", "bodies.B.elements=20")
-    r = beamimpact.run(PAPER / "s1_central.toml", set={"time.dt": 0.005, "bodies.B.elements": 20}, progress=False)
+    r = beamimpact.run(PAPER / "s1_central.toml", overrides={"time.dt": 0.005, "bodies.B.elements": 20}, progress=False)
     assert np.array_equal(r.columns["R"], csv_columns(out)["R"])
     assert r.summary["overrides"] == {"time.dt": "0.005", "bodies.B.elements": "20"}
     same_summary(r.summary, json.loads((out / "summary.json").read_text()))
 
 
+def test_set_keyword_still_works_with_a_deprecation_warning():
+    # set= (which shadows the builtin) is the old name of overrides=: same scene, one warning per
+    # call naming the replacement; both at once is an error rather than a silent choice.
+    path = PAPER / "s1_central.toml"
+    new = beamimpact.run(path, overrides={"time.dt": 0.02}, progress=False)
+    with pytest.warns(DeprecationWarning, match=r"run\(set=\.\.\.\) is deprecated: use overrides="):
+        old = beamimpact.run(path, set={"time.dt": 0.02}, progress=False)
+    assert old.summary["overrides"] == new.summary["overrides"] == {"time.dt": "0.02"}
+    assert np.array_equal(old.columns["R"], new.columns["R"])
+    with pytest.warns(DeprecationWarning, match="load_scene"):
+        assert beamimpact.load_scene(path, set={"time.dt": 0.02}).overrides == {"time.dt": "0.02"}
+    with pytest.warns(DeprecationWarning, match="sweep"):
+        assert [r["steps"] for r in beamimpact.sweep(path, [0.02, 0.01], set={"time.end": 1.0})] == [50, 100]
+    with pytest.raises(TypeError, match="not both"), pytest.warns(DeprecationWarning):
+        beamimpact.run(path, overrides={"time.dt": 0.02}, set={"time.dt": 0.01}, progress=False)
+
+
 def test_numpy_scalars_are_set_as_the_numbers_they_hold():
     # np.float64 / np.int64 (what np.logspace and friends give) reach the scene as 0.005 and 20.
-    r = beamimpact.run(PAPER / "s1_central.toml", set={"time.dt": np.float64(0.005), "bodies.B.elements": np.int64(20)},
+    r = beamimpact.run(PAPER / "s1_central.toml", overrides={"time.dt": np.float64(0.005), "bodies.B.elements": np.int64(20)},
                        progress=False)
     assert r.summary["overrides"] == {"time.dt": "0.005", "bodies.B.elements": "20"}
 
@@ -91,7 +108,7 @@ def test_from_dict_takes_numpy_values():
     tables["bodies"][1]["elements"] = np.int64(20)
     tables["time"]["dt"] = np.float64(0.005)
     a = beamimpact.run(beamimpact.Scene.from_dict(tables), progress=False)
-    b = beamimpact.run(PAPER / "s1_central.toml", set={"bodies.B.elements": 20, "time.dt": 0.005}, progress=False)
+    b = beamimpact.run(PAPER / "s1_central.toml", overrides={"bodies.B.elements": 20, "time.dt": 0.005}, progress=False)
     for name in b.columns:
         assert np.array_equal(a.columns[name], b.columns[name])
 
@@ -101,7 +118,7 @@ def test_bad_scene_raises_the_cli_message(tmp_path):
     p = cli("run", path, "--out", tmp_path / "bad", "--set", "bodies.A.area=-0.4")
     assert p.returncode == 2
     with pytest.raises(beamimpact.SceneError) as e:
-        beamimpact.load_scene(path, set={"bodies.A.area": -0.4})
+        beamimpact.load_scene(path, overrides={"bodies.A.area": -0.4})
     assert str(e.value) in p.stderr  # the CLI prints the same message (with its "error: " prefix)
     assert "bodies[0].area" in str(e.value) and "positive" in str(e.value)
 
@@ -134,7 +151,7 @@ def test_compare_gives_the_compare_commands_norms(tmp_path):
     p = cli("compare", a, b, "--json", tmp_path / "c.json")
     assert p.returncode == 0, p.stderr
     expected = json.loads((tmp_path / "c.json").read_text())
-    got = beamimpact.compare(beamimpact.run(PAPER / "s1_central.toml", set={"time.dt": 0.02}, progress=False),
+    got = beamimpact.compare(beamimpact.run(PAPER / "s1_central.toml", overrides={"time.dt": 0.02}, progress=False),
                              beamimpact.read_run(b))
     strip = lambda c: [{k: v for k, v in n.items()} for n in c["norms"]]  # noqa: E731
     assert strip(got) == strip(expected)
@@ -157,7 +174,7 @@ def test_sweep_ladder_converges_to_its_finest_run():
 MEMORY = r"""
 import resource, sys, beamimpact
 steps, keep = int(sys.argv[1]), sys.argv[2] == "1"
-r = beamimpact.run(sys.argv[3], set={"time.dt": 4.0 / steps, "time.allow_long_run": True},
+r = beamimpact.run(sys.argv[3], overrides={"time.dt": 4.0 / steps, "time.allow_long_run": True},
                    history=keep, progress=False)
 assert r.summary["steps"] == steps
 print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)  # kB

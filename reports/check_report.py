@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
-"""@brief Checks that a report.html looks right in a browser: every embedded image is a complete,
-decodable PNG, every section has content, headless Chromium loads every image (none broken) and
-its screenshot of the page is a non-blank PNG.
+"""@brief Checks that a report.html looks right in a browser: it opens with the scorecard (the first
+section, on the first screen) and, when a gate failed, a failing scene is its first row; every
+embedded image is a complete, decodable PNG, every section has content, headless Chromium loads
+every image (none broken) and its screenshot of the page is a non-blank PNG.
 
 Usage: check_report.py REPORT.html [--screenshot OUT.png] [--self-test]
---self-test  also checks that the checks bite: a copy with one image corrupted and a copy with one
-             section emptied must both be rejected.
+--self-test  also checks that the checks bite: copies with one image corrupted, one section
+             emptied, the scorecard removed, or a passing row moved above the failing ones must
+             all be rejected.
 Exit 0 when the report passes, 1 with one line per problem otherwise (Chromium missing included:
 the check cannot be done without it, which is a failure, not a pass).
 """
@@ -26,6 +28,7 @@ import numpy as np
 import matplotlib.image as mpimg
 
 CHROMIUM_TIMEOUT = 60  # s; a headless load of a few MB of base64 takes 1-5 s on a loaded 2-core machine
+FIRST_SCREEN = 600     # px: the scorecard must start within the first screen of headless Chromium's window
 
 
 class Page(html.parser.HTMLParser):
@@ -34,6 +37,7 @@ class Page(html.parser.HTMLParser):
     def __init__(self):
         super().__init__()
         self.sections, self.images, self._sec, self._in_h2 = [], [], None, False
+        self.scorecard = None  # {"section": index, "failed": n, "rows": [status, ...]}
 
     def handle_starttag(self, tag, attrs):
         a = dict(attrs)
@@ -48,6 +52,10 @@ class Page(html.parser.HTMLParser):
                 self._sec["images"] += 1
         elif tag == "table" and self._sec is not None:
             self._sec["tables"] += 1
+            if a.get("id") == "scorecard" and self.scorecard is None:
+                self.scorecard = {"section": len(self.sections) - 1, "failed": int(a.get("data-failed", "0")), "rows": []}
+        elif tag == "tr" and self.scorecard is not None and "data-status" in a and self._sec is self.sections[self.scorecard["section"]]:
+            self.scorecard["rows"].append(a["data-status"])
 
     def handle_endtag(self, tag):
         if tag == "section":
@@ -106,6 +114,13 @@ def static_problems(text):
     for s in page.sections:
         if not s["text"].strip() and s["images"] == 0 and s["tables"] == 0:
             problems.append(f"section '{s['title'].strip()}' is empty")
+    card = page.scorecard
+    if card is None or card["section"] != 0:
+        problems.append("the report does not open with the scorecard (table id=scorecard in the first section)")
+    elif not card["rows"]:
+        problems.append("the scorecard has no row")
+    elif card["failed"] and card["rows"][0] != "fail":
+        problems.append(f"{card['failed']} gate(s) failed but the scorecard's first row is '{card['rows'][0]}', not a failing scene")
     for i, src in enumerate(page.images):
         m = re.match(r"data:image/png;base64,(.*)$", src, re.S)
         if not m:
@@ -141,7 +156,9 @@ def run_chromium(exe, report, extra, workdir):
     return r.stdout
 
 
-def browser_problems(exe, report, n_images, screenshot):
+def browser_problems(exe, report, n_images, screenshot, failed=0):
+    """What the browser shows wrong: broken images; the scorecard off the first screen or, when
+    `failed` gates failed, not led by a failing scene; a blank screenshot."""
     problems = []
     with tempfile.TemporaryDirectory() as work:
         dom = run_chromium(exe, report, ["--dump-dom"], work)
@@ -154,6 +171,13 @@ def browser_problems(exe, report, n_images, screenshot):
                 problems.append(f"browser: sees {seen} images, the HTML has {n_images}")
             if broken:
                 problems.append(f"browser: {broken} image(s) broken")
+        top = re.search(r'<body[^>]*data-scorecard-top="([^"]*)"', dom)
+        first = re.search(r'<body[^>]*data-first-row="([^"]*)"', dom)
+        if not top or not top.group(1).lstrip("-").isdigit() or int(top.group(1)) > FIRST_SCREEN:
+            problems.append(f"browser: the scorecard is not on the first screen (top {top.group(1) if top else 'unknown'} px)")
+        if failed and (not first or first.group(1) != "fail"):
+            problems.append(f"browser: {failed} gate(s) failed but the first scorecard row is "
+                            f"'{first.group(1) if first else 'unknown'}'")
         if screenshot:
             run_chromium(exe, report, [f"--screenshot={os.path.abspath(screenshot)}", "--window-size=1200,2000"], work)
             if not os.path.exists(screenshot):
@@ -174,12 +198,18 @@ def browser_problems(exe, report, n_images, screenshot):
     return problems
 
 
+def failed_gates(text):
+    """The number of failed gates the scorecard declares (0 without a scorecard)."""
+    m = re.search(r'<table[^>]*id=scorecard[^>]*data-failed=(\d+)', text)
+    return int(m.group(1)) if m else 0
+
+
 def check(report, screenshot, exe):
     with open(report, encoding="utf-8") as f:
         text = f.read()
     problems, n_images = static_problems(text)
     if not problems:
-        problems += browser_problems(exe, report, n_images, screenshot)
+        problems += browser_problems(exe, report, n_images, screenshot, failed_gates(text))
     return problems
 
 
@@ -196,8 +226,14 @@ def self_test(report, exe):
     damaged = text[:mid] + "AAAAAAAA" + text[mid + 8:]
     corrupted = text[:m.start(1)] + "AAAAAAAA" + text[m.start(1) + 8:]
     emptied = re.sub(r'(<section id="s0"><h2>[^<]*</h2>).*?(</section>)', r"\1\2", text, count=1, flags=re.S)
+    no_card = re.sub(r'<table class=scorecard id=scorecard.*?</table>', "<p>scores</p>", text, count=1, flags=re.S)
+    rows = re.search(r'(<tbody>)(<tr data-status=fail>.*?</tr>)(<tr data-status=pass>.*?</tr>)', text, re.S)
+    if not rows:
+        return failures + ["self-test: the report's scorecard has no failing row above a passing one to swap"]
+    pass_first = text[:rows.start(2)] + rows.group(3) + rows.group(2) + text[rows.end(3):]
     with tempfile.TemporaryDirectory() as work:
-        for name, variant in (("damaged image", damaged), ("corrupted image", corrupted), ("empty section", emptied)):
+        for name, variant in (("damaged image", damaged), ("corrupted image", corrupted), ("empty section", emptied),
+                              ("scorecard removed", no_card), ("passing scene above the failing ones", pass_first)):
             if not static_problems(variant)[0]:
                 failures.append(f"self-test: a report with a {name} passed the static check")
         # The browser on its own must see the corrupted image as broken.
@@ -207,6 +243,15 @@ def self_test(report, exe):
         n = static_problems(corrupted)[1]
         if not any("broken" in p for p in browser_problems(exe, path, n, None)):
             failures.append("self-test: chromium did not report the corrupted image as broken")
+        # ... and a passing scene above the failing one, and a missing scorecard.
+        for name, variant, word in (("passing scene first", pass_first, "first scorecard row"),
+                                    ("scorecard removed", no_card, "not on the first screen")):
+            path = os.path.join(work, "variant.html")
+            with open(path, "w", encoding="utf-8") as f:
+                f.write(variant)
+            found = browser_problems(exe, path, static_problems(variant)[1], None, failed_gates(text))
+            if not any(word in p for p in found):
+                failures.append(f"self-test: chromium did not reject the report with the {name}")
     return failures
 
 

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # @brief ctest report_render: writes a small report.html (a fixture verification run plus the
-# committed figure sets) and checks it in headless Chromium (reports/check_report.py: images decode,
-# no section empty, no image broken in the browser, the screenshot is not blank; --self-test: a
-# corrupted image and an empty section are rejected). Fails, with a message, when chromium is absent.
+# committed figure sets) and checks it in headless Chromium (reports/check_report.py: the scorecard
+# first and led by the failing scene, images decode, no section empty, no image broken in the
+# browser, the screenshot is not blank; --self-test: a corrupted image, an empty section, a missing
+# scorecard and a passing scene first are rejected). Fails, with a message, when chromium is absent.
 # Usage: reports/test_report.sh OUT_DIR
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -45,8 +45,21 @@ def _more_pages(app, docname, source):
     source[0] = text.replace("MORE_PAGES", "\n".join(more))
 
 
+def _repository_path(app, env, node, contnode):
+    """A Markdown link to a folder of the repository ([references/exact](../references/exact/))
+    is no page: it is shown as its text instead of failing the build. A link to a path that does
+    not exist still fails."""
+    if node.get("reftype") not in ("myst", "any") or not node.get("refdoc"):
+        return None  # MyST asks with reftype "any" before it warns
+    target = (Path(env.doc2path(node["refdoc"])).parent / node["reftarget"].split("#")[0]).resolve()
+    if target.is_dir() and (target == root or root in target.parents):
+        return contnode
+    return None
+
+
 def setup(app):
     app.connect("source-read", _more_pages)
+    app.connect("missing-reference", _repository_path)
 
 
 # Python API: the built package when importable, else its compiled core mocked (docstrings of

@@ -95,11 +95,11 @@ def table(columns, rows, row_class=None):
 
 
 def gate_margin(g):
-    """A gate's value over its limit (<= 1 passes; None when the gate gives no number), from
-    `margin` when the run wrote it, else from the gate's kind: a tolerance (value / tol), a
-    minimum observed order (min_order / order) or a Richardson check (value in units of E_R over
-    the allowed multiple)."""
-    if g.get("margin") is not None:
+    """A gate's value over its limit (<= 1 passes; None when the gate gives no number): the
+    `margin` verify wrote (the library's rule), else, for an older norms.json, the same rule
+    from the gate's kind: a tolerance (value / tol), a minimum observed order (min_order / order)
+    or a Richardson check (value in units of E_R over the allowed multiple)."""
+    if "margin" in g:
         return g["margin"]
     v = g.get("value")
     if v is None:

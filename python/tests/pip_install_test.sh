@@ -25,4 +25,5 @@ assert abs(exact - 4.0) < 1e-9, exact
 assert 0.95 * 4.0 < paper < 4.0, paper
 print(f"pip install: beamimpact {beamimpact.__version__} from {beamimpact.__file__}: S1 impulse {paper:.4f} N s (exact {exact:g})")
 PY
-"$venv/bin/pip" show beamimpact | grep -q "^Version: " || { echo "pip install: pip does not list beamimpact"; exit 1; }
+shown=$("$venv/bin/pip" show beamimpact)  # whole output first: grep -q closing the pipe early breaks pip
+grep -q "^Version: " <<<"$shown" || { echo "pip install: pip does not list beamimpact"; exit 1; }

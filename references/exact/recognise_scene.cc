@@ -167,18 +167,74 @@ ExactProblem recognise_rigid_rod(const Scene& scene) {
   const Vec2 r = sub(pc, centre);  // centre to contact end
   const double half = 0.5 * A.length();
   const double sin_t = -dot(r, p.normal) / half;
-  if (!(sin_t > kTol)) refuse(scene, ka + ".start", "the rod's contact end is not its lower end (or the rod lies flat)");
+  if (!(sin_t > kTol))
+    refuse(scene, ka + ".start", "the rod's contact end is not its lower end (or the rod lies flat)");
   p.theta = std::asin(std::min(1.0, sin_t));
   p.v0 = -dot(A.velocity, p.normal);
   if (!(p.v0 > 0.0) || std::abs(cross(A.velocity, p.normal)) > kTol * norm(A.velocity))
-    refuse(scene, ka + ".velocity", "the rod must fall along the surface normal (the closed form has no "
-                                    "tangential approach speed)");
+    refuse(scene, ka + ".velocity",
+           "the rod must fall along the surface normal (the closed form has no "
+           "tangential approach speed)");
   p.contact_kind = ContactKind::kNodeToSurface;
+  return p;
+}
+
+/// @brief A free elastic rod moving along its axis towards an immovable rigid body (a wall or the
+/// ground) that lies on its axis ahead of it (end to end) or across it; gravity, if any, along
+/// the axis (RodOnWall.hpp).
+ExactProblem recognise_rod_on_wall(const Scene& scene) {
+  check_one_frictionless_undamped_contact(scene);
+  const Contact& c = scene.contacts[0];
+  const Body& A = scene.bodies[c.striker];
+  const Body& B = scene.bodies[c.target];
+  const std::string ka = fmt::format("bodies[{}]", c.striker), kb = fmt::format("bodies[{}]", c.target);
+  if (B.supports.empty()) refuse(scene, kb + ".supports", "the rigid target must be immovable (a wall)");
+  if (!A.supports.empty()) refuse(scene, ka + ".supports", "the striker has supports; it must be free");
+  if (c.node != 0 && c.node != A.elements)
+    refuse(scene, "contacts[0].node", "the striker's contact node is not an end of the striker");
+  for (std::size_t i = 0; i < scene.loads.point.size(); ++i)
+    refuse(scene, fmt::format("loads.point[{}]", i), "point forces are not part of the rod-on-wall solution");
+  ExactProblem p;
+  p.kind = ExactKind::kRodOnWall;
+  p.striker = c.striker;
+  p.target = c.target;
+  p.striker_rod = as_rod(A);
+  const Vec2 pc = A.node_position(c.node), po = A.node_position(c.node == 0 ? A.elements : 0);
+  p.dir = unit(sub(pc, po));
+  const Vec2 eb = unit(sub(B.end, B.start));
+  const double scale = A.length() + B.length();
+  const double va = norm(A.velocity), g = norm(scene.loads.gravity);
+  if (std::abs(cross(A.velocity, p.dir)) > kTol * (va + 1e-300))
+    refuse(scene, ka + ".velocity", "the striker's velocity is not along its own axis");
+  if (std::abs(cross(scene.loads.gravity, p.dir)) > kTol * (g + 1e-300))
+    refuse(scene, "loads.gravity", "gravity is not along the striker's axis");
+  if (std::abs(cross(eb, p.dir)) <= kTol) {  // the wall on the axis, end to end
+    if (std::abs(cross(sub(B.start, pc), p.dir)) > kTol * scale)
+      refuse(scene, kb + ".start", "the rigid target is parallel to the striker but not on its axis");
+    p.gap = std::min(dot(sub(B.start, pc), p.dir), dot(sub(B.end, pc), p.dir));
+    p.contact_kind = ContactKind::kEndToEnd;
+  } else {  // across the axis: it must be perpendicular, the axis crossing its span strictly inside
+    if (std::abs(dot(eb, p.dir)) > kTol)
+      refuse(scene, kb + ".end", "the rigid target is neither on the striker's axis nor across it (oblique)");
+    const double u = dot(sub(pc, B.start), eb);  // the axis's crossing, from the target's start
+    if (u <= kTol * B.length() || u >= B.length() * (1.0 - kTol))
+      refuse(scene, kb + ".start", "the striker's axis does not cross the rigid target's span");
+    p.gap = dot(sub(B.start, pc), p.dir);
+    p.contact_kind = ContactKind::kNodeToSurface;
+  }
+  if (!(p.gap > 0.0))
+    refuse(scene, kb + ".start", "the rigid target is not ahead of the striker's contact end");
+  p.v0 = dot(A.velocity, p.dir);
+  p.g = dot(scene.loads.gravity, p.dir);
   return p;
 }
 
 ExactProblem recognise_scene(const Scene& scene) {
   refuse_contact_search(scene, "exact");
+  if (scene.bodies.size() == 2 && scene.contacts.size() == 1 &&
+      !scene.bodies[scene.contacts[0].striker].rigid && scene.bodies[scene.contacts[0].target].rigid)
+    return recognise_rod_on_wall(scene);
+  refuse_loads(scene, "exact");
   for (const Body& b : scene.bodies)
     if (b.rigid) return recognise_rigid_rod(scene);
   check_one_frictionless_undamped_contact(scene);

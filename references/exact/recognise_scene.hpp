@@ -17,6 +17,7 @@ enum class ExactKind {
   kCoaxialRods,  ///< two free coaxial rods, end to end (references.md section 1)
   kRodOnBeam,    ///< a free rod end-on onto a simply supported beam (references.md section 2)
   kRigidRod,     ///< a rigid rod onto an immovable rigid surface, with friction (references.md section 3)
+  kRodOnWall,    ///< a free elastic rod end-on onto an immovable rigid body, gravity along it (RodOnWall.hpp)
 };
 
 /// @brief The 1D problem a scene describes, in the frame of its contact.
@@ -32,9 +33,10 @@ struct ExactProblem {
   SimpleBeam beam;              ///< the target as a beam (kRodOnBeam)
   double x_c = 0.0;             ///< m, struck point from the target's start node (kRodOnBeam)
   ContactKind contact_kind = ContactKind::kEndToEnd;  ///< string forms in schema/output_schema.hpp
-  Vec2 normal{};                ///< kRigidRod: unit normal of the surface, toward the rod
-  double theta = 0.0;           ///< kRigidRod: rad, angle between the rod and the surface
-  double mu = 0.0;              ///< kRigidRod: Coulomb coefficient
+  Vec2 normal{};       ///< kRigidRod: unit normal of the surface, toward the rod
+  double theta = 0.0;  ///< kRigidRod: rad, angle between the rod and the surface
+  double mu = 0.0;     ///< kRigidRod: Coulomb coefficient
+  double g = 0.0;      ///< kRodOnWall: m/s^2, gravity along dir (towards the wall)
 };
 
 /// @brief Recognises the scene or throws SceneError(scene.file, key, condition that failed).

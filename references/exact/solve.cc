@@ -7,6 +7,7 @@
 #include <references/exact/CoaxialRods.hpp>
 #include <references/exact/RigidRodImpact.hpp>
 #include <references/exact/RodOnBeam.hpp>
+#include <references/exact/RodOnWall.hpp>
 #include <references/exact/output_times.hpp>
 #include <references/exact/recognise_scene.hpp>
 #include <solver/record/ResultRecorder.hpp>
@@ -41,6 +42,7 @@ SimulationResult finish_summary(ResultRecorder& rec, std::vector<HistoryRow> row
   contact_extra["intervals_on_output_grid"] = s.intervals;
   contact_extra["impulse_on_output_grid"] = s.impulse_normal;
   s.intervals = intervals;
+  s.interval_impulses.clear();  // known exactly only where the solution says (rods, wall)
   s.impulse_normal = impulse;
   s.peak_R = peak;
   s.first_step_R = first;
@@ -97,8 +99,63 @@ SimulationResult solve_rods(const Scene& scene, const ExactProblem& p, ResultRec
                       {"round_trip_target", B.round_trip()},
                       {"impedance_striker", A.impedance()},
                       {"impedance_target", B.impedance()}};
-  return finish_summary(rec, std::move(rows), sol.force_intervals(), sol.impulse(te), sol.peak_force(), first,
-                        p.contact_kind, extra);
+  SimulationResult out = finish_summary(rec, std::move(rows), sol.force_intervals(), sol.impulse(te),
+                                        sol.peak_force(), first, p.contact_kind, extra);
+  out.contacts[0].interval_impulses.clear();
+  for (const auto& i : sol.force_intervals())
+    out.contacts[0].interval_impulses.push_back(sol.impulse(i[1]) - sol.impulse(i[0]));
+  return out;
+}
+
+/// The rod on a rigid wall (RodOnWall.hpp): rows, energies and the load work from the exact
+/// piecewise-linear wave field; intervals, impulse and peak force from its exact events.
+SimulationResult solve_wall(const Scene& scene, const ExactProblem& p, ResultRecorder& rec) {
+  SimulationResult& r = rec.result();
+  const RodOnWall sol({p.striker_rod, p.v0, p.g, p.gap, scene.time.end});
+  const Vec2 d = p.dir;
+  std::vector<HistoryRow> rows;
+  for (double t : output_times(r.dt, scene.time.end)) {
+    const RodOnWallState e = sol.state(t);
+    const RodField f = sol.field(t);
+    HistoryRow row;
+    row.t = t;
+    ContactSample c;
+    c.R = e.R;
+    c.gap = e.gap;
+    c.ua = along(d, e.u);
+    c.va = along(d, e.v);
+    c.state = e.R > 0.0 ? ContactState::kClosed : ContactState::kOpen;
+    row.contacts.push_back(c);
+    row.kinetic = f.kinetic;
+    row.strain = f.strain;
+    row.load_work = sol.load_work(t);
+    row.momentum = along(d, f.momentum);
+    rows.push_back(row);
+  }
+  const double te = scene.time.end, m = p.striker_rod.mass();
+  rec.set_final_velocity(scene.bodies[p.striker].name, along(d, sol.field(te).momentum / m));
+  rec.set_final_velocity(scene.bodies[p.target].name, {0.0, 0.0});
+  r.effects = {"axial"};
+  if (p.g != 0.0) r.effects.push_back("loads");
+  r.steps = static_cast<long>(sol.pieces());
+  const auto& iv = sol.intervals();
+  nlohmann::json extra = {{"first_touch", iv.empty() ? -1.0 : iv.front()[0]}, {"pieces", sol.pieces()}};
+  r.extra["exact"] = {{"solution",
+                       "free elastic rod end-on onto an immovable rigid wall, gravity along the rod: "
+                       "d'Alembert in the rod's free-fall frame (RodOnWall.hpp)"},
+                      {"note",
+                       "the wave p is piecewise linear: event times, force, impulse, energies (Simpson on "
+                       "each linear piece) and the load work are exact to roundoff"},
+                      {"round_trip", p.striker_rod.round_trip()},
+                      {"impedance", p.striker_rod.impedance()},
+                      {"gravity_along_axis", p.g},
+                      {"approach_speed", p.v0}};
+  const double first = iv.empty() ? 0.0 : sol.state(iv.front()[0]).R;
+  SimulationResult out = finish_summary(rec, std::move(rows), iv, sol.impulse(te), sol.peak_force(), first,
+                                        p.contact_kind, extra);
+  out.contacts[0].interval_impulses.clear();
+  for (const auto& i : iv) out.contacts[0].interval_impulses.push_back(sol.impulse(i[1]) - sol.impulse(i[0]));
+  return out;
 }
 
 /// The rigid rod: free flight to the contact instant t0 = gap / V, the closed-form impulses
@@ -116,7 +173,8 @@ SimulationResult solve_rigid(const Scene& scene, const ExactProblem& p, ResultRe
   // Tangential impulse toward the centre's side of the contact end, along the surface.
   const Vec2 t{n[1], -n[0]};
   const double toward_centre = -(r0[0] * t[0] + r0[1] * t[1]) >= 0.0 ? 1.0 : -1.0;
-  const Vec2 P{imp.p_n * n[0] + toward_centre * imp.p_t * t[0], imp.p_n * n[1] + toward_centre * imp.p_t * t[1]};
+  const Vec2 P{imp.p_n * n[0] + toward_centre * imp.p_t * t[0],
+               imp.p_n * n[1] + toward_centre * imp.p_t * t[1]};
   const double t0 = p.gap / p.v0;
   const Vec2 v0 = A.velocity;
   const Vec2 v1{v0[0] + P[0] / m, v0[1] + P[1] / m};
@@ -127,8 +185,10 @@ SimulationResult solve_rigid(const Scene& scene, const ExactProblem& p, ResultRe
     const double tau = after ? time - t0 : 0.0, phi = w1 * tau;
     const Vec2 v = after ? v1 : v0;
     const double w = after ? w1 : 0.0;
-    const Vec2 G{G0[0] + v0[0] * std::min(time, t0) + v1[0] * tau, G0[1] + v0[1] * std::min(time, t0) + v1[1] * tau};
-    const Vec2 rt{std::cos(phi) * r0[0] - std::sin(phi) * r0[1], std::sin(phi) * r0[0] + std::cos(phi) * r0[1]};
+    const Vec2 G{G0[0] + v0[0] * std::min(time, t0) + v1[0] * tau,
+                 G0[1] + v0[1] * std::min(time, t0) + v1[1] * tau};
+    const Vec2 rt{std::cos(phi) * r0[0] - std::sin(phi) * r0[1],
+                  std::sin(phi) * r0[0] + std::cos(phi) * r0[1]};
     HistoryRow row;
     row.t = time;
     ContactSample c;
@@ -152,16 +212,18 @@ SimulationResult solve_rigid(const Scene& scene, const ExactProblem& p, ResultRe
                           {"approach_speed", p.v0},
                           {"impact_time", t0},
                           {"spin_after", w1}};
-  r.extra["exact"] = {{"solution",
-                       "rigid rod onto an immovable rigid surface, Coulomb friction, restitution 0: closed-form "
-                       "impulses (references.md 3); free flight before and after (exact rotation, no gravity)"},
-                      {"note", "the impact is an instantaneous impulse: the rows carry no force; intervals are "
-                               "[t0, t0], the impulses are the closed form's"}};
+  r.extra["exact"] = {
+      {"solution",
+       "rigid rod onto an immovable rigid surface, Coulomb friction, restitution 0: closed-form "
+       "impulses (references.md 3); free flight before and after (exact rotation, no gravity)"},
+      {"note",
+       "the impact is an instantaneous impulse: the rows carry no force; intervals are "
+       "[t0, t0], the impulses are the closed form's"}};
   const bool hit = t0 <= scene.time.end;
-  SimulationResult out = finish_summary(rec, std::move(rows),
-                                        hit ? std::vector<std::array<double, 2>>{{t0, t0}}
-                                            : std::vector<std::array<double, 2>>{},
-                                        hit ? imp.p_n : 0.0, 0.0, 0.0, p.contact_kind, extra);
+  SimulationResult out = finish_summary(
+      rec, std::move(rows),
+      hit ? std::vector<std::array<double, 2>>{{t0, t0}} : std::vector<std::array<double, 2>>{},
+      hit ? imp.p_n : 0.0, 0.0, 0.0, p.contact_kind, extra);
   // The paper's tangent is the normal turned -90 deg: the summary's sign convention.
   out.contacts[0].impulse_tangential = hit ? toward_centre * imp.p_t : 0.0;
   out.contacts[0].friction = p.mu;
@@ -292,6 +354,7 @@ SimulationResult solve(const Scene& scene) {
   }
   in.finish();
   if (p.kind == ExactKind::kRigidRod) return solve_rigid(scene, p, rec);
+  if (p.kind == ExactKind::kRodOnWall) return solve_wall(scene, p, rec);
   return p.kind == ExactKind::kCoaxialRods ? solve_rods(scene, p, rec) : solve_beam(scene, p, o, rec);
 }
 

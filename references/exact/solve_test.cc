@@ -2,6 +2,7 @@
 // balances and contact invariants, and the [exact] table's checks.
 #include <references/exact/solve.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -52,7 +53,9 @@ TEST(RunExact, S1CentralIsTheClosedForm) {
 TEST(RunExact, RigidRodOnARigidSurfaceIsTheClosedForm) {
   const auto scene = (testing::source_dir() / "verification/scenes/extra/rigid_rod_oblique.toml").string();
   const double r3 = std::sqrt(3.0);
-  auto run = [&](double mu) { return exact::solve(load_scene(scene, {"contacts[0].friction=" + std::to_string(mu)})); };
+  auto run = [&](double mu) {
+    return exact::solve(load_scene(scene, {"contacts[0].friction=" + std::to_string(mu)}));
+  };
   const SimulationResult free = run(0.0), slip = run(0.3), stick = run(1.0);
   EXPECT_NEAR(free.contacts[0].impulse_normal, 4.0 / 13.0, 1e-15);
   EXPECT_EQ(free.contacts[0].impulse_tangential, 0.0);
@@ -118,6 +121,63 @@ TEST(RunExact, ExactTableIsChecked) {
   EXPECT_THROW(exact::solve(load_scene(paper_scene("s1_central"), {"exact.modes=8"})), SceneError);
   const SimulationResult r = exact::solve(load_scene(paper_scene("s1_central"), {"exact.dt_out=0.5"}));
   EXPECT_EQ(r.history.size(), 9u);
+}
+
+}  // namespace
+}  // namespace beamimpact
+
+namespace beamimpact {
+namespace {
+
+std::string benchmark_scene(const std::string& name) {
+  return (testing::source_dir() / "verification/scenes/benchmarks" / (name + ".toml")).string();
+}
+
+// The rod on a wall end to end through the recogniser: touch at gap / v0 = 0.5 s, contact for
+// 2 L / c = 2 s at Z v0 = 4 N, impulse 8 N s, rebound at -1 m/s, 2 J kept (RodOnWall_test.cc).
+TEST(RunExact, RodOnWallScene) {
+  const SimulationResult r = exact::solve(load_scene(benchmark_scene("rod_on_wall")));
+  const ContactSummary& c = r.contacts.at(0);
+  ASSERT_EQ(c.intervals.size(), 1u);
+  EXPECT_NEAR(c.intervals[0][0], 0.5, 1e-12);
+  EXPECT_NEAR(c.intervals[0][1], 2.5, 1e-12);
+  EXPECT_NEAR(c.impulse_normal, 8.0, 1e-12);
+  ASSERT_EQ(c.interval_impulses.size(), 1u);
+  EXPECT_NEAR(c.interval_impulses[0], 8.0, 1e-12);
+  EXPECT_NEAR(r.final_velocity.at("rod")[0], -1.0, 1e-12);
+  for (const HistoryRow& row : r.history) EXPECT_NEAR(row.kinetic + row.strain, 2.0, 1e-12) << row.t;
+}
+
+// The bouncing bar through the recogniser: ten impacts starting at 1 + 8k/3 s, each 800/3 N s,
+// and the energy account K + S - W = 0 (released from rest) in every row.
+TEST(RunExact, BouncingBarScene) {
+  const SimulationResult r = exact::solve(load_scene(benchmark_scene("bouncing_bar")));
+  const ContactSummary& c = r.contacts.at(0);
+  ASSERT_EQ(c.intervals.size(), 10u);
+  ASSERT_EQ(c.interval_impulses.size(), 10u);
+  for (std::size_t k = 0; k < 10; ++k) {
+    EXPECT_NEAR(c.intervals[k][0], 1.0 + 8.0 * static_cast<double>(k) / 3.0, 1e-10);
+    EXPECT_NEAR(c.interval_impulses[k], 800.0 / 3.0, 1e-9);
+  }
+  for (const HistoryRow& row : r.history)
+    EXPECT_NEAR(row.kinetic + row.strain - row.load_work, 0.0, 1e-8) << row.t;
+  EXPECT_NE(std::find(r.effects.begin(), r.effects.end(), "loads"), r.effects.end());
+}
+
+// Loads the exact solutions do not model are refused, naming the key.
+TEST(RunExact, RefusesLoadsItDoesNotModel) {
+  const auto key_of = [](const std::string& file, const std::vector<std::string>& set) {
+    try {
+      exact::solve(load_scene(file, set));
+    } catch (const SceneError& e) {
+      return e.key();
+    }
+    return std::string("(solved)");
+  };
+  EXPECT_EQ(key_of(paper_scene("s1_central"), {"loads.gravity=[1.0, 0.0]"}), "loads");
+  EXPECT_EQ(key_of(benchmark_scene("bouncing_bar"),
+                   {"loads.gravity=[1.0, -10.0]", "effects.bending=true", "bodies[0].inertia=0.01"}),
+            "loads.gravity");
 }
 
 }  // namespace

@@ -176,7 +176,7 @@ def run(cont, st, stats, progress=True, fields=None):
                 ub, vb = c.tgt_w @ uc[c.tgt], c.tgt_w @ vnc_mid[c.tgt]
                 row += [infos[k]["R"], infos[k]["tau"], gap, *uc[c.centre], *vnc_mid[c.centre], *ub, *vb,
                         STATE_CODES[infos[k]["state"]]]
-            rows.append(row + [kin, strain, diss_row, px, py])
+            rows.append(row + [kin, strain, diss_row, 0.0, px, py])
             if fields is not None:
                 fields.write(t, u)
         work_sum += w_n

@@ -178,6 +178,10 @@ def load_scene(path, overrides=None):
         table, _, key = k.partition(".")
         doc.setdefault(table, {})[key] = v
     assumed = {}
+    if "loads" in doc:
+        raise SceneError(file, "loads", "the FEniCSx reference does not apply external loads (gravity, "
+                         "point forces); expected no [loads] table, or run a method that applies them "
+                         "(paper, ida)")
     for k in doc:
         if k not in _TOP:
             raise SceneError(file, k, "unknown key (a typo must not fall back to a default)")

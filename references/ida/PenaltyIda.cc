@@ -76,6 +76,7 @@ struct PenaltyIda::Impl {
   IdaCounters done;  // counters of finished segments (IDAReInit zeroes IDA's own)
   Messages messages;
   double released_energy = 0.0;  // J, spring energy kn g^2/2 left in the penalty at releases
+  Vec load;                      // constant external load F, empty for none
 
   SUNContext ctx = nullptr;
   N_Vector yy = nullptr, yp = nullptr;
@@ -170,6 +171,7 @@ struct PenaltyIda::Impl {
     const CMap U(y, n), V(y + n, n);
     Vec f;
     contact_force(y, f);
+    if (load.size()) f += load;
     const Vec acc = solve_mass(f - K * U - C * V);
     double* p = N_VGetArrayPointer(yp);
     MMap(p, n) = V;
@@ -181,6 +183,7 @@ struct PenaltyIda::Impl {
     const CMap U(y, n), V(y + n, n), Ud(ydot, n), Vd(ydot + n, n);
     Vec f;
     contact_force(y, f);
+    if (load.size()) f += load;
     MMap(res, n) = Ud - V;
     MMap(res + n, n) = M * Vd + C * V + K * U - f;
     quad_rhs(y, res + 2 * n);
@@ -404,6 +407,11 @@ void PenaltyIda::start(double t0, const Eigen::VectorXd& U0, const Eigen::Vector
     I.set_root_directions();
   }
   I.t_now = t0;
+}
+
+void PenaltyIda::set_load(const Eigen::VectorXd& F) {
+  if (F.size() != 0 && F.size() != impl_->n) throw std::invalid_argument("PenaltyIda::set_load: wrong size");
+  impl_->load = F;
 }
 
 void PenaltyIda::advance_to(double t_out, const std::function<void(double)>& on_step) {

@@ -2,7 +2,8 @@
 /// @file PenaltyIda.hpp
 /// @brief SUNDIALS IDA (variable-order BDF) on M U'' + C U' + K U = f_c(U, U') with penalty
 /// contact, written as the residual F(t, y, y') = 0 with y = [U; V]:
-///   F_u = U' - V,   F_v = M V' + C V + K U - sum_c (R_c G_n,c + tau_c G_t,c).
+///   F_u = U' - V,   F_v = M V' + C V + K U - F - sum_c (R_c G_n,c + tau_c G_t,c),
+/// F the constant external load (set_load; none by default).
 /// Each contact is open (R = 0) or closed (R = kn (-g) + cn (-g'), tau = regularised Coulomb).
 /// Root functions locate the switches (open: g = 0 falling; closed: R = 0 falling); at each
 /// event the state flips and IDA is re-initialised with a consistent y'. Impulses and the
@@ -69,6 +70,8 @@ class PenaltyIda {
   PenaltyIda(const PenaltyIda&) = delete;
   PenaltyIda& operator=(const PenaltyIda&) = delete;
 
+  /// @brief The constant external load F (one entry per equation, N); call before start().
+  void set_load(const Eigen::VectorXd& F);
   /// @brief Sets the initial state (all contacts open: the initial gaps must be positive).
   void start(double t0, const Eigen::VectorXd& U0, const Eigen::VectorXd& V0);
   /// @brief Integrates to t_out exactly. on_step(t_prev) is called after every internal step

@@ -1,5 +1,6 @@
 #include <references/ida/solve.hpp>
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <sstream>
@@ -14,6 +15,7 @@
 #include <solver/model/Model.hpp>
 #include <solver/model/critical_dt.hpp>
 #include <solver/model/deformed_geometry.hpp>
+#include <solver/model/load_vector.hpp>
 #include <solver/record/ContactIntervals.hpp>
 #include <solver/record/ResultRecorder.hpp>
 #include <solver/scene/SceneError.hpp>
@@ -61,7 +63,7 @@ Effects ida_effects(const Scene& scene, std::map<std::string, std::string>& assu
 struct PenaltyContacts {
   std::vector<std::unique_ptr<ModelContact>> geometry;
   std::vector<PenaltyLaw> laws;
-  std::vector<double> reduced_mass;  ///< kg, per contact: the two contact points' reduced mass
+  std::vector<double> reduced_mass;                ///< kg, per contact: the two contact points' reduced mass
   nlohmann::json extra = nlohmann::json::array();  ///< per contact: kn, cn, restitution, ...
 };
 
@@ -115,14 +117,14 @@ void check_penalty_cost(const Scene& scene, const PenaltyContacts& pc, int unkno
     const double period = 2.0 * M_PI * std::sqrt(m_red / pc.laws[i].kn);
     const double steps = 20.0 * scene.time.end / period;
     if (!(steps * unknowns <= kOrdinaryWork))
-      throw SceneError(scene.file, "time.allow_long_run",
-                       fmt::format("IDA's penalty on contacts[{}] oscillates with a period of {:.3g} s "
-                                   "(kn {:.3g} N/m, reduced mass {:.3g} kg): resolving it over time.end = "
-                                   "{:g} s takes about {:.3g} steps x {} unknowns, beyond an ordinary run "
-                                   "({:g}); set time.allow_long_run = true (or --allow-long), or a softer "
-                                   "ida.kn",
-                                   i, period, pc.laws[i].kn, m_red, scene.time.end, steps, unknowns,
-                                   kOrdinaryWork));
+      throw SceneError(
+          scene.file, "time.allow_long_run",
+          fmt::format("IDA's penalty on contacts[{}] oscillates with a period of {:.3g} s "
+                      "(kn {:.3g} N/m, reduced mass {:.3g} kg): resolving it over time.end = "
+                      "{:g} s takes about {:.3g} steps x {} unknowns, beyond an ordinary run "
+                      "({:g}); set time.allow_long_run = true (or --allow-long), or a softer "
+                      "ida.kn",
+                      i, period, pc.laws[i].kn, m_red, scene.time.end, steps, unknowns, kOrdinaryWork));
   }
 }
 
@@ -143,8 +145,9 @@ IdaSettings make_settings(const IdaOptions& opt, int n, SimulationResult& r) {
 /// Reads the running IDA solution as history rows and contact samples.
 class Observer {
  public:
-  Observer(const Model& model, const PenaltyIda& ida, const PenaltyContacts& contacts)
-      : model_(model), ida_(ida), contacts_(contacts) {}
+  Observer(const Model& model, const PenaltyIda& ida, const PenaltyContacts& contacts,
+           const Eigen::VectorXd& load)
+      : model_(model), ida_(ida), contacts_(contacts), load_(load) {}
 
   Vec2 momentum(const Eigen::Ref<const Eigen::VectorXd>& V) const {
     Vec2 p{0.0, 0.0};
@@ -185,6 +188,7 @@ class Observer {
     for (int i = 0; i < static_cast<int>(contacts_.laws.size()); ++i)
       row.strain += ida_.contact(i).penalty_energy;
     row.dissipated = ida_.dissipated();
+    if (load_.size()) row.load_work = load_.dot(U);
     row.momentum = momentum(V);
     return row;
   }
@@ -193,6 +197,7 @@ class Observer {
   const Model& model_;
   const PenaltyIda& ida_;
   const PenaltyContacts& contacts_;
+  const Eigen::VectorXd& load_;
 };
 
 /// Contact i's intervals from the located onset and release events (exact switch times), each
@@ -216,11 +221,34 @@ std::vector<std::array<double, 2>> event_intervals(const std::vector<ContactEven
   return intervals.intervals();
 }
 
+/// One contact's running impulse (quadrature) after every accepted step: (t, J(t)).
+using ImpulseTrace = std::vector<std::array<double, 2>>;
+
+/// The impulse of each interval: J at the middle of the open gap after it less J at the middle of
+/// the gap before it (J is constant while open, so any step there gives its exact value).
+std::vector<double> interval_impulses(const std::vector<std::array<double, 2>>& iv, const ImpulseTrace& trace,
+                                      double t_end) {
+  const auto J = [&](double t) {
+    double j = 0.0;
+    for (const auto& [ts, js] : trace)
+      if (ts <= t) j = js;
+    return j;
+  };
+  std::vector<double> out;
+  for (std::size_t i = 0; i < iv.size(); ++i) {
+    const double lo = i == 0 ? 0.0 : 0.5 * (iv[i - 1][1] + iv[i][0]);
+    const double hi = i + 1 < iv.size() ? 0.5 * (iv[i][1] + iv[i + 1][0]) : t_end;
+    out.push_back(J(hi) - J(lo));
+  }
+  return out;
+}
+
 /// Integrates to the end, one row per output time on the paper's grid: p h for every
 /// every-th p and the last step N = ceil(end / h), so that the two methods' rows line up.
 /// Returns the output step (s).
 double integrate(const Scene& scene, const IdaOptions& opt, double dt, PenaltyIda& ida, const Observer& obs,
-                 const Model& model, ResultRecorder& rec) {
+                 const Model& model, ResultRecorder& rec, std::vector<ImpulseTrace>& traces) {
+  traces.assign(scene.contacts.size(), {});
   const int nc = static_cast<int>(scene.contacts.size());
   std::vector<DeformedSurface> surfaces;  // the real gap of each contact, from the deformed geometry
   for (const Contact& c : scene.contacts)
@@ -232,6 +260,7 @@ double integrate(const Scene& scene, const IdaOptions& opt, double dt, PenaltyId
       const ContactReading r = ida.contact(i);
       rec.sample(i, ida.t(), r.R, r.tau, ida.t() - t_prev, obs.state(i, r));
       rec.track_real_gap(i, ida.t(), surfaces[i].gap(ida.U()).gap);
+      traces[i].push_back({ida.t(), ida.impulse_normal(i)});
     }
     rec.track_momentum(obs.momentum(ida.V()));
   };
@@ -280,15 +309,18 @@ SimulationResult solve(const Scene& scene) {
   const IdaSettings settings = make_settings(opt, n, r);
 
   PenaltyIda ida(model.M(), model.K(), C, kinematics, contacts.laws, settings);
+  const Eigen::VectorXd load = effects.loads ? load_vector(model, scene) : Eigen::VectorXd();
+  ida.set_load(load);
   const Eigen::VectorXd V0 = model.initial_velocity();
   ida.start(0.0, Eigen::VectorXd::Zero(n), V0);
-  const Observer obs(model, ida, contacts);
+  const Observer obs(model, ida, contacts, load);
   rec.track_momentum(obs.momentum(V0));
   std::ostringstream rule;
   rule << "contact phases (located by IDA root finding) separated by less than " << opt.merge_gap
        << " s are merged";
   rec.set_merge_rule(opt.merge_gap, rule.str());
-  const double output_step = integrate(scene, opt, dt, ida, obs, model, rec);
+  std::vector<ImpulseTrace> traces;
+  const double output_step = integrate(scene, opt, dt, ida, obs, model, rec, traces);
 
   const auto V = ida.V();
   for (int b = 0; b < model.num_bodies(); ++b) {
@@ -327,6 +359,7 @@ SimulationResult solve(const Scene& scene) {
     nlohmann::json events = nlohmann::json::array();
     s.intervals = event_intervals(ida.events(), i, opt.merge_gap, ida.t(), events);
     s.impulse_normal = ida.impulse_normal(i);
+    s.interval_impulses = interval_impulses(s.intervals, traces[i], ida.t());
     s.impulse_tangential = ida.impulse_tangential(i);
     s.extra = contacts.extra[i];
     s.extra["events"] = events;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <solver/model/load_vector.hpp>
+
 namespace beamimpact::paper {
 namespace {
 
@@ -74,7 +76,8 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
       boxes_(search_boxes(model, scene)),
       solver_(search_.pairs, frictions(scene, search_.contact), effects.friction, model.size(),
               gap_tolerances(scene, search_.contact),
-              [this](const Eigen::VectorXd& f, Eigen::VectorXd& out) { apply_H(f, out); }) {
+              [this](const Eigen::VectorXd& f, Eigen::VectorXd& out) { apply_H(f, out); }),
+      load_(effects.loads ? load_vector(model, scene) : Eigen::VectorXd()) {
   solver_.set_search_boxes(boxes_.get());
   if (!model.lumped() && fint_.nonlinear()) {
     cmass_ = std::make_unique<CorotationalMass>(model, fint_);
@@ -85,7 +88,7 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
       Eigen::VectorXd::Zero(n);
   Vbar_ = V_ = model.initial_velocity();  // no contact force at t = 0: Vbar^0 = V^0
   fint_U_ = fint_next_ = Eigen::VectorXd::Zero(n);
-  fint_.apply(U_, fint_U_);
+  net_force(U_, fint_U_);
   fused_ = model.lumped() && !damped_ && !cmass_;
   // Room for every equation a contact force can touch (a surface contact's rows move with the
   // struck point, so their size now is no bound): no allocation while stepping.
@@ -165,7 +168,7 @@ void ExplicitContactIntegrator::advance() {
     apply_H(fc_, work_);
     U_next_ += work_;
   }
-  fint_.apply(U_next_, fint_next_);
+  net_force(U_next_, fint_next_);
   // Vbar^{p+1} = Vbar^p + M^-1 (-dt/2 (f(U^{p+1}) + f(U^p)) - C (U^{p+1} - U^p) + dt f_c)
   work2_.noalias() = (-0.5 * dt_) * (fint_next_ + fint_U_);
   if (solver_.any_force()) work2_.noalias() += dt_ * fc_;
@@ -212,8 +215,17 @@ void ExplicitContactIntegrator::advance_fused() {
     vbar_saved_.resize(fc_dofs_.size());
     for (std::size_t k = 0; k < fc_dofs_.size(); ++k) vbar_saved_[k] = vb[fc_dofs_[k]];
   }
-  fint_.apply_streamed(U_next_, fint_next_,
-                       [=](int lo, int hi) { velocity_sweep(lo, hi, dt, un, fn, fu, inv, vb, ub); });
+  if (load_.size()) {  // f_int - F^P on each range before the sweep reads it
+    double* fnet = fint_next_.data();
+    const double* F = load_.data();
+    fint_.apply_streamed(U_next_, fint_next_, [=](int lo, int hi) {
+      for (int i = lo; i < hi; ++i) fnet[i] -= F[i];
+      velocity_sweep(lo, hi, dt, un, fn, fu, inv, vb, ub);
+    });
+  } else {
+    fint_.apply_streamed(U_next_, fint_next_,
+                         [=](int lo, int hi) { velocity_sweep(lo, hi, dt, un, fn, fu, inv, vb, ub); });
+  }
   if (force)
     for (std::size_t k = 0; k < fc_dofs_.size(); ++k) {
       const int i = fc_dofs_[k];

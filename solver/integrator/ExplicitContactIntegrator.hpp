@@ -3,10 +3,12 @@
 /// @brief The paper's scheme (Pu & Chi 2011, Eq. 3-5): explicit Newmark (beta = 0, gamma = 1/2)
 /// in which the contact force of step p acts on U^{p+1} and is whatever makes the predicted
 /// step satisfy the contact conditions (forward-increment Lagrange multipliers):
-///   Ubar^{p+1} = U^p + dt Vbar^p + dt^2/2 M^-1 (-f_int(U^p) - C Vbar^p)
+///   Ubar^{p+1} = U^p + dt Vbar^p + dt^2/2 M^-1 (F^P - f_int(U^p) - C Vbar^p)
 ///   U^{p+1}    = Ubar^{p+1} + dt^2 H (R^p + tau^p),   H = M^-1 (I - dt/4 C M^-1)
-///   Vbar^{p+1} = Vbar^p + M^-1 (-dt/2 (f_int(U^{p+1}) + f_int(U^p)) - C (U^{p+1} - U^p) + dt (R^p + tau^p))
-///   V^p        = Vbar^p + dt/2 M^-1 (R^p + tau^p)          (physical velocity, reported)
+///   Vbar^{p+1} = Vbar^p + M^-1 (-dt/2 (f_int(U^{p+1}) + f_int(U^p)) + dt F^P - C (U^{p+1} - U^p) + dt (R^p +
+///   tau^p)) V^p        = Vbar^p + dt/2 M^-1 (R^p + tau^p)          (physical velocity, reported)
+/// F^P is the constant external load ([loads], model/load_vector.hpp): it is folded into the
+/// stored internal forces (f_int(U) - F^P), so a scene without loads runs the same operations.
 /// Cost per step: one f_int (one sparse K U product when linear) and O(n) vector work (one fused
 /// sweep for lumped, undamped models); no allocation in the loop.
 
@@ -76,6 +78,8 @@ class ExplicitContactIntegrator {
   /// @brief Kinetic 1/2 V^T M V and strain energy at step p (J).
   double kinetic_energy() const;
   double strain_energy() const { return fint_.strain_energy(U_); }
+  /// @brief Work of the external loads up to step p, F^P . U^p (J; 0 without loads).
+  double load_work() const { return load_.size() ? load_.dot(U_) : 0.0; }
   /// @brief Linear momentum of body b along global axis c (0 = x, 1 = y) at step p (N s).
   double momentum(int b, int c) const {
     return cmass_ ? cmass_->momentum(b, c, V()) : model_.momentum_covector(b, c).dot(V());
@@ -109,6 +113,11 @@ class ExplicitContactIntegrator {
   /// the equations it touches in fc_dofs_ (sorted, unique), so that the contact costs O(pairs).
   void gather_contact_force();
   void subtract_damping_force(const Eigen::VectorXd& v, Eigen::VectorXd& f);
+  /// f = f_int(U) - F^P (the net force of the step's equations).
+  void net_force(const Eigen::VectorXd& U, Eigen::VectorXd& f) const {
+    fint_.apply(U, f);
+    if (load_.size()) f -= load_;
+  }
 
   const Model& model_;
   double dt_;
@@ -120,7 +129,9 @@ class ExplicitContactIntegrator {
   ContactPairs search_;                      ///< the contact pairs and the scene contact of each
   std::unique_ptr<SearchBoxes> boxes_;
   ContactSolver solver_;
+  Eigen::VectorXd load_;  ///< F^P, empty without loads
   long p_ = 0;
+  // fint_U_, fint_next_: f_int - F^P at U^p, U^{p+1} (the net force of the step's equations)
   Eigen::VectorXd U_prev_, U_, U_next_,  // U^{p-1}, U^p, U^{p+1} (rotated by swaps)
       Vbar_, fint_U_, fint_next_, Ubar_, fc_, work_, work2_, du_, scratch_, hwork_, c_du_;
   mutable Eigen::VectorXd V_, vwork_;  ///< V^p when a contact force acts (formed by form_velocity)

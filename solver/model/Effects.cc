@@ -23,6 +23,7 @@ Effects derive_effects(const Scene& scene) {
   bool has_friction = false;
   for (const Contact& c : scene.contacts) has_friction |= c.friction > 0.0;
   e.friction = scene.effects.friction.value_or(has_friction) && has_friction && e.bending;
+  e.loads = scene.loads.any();
   e.rotating.assign(scene.bodies.size(), false);
   if (e.bending && scene.model.kinematics == Kinematics::kCorotational)
     for (std::size_t b = 0; b < scene.bodies.size(); ++b)
@@ -44,6 +45,7 @@ std::vector<std::string> Effects::names() const {
   if (damping) n.push_back("damping");
   if (friction) n.push_back("friction");
   if (corotational) n.push_back("corotational");
+  if (loads) n.push_back("loads");
   return n;
 }
 

@@ -16,9 +16,10 @@ struct Effects {
   bool damping = false;        ///< Rayleigh coefficients given (and not forced off)
   bool friction = false;       ///< some contact has mu > 0 (and not forced off)
   bool corotational = false;   ///< kinematics = "corotational" and some body can rotate
+  bool loads = false;          ///< [loads] gives gravity or point forces (F^P of Eq. 3)
   std::vector<bool> rotating;  ///< per body: rebuilt every step (corotational only)
 
-  /// @brief Names for summary.json, e.g. {"axial", "bending", "friction"}.
+  /// @brief Names for summary.json, e.g. {"axial", "bending", "friction", "loads"}.
   std::vector<std::string> names() const;
 };
 

@@ -339,17 +339,17 @@ Vec2 Model::node_vector(const Eigen::VectorXd& U, int n) const {
   return {u * axis_[0], u * axis_[1]};
 }
 
-Eigen::VectorXd Model::initial_velocity() const {
+Eigen::VectorXd Model::translation(const std::vector<Vec2>& d) const {
   Eigen::VectorXd v = Eigen::VectorXd::Zero(size());
   for (int b = 0; b < num_bodies(); ++b)
     if (rigid(b)) {  // translation of the centre, no spin
-      const Vec2& bv = body_velocity_[b];
+      const Vec2& bv = d[b];
       const double comp[3] = {dofs_per_node_ == 3 ? bv[0] : dot(bv, axis_), bv[1], 0.0};
       for (int c = 0; c < dofs_per_node_; ++c)
         if (rigid_eq_[b][c] >= 0) v(rigid_eq_[b][c]) = comp[c];
     }
   for (int n = 0; n < num_nodes(); ++n) {
-    const Vec2& bv = body_velocity_[node_body_[n]];
+    const Vec2& bv = d[node_body_[n]];
     if (dofs_per_node_ == 3) {
       if (const int e = equation(n, 0); e >= 0) v(e) = bv[0];
       if (const int e = equation(n, 1); e >= 0) v(e) = bv[1];

@@ -73,7 +73,12 @@ class Model {
   bool damped() const { return a0_ != 0.0 || a1_ != 0.0; }
 
   /// @brief Initial velocity (each body's rigid velocity on its free DOFs).
-  Eigen::VectorXd initial_velocity() const;
+  Eigen::VectorXd initial_velocity() const { return translation(body_velocity_); }
+  /// @brief The equation vector of a rigid translation of each body b by d[b] (m or m/s): d[b]
+  /// on its nodes' x, y DOFs (rod layout: d[b] along the axis; a rigid body: its centre), no
+  /// rotation; fixed DOFs left out.
+  /// @param d one vector per body, global axes
+  Eigen::VectorXd translation(const std::vector<Vec2>& d) const;
   /// @brief Momentum covector of body b along direction c (0 = x, 1 = y): p = m^T V.
   /// Includes the mass of every free DOF of the body (consistent mass: rotations too).
   const Eigen::VectorXd& momentum_covector(int b, int c) const { return momentum_[b][c]; }

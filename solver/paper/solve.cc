@@ -134,6 +134,7 @@ HistoryRow make_row(const ExplicitContactIntegrator& in) {
   row.kinetic = in.kinetic_energy();
   row.strain = in.strain_energy();
   row.dissipated = in.dissipated();
+  row.load_work = in.load_work();
   for (int b = 0; b < m.num_bodies(); ++b)
     for (int c = 0; c < 2; ++c) row.momentum[c] += in.momentum(b, c);
   return row;
@@ -171,7 +172,8 @@ void record_step(const ExplicitContactIntegrator& integ, long p, long N, const S
   if (p % scene.time.output_every != 0 && p != N) return;
   HistoryRow row = make_row(integ);
   const double E = row.kinetic + row.strain;
-  const double E0 = p == 0 ? E : rec.result().energy_initial;
+  // Loads feed the energy: the bound is on the initial energy plus their work so far.
+  const double E0 = (p == 0 ? E : rec.result().energy_initial) + std::abs(row.load_work);
   if (!std::isfinite(E) || E > 1e6 * E0 + 1e-300)
     throw std::runtime_error(fmt::format(
         "the run diverged at t = {:.6g} s (energy {:.3g} J from {:.3g} J) with dt = {:.6g} s, critical "

@@ -25,13 +25,17 @@ void ContactStats::add(double t, double R, double tau, double dt, ContactState s
     peaks_.back().after_closure = std::max(peaks_.back().after_closure, R);
   }
   intervals_.extend(t);
+  peaks_.back().impulse += R * dt;
 }
 
 void ContactStats::fill(ContactSummary& s) const {
   s.intervals = intervals_.intervals();
+  s.interval_impulses.clear();
   s.peak_R_excluding_closure = 0.0;
-  for (const Peaks& p : peaks_)
+  for (const Peaks& p : peaks_) {
     s.peak_R_excluding_closure = std::max(s.peak_R_excluding_closure, p.after_closure);
+    s.interval_impulses.push_back(p.impulse);
+  }
   s.merge_rule = rule_;
   s.impulse_normal = impulse_n_;
   s.impulse_tangential = impulse_t_;

@@ -28,6 +28,7 @@ class ContactStats {
  private:
   struct Peaks {
     double after_closure, closure_R;  ///< N, one per interval
+    double impulse = 0.0;             ///< N s, sum of R dt over the interval's samples
   };
   ContactIntervals intervals_;
   std::string rule_;

@@ -45,6 +45,7 @@ void ResultRecorder::add_row(HistoryRow row) {
   const double E = row.kinetic + row.strain;
   if (rows_++ == 0) r_.energy_initial = E;
   r_.energy_final = E;
+  load_work_final_ = row.load_work;
   if (scene_.output.history) r_.history.push_back(std::move(row));
 }
 
@@ -61,6 +62,17 @@ SimulationResult ResultRecorder::finish(const std::vector<ContactKind>& kinds) {
     stats_[c].fill(s);
     if (std::isfinite(real_gap_[c].first)) std::tie(s.real_gap_min, s.real_gap_min_time) = real_gap_[c];
     r_.contacts.push_back(std::move(s));
+  }
+  if (scene_.loads.any()) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const PointLoad& p : scene_.loads.point)
+      points.push_back({{"body", scene_.bodies[p.body].name}, {"node", p.node}, {"force", p.force}});
+    r_.extra["loads"] = {{"gravity", scene_.loads.gravity},
+                         {"point", points},
+                         {"work_final", load_work_final_},
+                         {"energy_account",
+                          "kinetic + strain + dissipated - load_work = energy_initial (history.csv columns; "
+                          "load_work: the work of the constant loads since t = 0)"}};
   }
   r_.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count();
   return std::move(r_);

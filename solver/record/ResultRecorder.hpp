@@ -26,7 +26,8 @@ enum class ContactSampling {
 ///
 /// Usage: construct at the start of the run (the wall clock starts), set_merge_rule(), then for
 /// each step sample() every contact, track_momentum() where the method defines its drift, and
-/// add_row() for every output row; finally finish() with each contact's kind, then overwrite
+/// add_row() for every output row (summary.json's "loads" states the scene's [loads] and
+/// the last row's load_work); finally finish() with each contact's kind, then overwrite
 /// what the method knows better (exact event times) in the returned result.
 class ResultRecorder {
  public:
@@ -78,7 +79,8 @@ class ResultRecorder {
   SimulationResult r_;
   std::vector<ContactStats> stats_;
   std::vector<std::pair<double, double>> real_gap_;  ///< per contact: smallest real gap (m) and its time (s)
-  long rows_ = 0;  ///< output rows seen (kept or not: [output] history)
+  double load_work_final_ = 0.0;                     ///< J, the last row's load_work
+  long rows_ = 0;                                    ///< output rows seen (kept or not: [output] history)
   bool momentum_started_ = false;
   Vec2 p0_{};
   std::chrono::steady_clock::time_point wall0_;

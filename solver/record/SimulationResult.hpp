@@ -30,7 +30,10 @@ struct HistoryRow {
   std::vector<ContactSample> contacts;  ///< one per scene contact, in scene order
   double kinetic = 0.0, strain = 0.0;   ///< J, totals over all bodies
   double dissipated = 0.0;              ///< J, cumulative: closures, friction, damping
-  Vec2 momentum{};                      ///< N s, total linear momentum
+  /// J, work of the external loads ([loads]) since t = 0: the energy account is
+  /// kinetic + strain + dissipated - load_work = its value at t = 0
+  double load_work = 0.0;
+  Vec2 momentum{};  ///< N s, total linear momentum
 };
 
 /// @brief Per-contact scalars of summary.json ("contacts" array).
@@ -39,6 +42,7 @@ struct ContactSummary {
   ContactKind kind = ContactKind::kEndToEnd;
   double friction = 0.0;                         ///< Coulomb mu the method applied
   std::vector<std::array<double, 2>> intervals;  ///< s, [start, end] of each contact interval
+  std::vector<double> interval_impulses;         ///< N s, normal impulse of each interval
   std::string merge_rule;                        ///< how chatter was merged into intervals
   double impulse_normal = 0.0;                   ///< N s
   double impulse_tangential = 0.0;               ///< N s

@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include <solver/util/write_file_atomic.hpp>
 #include <beamimpact/version.hpp>
+#include <solver/util/write_file_atomic.hpp>
 
 namespace beamimpact {
 namespace {
@@ -23,7 +23,8 @@ std::vector<double> history_values(const HistoryRow& row) {
   for (const ContactSample& c : row.contacts)
     v.insert(v.end(), {c.R, c.tau, c.gap, c.ua[0], c.ua[1], c.va[0], c.va[1], c.ub[0], c.ub[1], c.vb[0],
                        c.vb[1], static_cast<double>(static_cast<int>(c.state))});
-  v.insert(v.end(), {row.kinetic, row.strain, row.dissipated, row.momentum[0], row.momentum[1]});
+  v.insert(v.end(),
+           {row.kinetic, row.strain, row.dissipated, row.load_work, row.momentum[0], row.momentum[1]});
   return v;
 }
 
@@ -41,6 +42,7 @@ nlohmann::json summary_json(const Scene& scene, const SimulationResult& r) {
               {"friction", c.friction},
               {"intervals", c.intervals},
               {"impacts", c.intervals.size()},
+              {"interval_impulses", c.interval_impulses},
               {"merge_rule", c.merge_rule},
               {"impulse_normal", c.impulse_normal},
               {"impulse_tangential", c.impulse_tangential},

@@ -24,6 +24,14 @@ int Scene::body_index(const std::string& n) const {
   return -1;
 }
 
+void refuse_loads(const Scene& scene, const std::string& method) {
+  if (scene.loads.any())
+    throw SceneError(scene.file, "loads",
+                     "method '" + method +
+                         "' does not apply external loads (gravity, point forces); expected "
+                         "no [loads] table, or run a method that applies them (paper, ida)");
+}
+
 void refuse_contact_search(const Scene& scene, const std::string& method) {
   for (std::size_t i = 0; i < scene.contacts.size(); ++i)
     if (scene.contacts[i].search)

@@ -105,6 +105,22 @@ struct Contact {
   bool search = false;
 };
 
+/// @brief A constant force (N, global axes) on one node of a body, for the whole run.
+struct PointLoad {
+  int body = 0;  ///< index into Scene::bodies
+  int node = 0;  ///< node index in the body
+  Vec2 force{};  ///< N
+};
+
+/// @brief External loads: the optional [loads] table (F^P of the paper's Eq. 3). Constant in
+/// time; a scene without them builds no load vector and its step loop does no load work.
+struct Loads {
+  Vec2 gravity{};                ///< m/s^2, acceleration of gravity on every body's mass
+  std::vector<PointLoad> point;  ///< [[loads.point]] entries
+
+  /// @brief True when some load is not zero.
+  bool any() const { return gravity[0] != 0.0 || gravity[1] != 0.0 || !point.empty(); }
+};
 
 /// @brief Forced effects from the optional [effects] table (empty = derived from the scene).
 struct EffectOverrides {
@@ -122,6 +138,7 @@ struct Scene {
   OutputSettings output;
   std::vector<Body> bodies;
   std::vector<Contact> contacts;
+  Loads loads;
   EffectOverrides effects;
   /// @brief Keys the file did not give, with the default used ("model.mass" -> "lumped").
   std::map<std::string, std::string> assumed;
@@ -133,6 +150,10 @@ struct Scene {
   /// @brief Index of the body with this name, or -1.
   int body_index(const std::string& name) const;
 };
+
+/// @brief Refuses a scene with loads for a method that does not apply them: SceneError naming
+/// the [loads] table. `method` names the method in the message.
+void refuse_loads(const Scene& scene, const std::string& method);
 
 /// @brief Refuses a scene with a contact search (node = "all") for a method that checks only the
 /// declared node: SceneError naming contacts[i].node. `method` names the method in the message.

@@ -10,6 +10,7 @@
 #include <solver/scene/SceneError.hpp>
 #include <solver/scene/TableReader.hpp>
 #include <solver/scene/collinear.hpp>
+#include <solver/scene/loads_io.hpp>
 #include <solver/util/sha256.hpp>
 
 namespace beamimpact {
@@ -357,8 +358,9 @@ Body read_body(TableReader& r, Scene& sc) {
   b.rigid = r.boolean_or("rigid", false);
   if (b.rigid && !b.supports.empty() &&
       !(b.supports.size() == 1 && b.supports[0].fix_x && b.supports[0].fix_y && b.supports[0].fix_theta))
-    r.fail("supports", "a rigid body is free (supports = []) or immovable (one support fixing \"x\", \"y\" and "
-                       "\"theta\"); expected one of those");
+    r.fail("supports",
+           "a rigid body is free (supports = []) or immovable (one support fixing \"x\", \"y\" and "
+           "\"theta\"); expected one of those");
   r.finish();
   return b;
 }
@@ -445,22 +447,23 @@ void check_initial_gaps(const Scene& sc) {
     const Body& striker = sc.bodies[c.striker];
     const Body& target = sc.bodies[c.target];
     for (int node = c.search ? 0 : c.node; node <= (c.search ? striker.elements : c.node); ++node) {
-    const Vec2 x = striker.node_position(node);
-    if (distance_to_body(x, target) <= 1e-9 * scale)
-      throw SceneError(
-          sc.file, "contacts[" + std::to_string(i) + "].node",
-          fmt::format("the striker node of '{}' at ({:.6g}, {:.6g}) m touches target '{}' at t = 0 "
-                      "(zero initial gap); expected a positive gap: move '{}' away from '{}' "
-                      "(a contact must close during the run)",
-                      striker.name, x[0], x[1], target.name, striker.name, target.name));
+      const Vec2 x = striker.node_position(node);
+      if (distance_to_body(x, target) <= 1e-9 * scale)
+        throw SceneError(
+            sc.file, "contacts[" + std::to_string(i) + "].node",
+            fmt::format("the striker node of '{}' at ({:.6g}, {:.6g}) m touches target '{}' at t = 0 "
+                        "(zero initial gap); expected a positive gap: move '{}' away from '{}' "
+                        "(a contact must close during the run)",
+                        striker.name, x[0], x[1], target.name, striker.name, target.name));
     }
     // A search also checks the target's end nodes against the striker.
     for (int end : {0, target.elements})
       if (c.search && distance_to_body(target.node_position(end), striker) <= 1e-9 * scale)
-        throw SceneError(sc.file, "contacts[" + std::to_string(i) + "].node",
-                         fmt::format("node = \"all\": an end node of target '{}' touches striker '{}' at t = 0 "
-                                     "(zero initial gap); expected a positive gap",
-                                     target.name, striker.name));
+        throw SceneError(
+            sc.file, "contacts[" + std::to_string(i) + "].node",
+            fmt::format("node = \"all\": an end node of target '{}' touches striker '{}' at t = 0 "
+                        "(zero initial gap); expected a positive gap",
+                        target.name, striker.name));
   }
 }
 
@@ -494,6 +497,7 @@ Scene read_scene(Scene sc, const std::string& text, const std::vector<std::strin
   read_time_and_model(top, sc);
   read_bodies(top, sc);
   read_contacts(top, sc);
+  read_loads(top, sc);
   read_effects(top, sc);
   read_output(top, sc);
   keep_method_tables(top, sc);

@@ -26,7 +26,7 @@ const std::vector<std::string>& contact_columns() {
 }
 
 const std::vector<std::string>& model_columns() {
-  static const std::vector<std::string> c = {"kinetic", "strain", "dissipated", "px", "py"};
+  static const std::vector<std::string> c = {"kinetic", "strain", "dissipated", "load_work", "px", "py"};
   return c;
 }
 
@@ -92,8 +92,9 @@ const std::vector<std::string>& contact_summary_keys() {
 
 const std::vector<std::string>& critical_step_keys() {
   namespace k = critical_step_key;
-  static const std::vector<std::string> keys = {
-      k::kMethod, k::kBound, k::kOmegaMax, k::kElementBoundDt, k::kOmegaLower, k::kMargin, k::kDtOverCritical};
+  static const std::vector<std::string> keys = {k::kMethod,         k::kBound,      k::kOmegaMax,
+                                                k::kElementBoundDt, k::kOmegaLower, k::kMargin,
+                                                k::kDtOverCritical};
   return keys;
 }
 
@@ -128,6 +129,7 @@ nlohmann::json schema_json() {
         {"kinetic", "J"},
         {"strain", "J"},
         {"dissipated", "J"},
+        {"load_work", "J"},
         {"px", "N s"},
         {"py", "N s"}}},
       {"optional_columns", {{"impulse", "N s, cumulative normal impulse per contact (adaptive methods)"}}}};

@@ -8,14 +8,15 @@ namespace beamimpact {
 namespace {
 
 // The contract of interface.md: t, then 12 columns per contact (suffix _k from the second
-// contact on), then 5 model columns. Written out here by hand, not derived from the code.
+// contact on), then 6 model columns (interface.md's five with the loads' work, load_work, after
+// dissipated). Written out here by hand, not derived from the code.
 TEST(OutputSchema, ColumnsFollowInterfaceMd) {
-  const std::vector<std::string> one = {"t",     "R",       "tau",    "gap",        "ua_x", "ua_y",
-                                        "va_x",  "va_y",    "ub_x",   "ub_y",       "vb_x", "vb_y",
-                                        "state", "kinetic", "strain", "dissipated", "px",   "py"};
+  const std::vector<std::string> one = {
+      "t",    "R",    "tau",   "gap",     "ua_x",   "ua_y",       "va_x",      "va_y", "ub_x", "ub_y",
+      "vb_x", "vb_y", "state", "kinetic", "strain", "dissipated", "load_work", "px",   "py"};
   EXPECT_EQ(history_columns(1), one);
   const auto two = history_columns(2);
-  EXPECT_EQ(two.size(), 1u + 2u * 12u + 5u);
+  EXPECT_EQ(two.size(), 1u + 2u * 12u + 6u);
   EXPECT_EQ(two[13], "R_2");
   EXPECT_EQ(two[24], "state_2");
   EXPECT_EQ(contact_column("vb_y", 3), "vb_y_3");

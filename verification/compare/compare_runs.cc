@@ -8,6 +8,7 @@
 #include <solver/record/ContactIntervals.hpp>
 #include <solver/schema/output_schema.hpp>
 #include <solver/util/InputError.hpp>
+#include <verification/compare/impact_norms.hpp>
 #include <verification/compare/series.hpp>
 
 namespace beamimpact::verification {
@@ -191,6 +192,8 @@ void add_contact_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, 
       "(N); "
       "from the rows, not summary.json, so that penalty methods' sub-step closure spikes do not count"));
 
+  add_impact_norms(cmp, a, b, sa, sb, iva, ivb, k, thr);
+
   add_vector_norms(cmp, a, b, g, "ua", k, "the striker contact node displacement ua (m)");
   add_vector_norms(cmp, a, b, g, "ub", k, "the struck point displacement ub (m)");
   add_vector_norms(cmp, a, b, g, "va", k, "the striker contact node velocity va (m/s)");
@@ -263,7 +266,7 @@ bool known_norm(const std::string& name) {
   static const std::vector<std::string> per_contact_series = {"R", "Rw", "ua", "ub", "va", "vb"};
   static const std::vector<std::string> per_contact_scalar = {"impulse", "impacts", "contact_start",
                                                               "contact_end", "peak_R"};
-  if (name == "final_velocity" || name == "energy_final") return true;
+  if (name == "final_velocity" || name == "energy_final" || name == "energy_drift_per_impact") return true;
   std::string base = name, kind;
   if (const auto dot = name.find('.'); dot != std::string::npos) {
     base = name.substr(0, dot);
@@ -275,7 +278,9 @@ bool known_norm(const std::string& name) {
     base = base.substr(0, us);  // "R_2" -> "R"
   }
   if (kind.empty())
-    return std::find(per_contact_scalar.begin(), per_contact_scalar.end(), base) != per_contact_scalar.end();
+    return std::find(per_contact_scalar.begin(), per_contact_scalar.end(), base) !=
+               per_contact_scalar.end() ||
+           known_impact_norm(base);
   if (base == "I") return kind == "rel_linf";
   const bool series =
       std::find(per_contact_series.begin(), per_contact_series.end(), base) != per_contact_series.end();
@@ -332,6 +337,7 @@ Comparison compare_runs(const StoredRun& a, const StoredRun& b, const CompareOpt
   for (int k = 1; k <= std::min(na, nb); ++k) add_contact_norms(cmp, a, b, g, k, options.threshold);
   add_final_velocity(cmp, a, b);
   add_energy(cmp, a, b);
+  add_energy_drift(cmp, a, b);
   return cmp;
 }
 

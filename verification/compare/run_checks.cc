@@ -26,22 +26,27 @@ double max_over_rows(std::size_t rows, F f) {
 
 void energy(const StoredRun& run, Comparison& c) {
   Norm band = make("energy_band", "1",
-                   "max_t |K + S + D - E0| / E0: kinetic + strain + dissipated against the initial energy");
-  Norm growth = make("energy_growth", "1", "max_t max(0, K + S + D - E0) / E0: energy created (instability)");
+                   "max_t |K + S + D - W - E0| / E: kinetic + strain + dissipated - load work against the "
+                   "initial energy, E = E0 + max_t |W| (W = 0 without loads or a load_work column)");
+  Norm growth =
+      make("energy_growth", "1", "max_t max(0, K + S + D - W - E0) / E: energy created (instability)");
   for (const char* col : {"kinetic", "strain", "dissipated"})
     if (!run.has(col)) band.unavailable = growth.unavailable = std::string("no column ") + col;
   if (band.unavailable.empty()) {
     const auto& K = run.column("kinetic");
     const auto& S = run.column("strain");
     const auto& D = run.column("dissipated");
-    const double E0 = K[0] + S[0];
-    if (E0 > 0.0) {
-      band.value =
-          max_over_rows(K.size(), [&](std::size_t i) { return std::abs(K[i] + S[i] + D[i] - E0) / E0; });
-      growth.value =
-          max_over_rows(K.size(), [&](std::size_t i) { return std::max(0.0, K[i] + S[i] + D[i] - E0) / E0; });
+    const std::vector<double> zero(K.size(), 0.0);
+    const auto& W = run.has("load_work") ? run.column("load_work") : zero;
+    const double E0 = K[0] + S[0] - W[0];
+    const double E = E0 + max_over_rows(W.size(), [&](std::size_t i) { return std::abs(W[i]); });
+    if (E > 0.0) {
+      band.value = max_over_rows(K.size(),
+                                 [&](std::size_t i) { return std::abs(K[i] + S[i] + D[i] - W[i] - E0) / E; });
+      growth.value = max_over_rows(
+          K.size(), [&](std::size_t i) { return std::max(0.0, K[i] + S[i] + D[i] - W[i] - E0) / E; });
     } else {
-      band.unavailable = growth.unavailable = "initial energy is zero";
+      band.unavailable = growth.unavailable = "initial energy and load work are zero";
     }
   }
   c.norms.push_back(band);

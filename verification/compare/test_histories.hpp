@@ -24,7 +24,7 @@ inline StoredRun synthetic(
     c["R"].push_back(force(t));
     c["ua_x"].push_back(ua(t));
     for (const char* z : {"tau", "gap", "ua_y", "va_x", "va_y", "ub_x", "ub_y", "vb_x", "vb_y", "strain",
-                          "dissipated", "px", "py"})
+                          "dissipated", "load_work", "px", "py"})
       c[z].push_back(0.0);
     c["kinetic"].push_back(1.0);
   }

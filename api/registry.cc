@@ -1,5 +1,10 @@
 #include <api/registry.hpp>
 
+#include <map>
+#include <mutex>
+
+#include <api/child_process.hpp>
+#include <api/methods_file.hpp>
 #include <solver/paper/solve.hpp>
 #include <solver/scene/SceneError.hpp>
 #ifdef BEAMIMPACT_HAVE_exact
@@ -10,54 +15,68 @@
 #endif
 
 namespace beamimpact {
+namespace {
 
-const std::vector<Method>& methods() {
-  static const std::vector<Method> table = [] {
-    std::vector<Method> t;
-    Method paper;
-    paper.name = "paper";
-    paper.summary = "Pu & Chi (2011) explicit dynamic-contact integrator (solver/)";
-    paper.options_table = "paper";
-    paper.solve = [](const Scene& scene) { return paper::solve(scene); };
-    paper.solve_with_fields = paper::solve;
-    t.push_back(paper);
+/// The in-process methods of this build, paper first.
+std::deque<Method> built_in() {
+  std::deque<Method> t;
+  Method paper;
+  paper.name = "paper";
+  paper.summary = "Pu & Chi (2011) explicit dynamic-contact integrator (solver/)";
+  paper.options_table = "paper";
+  paper.solve = [](const Scene& scene) { return paper::solve(scene); };
+  paper.solve_with_fields = paper::solve;
+  t.push_back(paper);
 #ifdef BEAMIMPACT_HAVE_exact
-    Method exact;
-    exact.name = "exact";
-    exact.summary =
-        "exact and semi-analytic solutions: d'Alembert rods, rod on a simply supported beam "
-        "(references/exact/)";
-    exact.options_table = "exact";
-    exact.accepts = {
-        .dt = true, .overrides = true, .mesh_factor = false, .friction = false, .rotation = false};
-    exact.solve = exact::solve;
-    t.push_back(exact);
+  Method exact;
+  exact.name = "exact";
+  exact.summary =
+      "exact and semi-analytic solutions: d'Alembert rods, rod on a simply supported beam, rigid rod "
+      "(references/exact/)";
+  exact.options_table = "exact";
+  exact.accepts.mesh_factor = false;  // an exact solution has no mesh
+  exact.accepts.rotation = false;
+  exact.accepts.search = false;
+  exact.accepts.several_contacts = false;
+  exact.solve = exact::solve;
+  t.push_back(exact);
 #endif
 #ifdef BEAMIMPACT_HAVE_ida
-    Method ida;
-    ida.name = "ida";
-    ida.summary = "SUNDIALS IDA with penalty contact on the same beam model (references/ida/)";
-    ida.options_table = "ida";
-    ida.accepts.rotation = false;
-    ida.solve = ida::solve;
-    t.push_back(ida);
+  Method ida;
+  ida.name = "ida";
+  ida.summary = "SUNDIALS IDA with penalty contact on the same beam model (references/ida/)";
+  ida.options_table = "ida";
+  ida.accepts.search = false;  // a corotational scene runs in global axes (said in `assumed`)
+  ida.solve = ida::solve;
+  t.push_back(ida);
 #endif
-    Method fenicsx;
-    fenicsx.name = "fenicsx";
-    fenicsx.summary =
-        "FEniCSx 2D plane-stress continuum, dolfinx 0.5 (references/fenicsx/, external program)";
-    fenicsx.options_table = "fenicsx";
-    fenicsx.accepts = {
-        .dt = false, .overrides = false, .mesh_factor = false, .friction = true, .rotation = true};
-    fenicsx.slow = true;
-    fenicsx.command = {"/usr/bin/python3", "references/fenicsx/run.py"};
-    fenicsx.check = {"/usr/bin/python3", "-c", "import dolfinx"};
-    fenicsx.mesh_option = "--mesh";
-    fenicsx.output_step_option = "--output-interval";
-    t.push_back(fenicsx);
-    return t;
+  for (Method& m : t) m.origin = "built-in";
+  return t;
+}
+
+std::deque<Method>& table() {
+  static std::deque<Method> t = built_in();
+  return t;
+}
+
+}  // namespace
+
+const std::deque<Method>& methods() {
+  static const bool defaults_read = [] {
+    for (const auto& f : default_methods_files()) load_methods_file(f);
+    return true;
   }();
-  return table;
+  (void)defaults_read;
+  return table();
+}
+
+void add_method(Method m, const std::string& file, const std::string& key) {
+  for (const Method& other : table())
+    if (other.name == m.name)
+      throw SceneError(
+          file, key,
+          "a method named '" + m.name + "' is already declared (" + other.origin + "); expected a new name");
+  table().push_back(std::move(m));
 }
 
 const Method* find_method(std::string_view name) {
@@ -76,6 +95,23 @@ const Method& method(std::string_view name, const std::string& file, const std::
   if (const Method* m = find_method(name)) return *m;
   throw SceneError(file, key,
                    "expected a method name (" + method_names() + "), got '" + std::string(name) + "'");
+}
+
+std::string unavailable(const Method& m) {
+  if (m.in_process() || m.check.empty()) return "";
+  static std::mutex mu;
+  static std::map<std::string, std::string> reasons;  // method -> why not ("" = it can run)
+  std::lock_guard lock(mu);
+  if (auto it = reasons.find(m.name); it != reasons.end()) return it->second;
+  const ProcessResult r = spawn_and_wait(m.check, "/dev/null", 120.0);
+  std::string why;
+  if (!r.error.empty() || r.exit_code != 0) {
+    std::string cmd;
+    for (const auto& a : m.check) cmd += (cmd.empty() ? "" : " ") + a;
+    why = m.name + ": its check '" + cmd + "' " +
+          (r.error.empty() ? "exited " + std::to_string(r.exit_code) : r.error) + " (not installed here?)";
+  }
+  return reasons[m.name] = why;
 }
 
 }  // namespace beamimpact

@@ -1,9 +1,11 @@
 #pragma once
 /// @file registry.hpp
 /// @brief The method registry: every method beamimpact can run, by name, in one table (in the
-/// style of Ceres' LinearSolver::Create). The CLI, verify, sweep and the C++ API reach methods
-/// only through it. Adding a method touches this table (registry.cc) and the method's own folder.
+/// style of Ceres' LinearSolver::Create). The CLI, verify, sweep, study and the C++ API reach
+/// methods only through it. In-process methods are compiled in (registry.cc); external programs
+/// are declared in methods files (TOML, api/methods_file.hpp, docs/protocol.md) with no C++ edit.
 
+#include <deque>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -15,19 +17,23 @@
 namespace beamimpact {
 
 /// @brief One method: an in-process solver, or an external program that writes the same
-/// run directory (history.csv, summary.json).
+/// run directory (history.csv, summary.json; docs/protocol.md).
 struct Method {
-  /// @brief What a method can take from a scene or a study.
+  /// @brief What a method can take from a scene or a run request. api::run refuses (exit 2, "not
+  /// applicable" in the suite) a run that asks for more (see refusal() in api/accepts.hpp).
   struct Accepts {
-    bool dt = true;           ///< a time step (time.dt / --dt); false: the method picks its own
-    bool overrides = true;    ///< --set KEY=VALUE scene overrides
-    bool mesh_factor = true;  ///< mesh refinement as an element multiplier (else a named preset)
-    bool friction = true;     ///< Coulomb friction
-    bool rotation = true;     ///< large rotation (corotational kinematics)
+    bool dt = true;                ///< a time step asked for (--dt, time.dt / time.fraction overrides)
+    bool mesh_factor = true;       ///< --mesh is an element multiplier (else a preset name of its own)
+    bool friction = true;          ///< Coulomb friction (a contact with friction > 0)
+    bool rotation = true;          ///< large rotation (model.kinematics = "corotational")
+    bool rigid = true;             ///< rigid bodies (rigid = true)
+    bool search = true;            ///< contact search (node = "all")
+    bool several_contacts = true;  ///< more than one [[contacts]] table
   };
 
   std::string name;           ///< registry key and `--method` value
   std::string summary;        ///< one line for `beamimpact methods`
+  std::string origin;         ///< "built-in" or the methods file that declared it
   std::string options_table;  ///< the scene table holding its options ("paper"), "" for none
   Accepts accepts;
   bool slow = false;  ///< typically seconds or more per run: scheduled first, never timed in tests
@@ -36,20 +42,25 @@ struct Method {
   /// @brief In-process solver that also writes VTK fields ([output] fields = true) into the run
   /// directory given; empty for a method without field output.
   std::function<SimulationResult(const Scene&, const std::filesystem::path&)> solve_with_fields;
-  /// @brief External program: argv prefix, paths relative to the source root (or the installed
-  /// share/beamimpact); it is run as PREFIX SCENE --out DIR --quiet [ARGS].
+  /// @brief External program: its argument list with placeholders ({scene}, {out}, {dt},
+  /// {mesh}, {end}); {here} and {beamimpact} are already expanded.
   std::vector<std::string> command;
-  /// @brief External program: a command (same rules) that exits 0 when the method can run here.
+  /// @brief External program: a command (same expansion) that exits 0 when it can run here.
   std::vector<std::string> check;
-  /// @brief External program: the option taking a named mesh preset, and an output step (s).
-  std::string mesh_option, output_step_option;
 
   /// @brief True for an in-process solver.
   bool in_process() const { return static_cast<bool>(solve); }
 };
 
-/// @brief Every method of this build, in a fixed order (paper first).
-const std::vector<Method>& methods();
+/// @brief Every method: the built-in ones (paper first), then those of the methods files in the
+/// order read. The first call reads the default methods files (methods_file.hpp); a bad file
+/// throws SceneError naming it and the key.
+const std::deque<Method>& methods();
+
+/// @brief Adds a method declared in a methods file. Throws SceneError(file, key) when its name is
+/// already taken.
+/// @param m the method; @param file the methods file, for messages; @param key its table's key
+void add_method(Method m, const std::string& file, const std::string& key);
 
 /// @brief The method with this name, or nullptr.
 const Method* find_method(std::string_view name);
@@ -58,7 +69,11 @@ const Method* find_method(std::string_view name);
 /// known names when there is none.
 const Method& method(std::string_view name, const std::string& file, const std::string& key);
 
-/// @brief "paper, exact, ida, fenicsx": the names, for messages and help texts.
+/// @brief "paper, exact, ida, ...": the names, for messages and help texts.
 std::string method_names();
+
+/// @brief Why the method cannot run on this machine ("" when it can): an external program's
+/// check command failing or missing (run once per method and remembered).
+std::string unavailable(const Method& m);
 
 }  // namespace beamimpact

@@ -1,5 +1,9 @@
 #include <api/run.hpp>
 
+#include <fmt/format.h>
+
+#include <api/accepts.hpp>
+#include <api/external_method.hpp>
 #include <api/registry.hpp>
 #include <solver/record/FieldWriter.hpp>
 #include <solver/record/output_files.hpp>
@@ -8,19 +12,22 @@
 #include <solver/scene/scene_io.hpp>
 
 namespace beamimpact {
+namespace {
 
-SimulationResult run(const Scene& scene, std::string_view method_name, const RunOptions& options) {
-  if (!options.set.empty())
-    throw SceneError(scene.file, "set",
-                     "expected no overrides for a loaded scene; pass them to load_scene()");
-  const Method& m = method(method_name, scene.file, "--method");
-  if (!m.in_process())
-    throw SceneError(scene.file, "--method",
-                     "'" + m.name + "' is an external program, not callable in-process; it runs as: " +
-                         m.command.front() + " " + m.command.back() + " SCENE --out DIR");
-  if (options.out) {  // nothing of an earlier run in the directory may vouch for this one
-    std::filesystem::remove(*options.out / "summary.json");
-    std::filesystem::remove(FieldWriter::collection(*options.out));
+/// Every run passes here: the method's acceptance, then the in-process solver or the program.
+SimulationResult run_method(const Scene& scene, const Method& m,
+                            const std::optional<std::filesystem::path>& out, const std::string& mesh) {
+  if (out) {  // nothing of an earlier run in the directory may vouch for this one, nor a refusal
+    std::filesystem::remove(*out / "summary.json");
+    std::filesystem::remove(FieldWriter::collection(*out));
+  }
+  check_accepts(m, scene, mesh);
+  if (!m.in_process()) {
+    if (!out)
+      throw SceneError(
+          scene.file, "--out",
+          "expected an output directory: the external method '" + m.name + "' writes its run there");
+    return run_external(m, scene, *out, mesh);
   }
   // Before anything is allocated: refuse a run far beyond the ordinary (the estimate is printed).
   check_run_cost(scene, planned_dt(scene));
@@ -28,23 +35,47 @@ SimulationResult run(const Scene& scene, std::string_view method_name, const Run
   if (scene.output.fields) {
     if (!m.solve_with_fields)
       throw SceneError(scene.file, "output.fields",
-                       "expected false for method '" + m.name +
-                           "': fields are written by the methods paper and fenicsx");
-    if (!options.out)
+                       "expected false for method '" + m.name + "': it writes no fields");
+    if (!out)
       throw SceneError(scene.file, "output.fields",
                        "expected an output directory to write the fields into (--out)");
-    r = m.solve_with_fields(scene, *options.out);
+    r = m.solve_with_fields(scene, *out);
   } else {
     r = m.solve(scene);
   }
-  if (options.out) write_outputs(scene, r, *options.out);
+  if (out) write_outputs(scene, r, *out);
   return r;
+}
+
+}  // namespace
+
+SimulationResult run(const Scene& scene, std::string_view method_name, const RunOptions& options) {
+  if (!options.set.empty() || options.dt || !options.mesh.empty())
+    throw SceneError(scene.file, "set",
+                     "expected no overrides, dt or mesh for a loaded scene; pass them to load_scene()");
+  return run_method(scene, method(method_name, scene.file, "--method"), options.out, "");
 }
 
 SimulationResult run(const std::filesystem::path& scene_file, std::string_view method_name,
                      const RunOptions& options) {
-  const Scene scene = load_scene(scene_file, options.set);
-  return run(scene, method_name, RunOptions{{}, options.out});
+  const Method& m = method(method_name, scene_file.string(), "--method");
+  std::vector<std::string> set = options.set;
+  if (options.dt) {
+    if (!(*options.dt > 0.0))
+      throw SceneError(scene_file.string(), "--dt",
+                       fmt::format("expected a positive step (s), got {}", *options.dt));
+    set.push_back(fmt::format("time.dt={:.17g}", *options.dt));
+  }
+  // An in-process method refines by element overrides (recorded in summary.json), the file's
+  // element counts times the factor, applied last; an external one gets the mesh as {mesh}.
+  if (!options.mesh.empty() && m.in_process() && m.accepts.mesh_factor) {
+    const int f = mesh_factor(options.mesh, scene_file.string(), m.name);
+    const Scene file = load_scene(scene_file);
+    for (std::size_t i = 0; i < file.bodies.size(); ++i)
+      set.push_back(fmt::format("bodies[{}].elements={}", i, file.bodies[i].elements * f));
+    return run_method(load_scene(scene_file, set), m, options.out, "");
+  }
+  return run_method(load_scene(scene_file, set), m, options.out, options.mesh);
 }
 
 }  // namespace beamimpact

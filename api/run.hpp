@@ -25,20 +25,29 @@ struct RunOptions {
   std::vector<std::string> set;
   /// @brief When given, history.csv and summary.json are written into this directory (a stale
   /// summary.json there is removed before the run starts, so that it never vouches for it).
+  /// An external method needs one.
   std::optional<std::filesystem::path> out;
+  /// @brief s, the time step asked for (as time.dt; refused by a method that picks its own).
+  std::optional<double> dt = std::nullopt;
+  /// @brief The mesh asked for: an element multiplier ("2") for a method with
+  /// accepts.mesh_factor, else the method's own preset name ("coarse"); "" for the scene's.
+  std::string mesh = {};
 };
 
-/// @brief Runs a scene file with an in-process method of the registry.
+/// @brief Runs a scene file with a method of the registry (in-process, or an external program
+/// through its methods-file command). What the method does not accept is refused here, the one
+/// place every run passes (api/accepts.hpp).
 /// @param scene_file the scene (TOML, shared/spec/interface.md)
-/// @param method a registry name: "paper", "exact", "ida"
-/// @param options overrides and output directory
-/// @return the result; throws SceneError for bad input (file, key, expectation; the CLI's exit
-/// code 2) and std::runtime_error when the run fails (exit code 3).
+/// @param method a registry name: "paper", "exact", "ida", or an external method's
+/// @param options overrides, step, mesh and output directory
+/// @return the result (of an external method: its summary's keys; the run directory holds the
+/// rest); throws SceneError for bad input or a run the method does not take (file, key,
+/// expectation; the CLI's exit code 2) and std::runtime_error when the run fails (exit code 3).
 SimulationResult run(const std::filesystem::path& scene_file, std::string_view method,
                      const RunOptions& options = {});
 
-/// @brief Runs a scene already loaded (options.set must be empty: overrides are applied by
-/// load_scene()).
+/// @brief Runs a scene already loaded (options.set, dt and mesh must be empty: overrides are
+/// applied by load_scene()).
 SimulationResult run(const Scene& scene, std::string_view method, const RunOptions& options = {});
 
 }  // namespace beamimpact

@@ -19,9 +19,10 @@ foreach(_dir IN LISTS BEAMIMPACT_MODULE_DIRS)
   endif()
 endforeach()
 install(FILES ${BEAMIMPACT_INCLUDE_DIR}/beamimpact/version.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/beamimpact)
-# Data: scenes and matrix (share/beamimpact/verification), the FEniCSx reference script.
+# Data: scenes, matrix and methods file (share/beamimpact/verification), the FEniCSx reference script.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/verification/scenes DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/verification)
-install(FILES ${PROJECT_SOURCE_DIR}/verification/matrix.toml DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/verification)
+install(FILES ${PROJECT_SOURCE_DIR}/verification/matrix.toml ${PROJECT_SOURCE_DIR}/verification/methods.toml
+  DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/verification)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/references/fenicsx DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/references
   FILES_MATCHING PATTERN "*.py" PATTERN "tests" EXCLUDE PATTERN "__pycache__" EXCLUDE)
 

@@ -30,8 +30,6 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 PAPER = "verification/scenes/paper"
-FENICSX = "fenicsx"  # marks a rung run by the external program (the registry's command for it)
-FENICSX_CMD = ["/usr/bin/python3", "references/fenicsx/run.py"]  # api/registry.cc: fenicsx.command
 ERRORS = ("impulse", "ub.rel_l2")  # norm names owned by verification/compare (compare_runs.cc)
 ERROR_LABEL = {"impulse": "relative impulse error", "ub.rel_l2": "rel. L2 error of the struck point's displacement"}
 EQUAL_ERROR_LEVELS = (3e-2, 1e-2, 3e-3)  # relative impulse error at which CPU times are compared
@@ -85,7 +83,7 @@ def plan_for(name, quick):
                       + sum((["--set", s] for s in mesh_sets(elements, 2)), [])))
     # FEniCSx: the 2D continuum over its mesh presets.
     for m in ("coarse", "default", "fine")[: 1 if quick else 3]:
-        rungs.append(("FEniCSx (meshes)", f"mesh {m}", [FENICSX, "--mesh", m]))
+        rungs.append(("FEniCSx (meshes)", f"mesh {m}", ["--method", "fenicsx", "--mesh", m]))
     # The exact solution over its mode count (rod on beam only; S1's rods are exact at roundoff).
     if name.startswith(("s2", "s3")):
         for n in (8, 16, 32)[: 1 if quick else 3]:
@@ -102,11 +100,9 @@ def plan_for(name, quick):
 
 
 def run_timed(exe, scene, args, out):
-    """One `beamimpact run`: (exit code, CPU s of the child and its waited-for children, wall s)."""
-    if args and args[0] == FENICSX:
-        cmd = FENICSX_CMD + [scene, "--out", out, "--quiet"] + args[1:]
-    else:
-        cmd = [exe, "run", scene, "--out", out, "--quiet"] + args
+    """One `beamimpact run`: (exit code, CPU s of the child and its waited-for children, wall s).
+    External methods (FEniCSx) run through it too, as their methods file says."""
+    cmd = [exe, "run", scene, "--out", out, "--quiet"] + args
     t0 = time.perf_counter()
     p = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     err = p.stderr.read().decode(errors="replace")

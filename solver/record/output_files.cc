@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <solver/schema/output_schema.hpp>
 #include <beamimpact/version.hpp>
 #include <solver/util/write_file_atomic.hpp>
 
@@ -94,16 +95,7 @@ nlohmann::json summary_json(const Scene& scene, const SimulationResult& r) {
             {"momentum_drift_max", r.momentum_drift_max},
             {"bodies", bodies},
             {"contacts", contacts},
-            {"units",
-             {{"t", "s"},
-              {"R", "N"},
-              {"tau", "N"},
-              {"gap", "m"},
-              {"u", "m"},
-              {"v", "m/s"},
-              {"energy", "J"},
-              {"momentum", "N s"},
-              {"impulse", "N s"}}},
+            {"units", summary_units()},
             {"complete", true}};
   s.update(r.extra);
   return s;

@@ -16,7 +16,9 @@
 namespace beamimpact {
 namespace {
 
-const std::vector<std::string> kMethodTables = {"paper", "ida", "exact", "fenicsx"};
+/// The scene's own tables; every other top-level table is a method's options (checked against
+/// the registry when a method runs: api/accepts.hpp).
+const std::vector<std::string> kSceneTables = {"time", "model", "effects", "output"};
 
 // ---- --set overrides --------------------------------------------------------------------
 
@@ -424,15 +426,16 @@ void read_effects(TableReader& top, Scene& sc) {
   r.finish();
 }
 
-/// @brief Keeps the method option tables ([paper], [ida], ...) as TOML text for their methods.
-void keep_method_tables(TableReader& top, Scene& sc) {
-  for (const std::string& m : kMethodTables) {
-    if (const toml::node* n = top.raw(m)) {
-      if (!n->as_table()) top.fail(m, "expected a table [" + m + "]");
-      std::ostringstream os;
-      os << *n->as_table();
-      sc.method_tables[m] = os.str();
-    }
+/// @brief Keeps the method option tables ([paper], [ida], an external method's [name]) as TOML
+/// text for their methods.
+void keep_method_tables(const toml::table& root, TableReader& top, Scene& sc) {
+  for (auto&& [k, node] : root) {
+    const std::string key(k.str());
+    if (!node.is_table() || std::count(kSceneTables.begin(), kSceneTables.end(), key)) continue;
+    (void)top.raw(key);
+    std::ostringstream os;
+    os << *node.as_table();
+    sc.method_tables[key] = os.str();
   }
 }
 
@@ -500,7 +503,7 @@ Scene read_scene(Scene sc, const std::string& text, const std::vector<std::strin
   read_loads(top, sc);
   read_effects(top, sc);
   read_output(top, sc);
-  keep_method_tables(top, sc);
+  keep_method_tables(root, top, sc);
   top.finish();
   check_whole_scene(sc);
   return sc;
@@ -521,6 +524,16 @@ Scene load_scene_text(const std::string& text, const std::string& label,
   sc.file = label;
   sc.sha256 = sha256_hex(text);
   return read_scene(std::move(sc), text, overrides);
+}
+
+std::string scene_toml(const Scene& scene) {
+  Scene sc;
+  sc.file = scene.file;
+  toml::table root = parse_scene_text(read_scene_file(scene.file, sc), sc);
+  for (const auto& [key, value] : scene.overrides) apply_override(root, sc.file, key + "=" + value);
+  std::ostringstream os;
+  os << root << "\n";
+  return os.str();
 }
 
 }  // namespace beamimpact

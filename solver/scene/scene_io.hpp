@@ -24,4 +24,8 @@ Scene load_scene(const std::filesystem::path& path, const std::vector<std::strin
 Scene load_scene_text(const std::string& text, const std::string& label,
                       const std::vector<std::string>& overrides = {});
 
+/// @brief The scene's file with its --set overrides applied, as TOML text: the scene an external
+/// method reads (it has no --set of its own). Throws SceneError when the file cannot be read.
+std::string scene_toml(const Scene& scene);
+
 }  // namespace beamimpact

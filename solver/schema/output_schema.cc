@@ -44,6 +44,13 @@ std::vector<std::string> history_columns(int n_contacts) {
   return cols;
 }
 
+const nlohmann::json& summary_units() {
+  static const nlohmann::json u = {{"t", "s"},      {"R", "N"},   {"tau", "N"},          {"gap", "m"},
+                                   {"u", "m"},      {"v", "m/s"}, {"energy", "J"},       {"momentum", "N s"},
+                                   {"impulse", "N s"}};
+  return u;
+}
+
 const std::vector<std::string>& summary_keys() {
   static const std::vector<std::string> k = {"scene",
                                              "scene_file",

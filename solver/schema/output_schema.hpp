@@ -50,6 +50,10 @@ std::vector<std::string> history_columns(int n_contacts);
 /// "critical_step", "ida", "exact", "fenicsx", ...).
 const std::vector<std::string>& summary_keys();
 
+/// @brief summary.json's "units" object: the unit of each quantity family (t: s, R: N, u: m,
+/// v: m/s, energy: J, momentum and impulse: N s); every method writes it as given here.
+const nlohmann::json& summary_units();
+
 /// @brief Keys of summary.json's "critical_step" object (methods that step explicitly).
 namespace critical_step_key {
 inline constexpr const char* kMethod = "method";  ///< how omega_max was estimated

@@ -1,4 +1,5 @@
 #include "command_run.hpp"
+#include "methods_option.hpp"
 
 #include <filesystem>
 
@@ -7,14 +8,14 @@
 #include <api/registry.hpp>
 #include <api/run.hpp>
 #include <solver/record/FieldWriter.hpp>
-#include <solver/schema/output_schema.hpp>
 #include <solver/util/Progress.hpp>
 
 namespace beamimpact {
 namespace {
 
 struct RunArgs {
-  std::string scene, out, method = "paper";
+  std::string scene, out, method = "paper", mesh;
+  double dt = 0.0;  // s, 0: the scene's
   std::vector<std::string> sets;
   bool quiet = false;
   bool allow_long = false;
@@ -45,17 +46,10 @@ void simulate(const RunArgs& a) {
   std::vector<std::string> sets = a.sets;
   if (a.allow_long) sets.push_back("time.allow_long_run=true");
   if (a.fields) sets.push_back("output.fields=true");
-  const SimulationResult r = beamimpact::run(a.scene, a.method, RunOptions{sets, a.out});
+  RunOptions o{sets, a.out, std::nullopt, a.mesh};
+  if (a.dt != 0.0) o.dt = a.dt;
+  const SimulationResult r = beamimpact::run(a.scene, a.method, o);
   if (!a.quiet) print_result(r, a.out);
-}
-
-void print_methods() {
-  fmt::print("{:<9} {:<10} {:<8} {:<8} {:<8} {}\n", "method", "kind", "dt", "friction", "rotation",
-             "summary");
-  for (const Method& m : methods())
-    fmt::print("{:<9} {:<10} {:<8} {:<8} {:<8} {}\n", m.name, m.in_process() ? "in-process" : "program",
-               m.accepts.dt ? "yes" : "own", m.accepts.friction ? "yes" : "no",
-               m.accepts.rotation ? "yes" : "no", m.summary);
 }
 
 }  // namespace
@@ -69,20 +63,20 @@ void add_command_run(CLI::App& app) {
   sub->add_option("--method", args->method,
                   "A method of the registry (`beamimpact methods`): " + method_names())
       ->capture_default_str();
+  sub->add_option("--dt", args->dt,
+                  "s, the time step (as --set time.dt=...; refused by a method that picks its own)")
+      ->check(CLI::PositiveNumber);
+  sub->add_option("--mesh", args->mesh,
+                  "Mesh: an element multiplier (1..64) for the beam methods, or an external method's preset");
+  add_methods_option(sub);
   sub->add_option("--set", args->sets, "Override a scene key, e.g. --set time.dt=0.005 (repeatable)");
   sub->add_flag("--quiet", args->quiet, "Print nothing on success (no progress either)");
   sub->add_flag("--allow-long", args->allow_long,
                 "Run even when the cost estimate is far beyond the ordinary (as time.allow_long_run = true)");
-  sub->add_flag("--fields", args->fields,
-                "Also write VTK fields for ParaView: DIR/fields.pvd and DIR/fields/*.vtu (as output.fields = true)");
+  sub->add_flag(
+      "--fields", args->fields,
+      "Also write VTK fields for ParaView: DIR/fields.pvd and DIR/fields/*.vtu (as output.fields = true)");
   sub->callback([args] { simulate(*args); });
-}
-
-void add_command_methods(CLI::App& app) {
-  app.add_subcommand("methods", "List the methods of the registry and what each accepts")
-      ->callback(print_methods);
-  app.add_subcommand("schema", "Print the output schema (history.csv columns, enums, units) as JSON")
-      ->callback([] { fmt::print("{}\n", schema_json().dump(2)); });
 }
 
 }  // namespace beamimpact

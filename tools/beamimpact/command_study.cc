@@ -8,6 +8,8 @@
 #include <verification/study/run_study.hpp>
 #include <beamimpact/version.hpp>
 
+#include "methods_option.hpp"
+
 namespace beamimpact {
 namespace {
 
@@ -41,6 +43,7 @@ void add_command_study(CLI::App& app) {
   c->add_option("STUDY", a->file, "Study file (TOML, verification/studies/)")->required();
   c->add_option("--out", a->out, "Output directory (study.csv, study.json, study.md, timing.*)")->required();
   c->add_flag("--keep-runs", a->keep_runs, "Keep every run's history.csv and summary.json under OUT/runs");
+  add_methods_option(c);
   c->callback([a] { study_command(*a); });
 }
 

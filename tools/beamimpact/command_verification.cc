@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include <api/methods_file.hpp>
 #include <api/registry.hpp>
 #include <beamimpact/version.hpp>
 #include <solver/util/InputError.hpp>
@@ -22,6 +23,7 @@
 #include <verification/study/distributed_jobs.hpp>
 #include <verification/study/task_farm.hpp>
 #include "CommandExit.hpp"
+#include "methods_option.hpp"
 
 namespace beamimpact {
 namespace {
@@ -45,13 +47,16 @@ struct SweepArgs {
   std::string scene;
 };
 
-/// Starts runs with this very program; external methods' scripts resolve against `root`.
-Launcher launcher(const fs::path& root) {
+}  // namespace
+
+Launcher launcher() {
   Launcher l;
-  l.exe = fs::read_symlink("/proc/self/exe");
-  l.root = root;
+  l.exe = program_path();
+  l.methods_files = loaded_methods_files();
   return l;
 }
+
+namespace {
 
 void compare(const CompareArgs& a) {
   const Comparison c = compare_runs(StoredRun::read(a.a), StoredRun::read(a.b), a.options);
@@ -72,7 +77,7 @@ void verify(const VerifyArgs& a) {
   o.executor = study::distributed_jobs;
   o.quiet = study::World::rank() != 0;
   if (study::World::size() > 1) o.executor_note = fmt::format(", {} MPI ranks", study::World::size());
-  const auto result = verification::verify(o, fs::read_symlink("/proc/self/exe"));
+  const auto result = verification::verify(o, program_path());
   if (!result) return;  // an MPI worker rank: rank 0 evaluates and writes the reports
   const fs::path out = a.out;
   write_verify_reports(out, *result);
@@ -97,7 +102,7 @@ void sweep(SweepArgs& a) {
   a.o.out = a.out;
   forward_interruptions();
   a.o.executor = study::distributed_jobs;
-  const auto ran = execute_sweep(a.o, launcher(find_source_root(a.scene)));
+  const auto ran = execute_sweep(a.o, launcher());
   if (!ran) return;  // an MPI worker rank: rank 0 compares and writes the outputs
   const SweepResult& r = *ran;
   std::string dts, meshes;
@@ -158,6 +163,7 @@ void add_verification_commands(CLI::App& app) {
   c->add_option("--merge", ca->options.merge_gap,
                 "s, contact samples closer than this are one impact (default 3.5 coarser output steps)")
       ->check(positive_time);
+  add_methods_option(c);
   c->callback([ca] { compare(*ca); });
 
   auto va = std::make_shared<VerifyArgs>();
@@ -171,6 +177,7 @@ void add_verification_commands(CLI::App& app) {
       ->capture_default_str();
   v->add_option("--jobs", va->jobs, "Runs in parallel")->capture_default_str();
   v->add_option("--only", va->only, "Only cases whose name contains this text (e.g. s1_central)");
+  add_methods_option(v);
   v->callback([va] { verify(*va); });
 
   auto sa = std::make_shared<SweepArgs>();
@@ -190,6 +197,7 @@ void add_verification_commands(CLI::App& app) {
       ->capture_default_str();
   s->add_option("--out", sa->out, "Output directory (runs/, sweep.md, sweep.csv, sweep.json)")->required();
   s->add_option("--jobs", sa->o.jobs, "Runs in parallel")->capture_default_str();
+  add_methods_option(s);
   s->callback([sa] { sweep(*sa); });
 }
 

@@ -76,16 +76,15 @@ TEST_F(Commands, VerifyNamesCasesBySceneMethodAndDt) {
 }
 
 // A method of the registry that cannot run here is "skipped: <why>": it fails the gate when
-// required, not otherwise. Here FEniCSx's script is missing under the matrix's root.
+// required, not otherwise. Here an external method whose check command fails.
 TEST_F(Commands, SkippedRunFailsOnlyWhenRequired) {
-  const fs::path root = tmp_ / "root";
-  fs::create_directories(root / "verification/scenes/paper");
-  fs::copy_file(src_ / "verification/scenes/paper/s1_central.toml",
-                root / "verification/scenes/paper/s1_central.toml");
+  const fs::path methods = tmp_ / "absent.toml";
+  std::ofstream(methods) << "[[method]]\nname = \"absent\"\ncommand = [\"/bin/sh\", \"{scene}\", \"{out}\"]\n"
+                            "check = [\"/bin/false\"]\n";
   const std::string body = R"(
 [[case]]
 scene = "s1"
-method = "fenicsx"
+method = "absent"
 required = %s
 reference = { method = "paper" }
 gates = [{ metric = "impulse", tol = 0.01, why = "a method whose program is missing" }]
@@ -93,16 +92,12 @@ gates = [{ metric = "impulse", tol = 0.01, why = "a method whose program is miss
   for (const bool required : {false, true}) {
     std::string b = body;
     b.replace(b.find("%s"), 2, required ? "true" : "false");
-    const fs::path m = tmp_ / "m_root.toml";
-    std::ofstream(m)
-        << fmt::format(
-               "[settings]\nroot = \"{}\"\n[scenes]\ns1 = \"verification/scenes/paper/s1_central.toml\"\n",
-               root.string())
-        << b;
-    const Result r = run(fmt::format("verify '{}' --out '{}'", m.string(), (tmp_ / "v").string()));
+    const fs::path m = matrix(b);
+    const Result r = run(fmt::format("verify '{}' --methods '{}' --out '{}'", m.string(), methods.string(),
+                                     (tmp_ / "v").string()));
     EXPECT_EQ(r.code, required ? 1 : 0) << r.out;
     const std::string junit = read(tmp_ / "v" / "junit.xml");
-    EXPECT_NE(junit.find("references/fenicsx/run.py not found"), std::string::npos) << junit;
+    EXPECT_NE(junit.find("its check &apos;/bin/false&apos; exited 1"), std::string::npos) << junit;
     EXPECT_NE(junit.find(required ? "<failure" : "<skipped"), std::string::npos) << junit;
   }
 }

@@ -8,11 +8,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include <api/registry.hpp>
 #include <beamimpact/version.hpp>
 #include <solver/util/InputError.hpp>
 #include <verification/study/task_farm.hpp>
 
 #include "CommandExit.hpp"
+#include "command_methods.hpp"
+#include "command_protocol.hpp"
 #include "command_run.hpp"
 #include "command_study.hpp"
 #include "command_verification.hpp"
@@ -33,11 +36,13 @@ int main(int argc, char** argv) {
   CLI::App app{"beamimpact: dynamic beam-to-beam collision (Pu & Chi 2011) with independent references"};
   app.set_version_flag("--version", kVersion);
   app.require_subcommand(1);
-  add_command_run(app);
-  add_command_methods(app);        // methods, schema
-  add_verification_commands(app);  // compare, verify, sweep
-  add_command_study(app);
   try {
+    (void)methods();  // the built-in ones and the default methods files, for the help texts
+    add_command_run(app);
+    add_command_methods(app);        // methods, schema
+    add_verification_commands(app);  // compare, verify, sweep
+    add_command_study(app);
+    add_protocol_commands(app);  // conform, score
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = study::World::rank() == 0 ? app.exit(e) : e.get_exit_code();

@@ -112,8 +112,7 @@ class Loader {
     JobSpec s;
     s.scene = scene;
     s.method = r.string("method", "a method name: " + method_names());
-    const Method* m = find_method(s.method);
-    if (!m) r.fail("method", "expected a method name (" + method_names() + "), got '" + s.method + "'");
+    if (!find_method(s.method)) r.fail("method", "expected a method name (" + method_names() + "), got '" + s.method + "'");
     if (with_dt && r.has("dt")) {
       s.dt = r.number("dt", "a positive time step (s)");
       if (!(*s.dt > 0.0)) r.fail("dt", "expected a positive time step (s)");
@@ -128,9 +127,6 @@ class Loader {
     }
     s.set = r.strings("set");
     s.args = r.strings("args");
-    if ((s.dt && !m->accepts.dt) || (!s.set.empty() && !m->accepts.overrides))
-      r.fail(s.dt ? "dt" : "set", "the method '" + s.method + "' takes no " + (s.dt ? "dt" : "set") +
-                                      "; use its own options in args = [...]");
     return s;
   }
 

@@ -67,7 +67,7 @@ struct RunCheck {
 /// @brief The whole matrix file.
 struct VerificationMatrix {
   std::filesystem::path file;
-  std::filesystem::path root;  ///< repository root: scene paths and the FEniCSx script are relative to it
+  std::filesystem::path root;  ///< repository root: scene paths are relative to it
   double timeout = 900.0;      ///< s, per run
   std::vector<Case> cases;
   std::vector<Convergence> convergence;

@@ -38,8 +38,10 @@ bool runs_ok(ItemResult& r, const std::vector<const JobSpec*>& specs, const std:
       return false;
     }
     if (it->second.status != JobOutcome::Status::kOk) {
-      const bool skipped = it->second.status == JobOutcome::Status::kSkipped;
-      not_evaluated(r, gates, s->label() + (skipped ? ": " : " failed: ") + it->second.message, skipped);
+      const auto st = it->second.status;
+      const bool skipped = st == JobOutcome::Status::kSkipped || st == JobOutcome::Status::kNotApplicable;
+      const char* how = st == JobOutcome::Status::kNotApplicable ? " not applicable: " : skipped ? ": " : " failed: ";
+      not_evaluated(r, gates, s->label() + how + it->second.message, skipped);
       return false;
     }
   }

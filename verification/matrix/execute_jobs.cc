@@ -10,7 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include <api/registry.hpp>
-#include <verification/matrix/child_process.hpp>
+#include <api/child_process.hpp>
+#include <api/external_method.hpp>
 #include <verification/matrix/interruption.hpp>
 
 namespace beamimpact::verification {
@@ -38,8 +39,14 @@ JobOutcome execute_job(const JobSpec& spec, const std::filesystem::path& dir, co
     for (const auto& a : argv) log << a << ' ';
     log << '\n';
   }
-  const ProcessResult p = spawn_and_wait(argv, dir / "run.log", timeout);
+  const ProcessResult p = spawn_and_wait(argv, dir / "run.log", timeout, interruption);
   o.process_seconds = p.wall_seconds;
+  if (p.error.empty() && p.exit_code == 2) {  // refused: "error: <file>: <why>" is its last line
+    o.status = JobOutcome::Status::kNotApplicable;
+    o.message = last_line(dir / "run.log");
+    if (o.message.rfind("error: ", 0) == 0) o.message.erase(0, 7);
+    return o;
+  }
   if (!p.error.empty() || p.exit_code != 0) {
     o.message = !p.error.empty()
                     ? p.error
@@ -93,6 +100,7 @@ const char* status_name(JobOutcome::Status s) {
     case JobOutcome::Status::kOk: return "ok";
     case JobOutcome::Status::kFailed: return "failed";
     case JobOutcome::Status::kSkipped: return "skipped";
+    case JobOutcome::Status::kNotApplicable: return "not applicable";
   }
   return "?";
 }
@@ -101,7 +109,7 @@ std::map<std::string, JobOutcome> execute_jobs(const std::vector<JobSpec>& specs
                                                const std::filesystem::path& out_dir, const Launcher& launcher,
                                                int jobs, double timeout_seconds) {
   const std::vector<JobSpec> order = schedule_order(specs);
-  // Availability is checked up front, in this thread (the FEniCSx check starts Python once).
+  // Availability is checked up front, in this thread (an external method's check runs once).
   std::vector<std::string> why;
   for (const auto& s : order) why.push_back(launcher.unavailable(s));
   std::map<std::string, JobOutcome> out;

@@ -18,8 +18,10 @@ namespace beamimpact::verification {
 
 /// @brief How one run ended.
 struct JobOutcome {
-  /// @brief ok: complete run; failed: non-zero exit, time-out or no summary.json; skipped: tool missing.
-  enum class Status { kOk, kFailed, kSkipped };
+  /// @brief ok: complete run; failed: non-zero exit other than 2, time-out or no summary.json;
+  /// skipped: tool missing; not applicable: exit 2 on a scene the suite checked, the method's
+  /// refusal (it does not model friction, ...) with its one line of reason.
+  enum class Status { kOk, kFailed, kSkipped, kNotApplicable };
   JobSpec spec;
   std::filesystem::path dir;  ///< where history.csv and summary.json are (and run.log)
   Status status = Status::kFailed;
@@ -36,7 +38,7 @@ struct JobOutcome {
 /// @brief The outcome's run: JobOutcome::run, or read from its directory when the outcome has none.
 std::shared_ptr<const StoredRun> stored_run(const JobOutcome& o);
 
-/// @brief Name of a status: "ok", "failed", "skipped".
+/// @brief Name of a status: "ok", "failed", "skipped", "not applicable".
 const char* status_name(JobOutcome::Status s);
 
 /// @brief Runs every spec (keys must be unique) into out_dir/<key>/ with `jobs` workers; a run

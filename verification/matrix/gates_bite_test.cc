@@ -44,7 +44,6 @@ class GatesBite : public ::testing::Test {
   void SetUp() override {
     matrix_ = VerificationMatrix::load(fs::path(BEAMIMPACT_SOURCE) / "verification" / "matrix.toml");
     launcher_.exe = BEAMIMPACT_EXE;
-    launcher_.root = matrix_.root;
     tmp_ = fs::temp_directory_path() / fmt::format("beamimpact_gates_bite_{}", ::getpid());
     fs::remove_all(tmp_);
   }

@@ -10,7 +10,6 @@
 #include <verification/matrix/Table.hpp>
 
 namespace beamimpact::verification {
-namespace {
 
 std::string xml_escape(const std::string& s) {
   std::string o;
@@ -30,6 +29,8 @@ std::string xml_escape(const std::string& s) {
   }
   return o;
 }
+
+namespace {
 
 std::string md_escape(std::string s) {
   std::string o;

@@ -46,4 +46,7 @@ nlohmann::json norms_json(const ReportContext& ctx, const std::vector<ItemResult
 void write_markdown(const std::filesystem::path& file, const ReportContext& ctx,
                     const std::vector<ItemResult>& items);
 
+/// @brief Text made safe for XML and HTML (& < > " ' escaped, control characters blanked).
+std::string xml_escape(const std::string& s);
+
 }  // namespace beamimpact::verification

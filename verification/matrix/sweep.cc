@@ -49,10 +49,8 @@ std::optional<SweepResult> execute_sweep(const SweepOptions& o, const Launcher& 
   for (double v : steps)
     for (const auto& m : meshes) {
       JobSpec s{o.scene, o.method, std::nullopt, m, {}, {}};
-      if (by_fraction)
+      if (by_fraction)  // a method that picks its own step refuses both: not applicable
         s.set.push_back(fmt::format("time.fraction={:g}", v));
-      else if (!method.accepts.dt)
-        s.args = {method.output_step_option, fmt::format("{:g}", v)};  // it picks its own step
       else
         s.dt = v;
       specs.push_back(s);

@@ -1,5 +1,7 @@
 #include <verification/matrix/verify.hpp>
 
+#include <api/methods_file.hpp>
+
 #include <chrono>
 #include <set>
 
@@ -63,7 +65,7 @@ std::optional<VerifyResult> verify(const VerifyOptions& o, const std::filesystem
   const Selection s = select(m, o);
   Launcher launcher;
   launcher.exe = exe;
-  launcher.root = m.root;
+  launcher.methods_files = loaded_methods_files();  // each run sees the same registry
   std::filesystem::create_directories(o.out);
   if (!o.quiet)
     fmt::print(stderr,

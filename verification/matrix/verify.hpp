@@ -39,8 +39,7 @@ struct VerifyResult {
 /// @brief Checks the options (InputError naming the option), loads the matrix, runs the selected
 /// items' runs into out/runs/ and evaluates them. Returns nullopt on an MPI rank other than 0
 /// (see JobExecutor). An interruption (interruption()) leaves a result marked incomplete.
-/// @param exe the beamimpact executable the runs start (external methods' paths resolve against
-/// the matrix's root)
+/// @param exe the beamimpact executable the runs start (with --methods for each methods file read)
 std::optional<VerifyResult> verify(const VerifyOptions& o, const std::filesystem::path& exe);
 
 /// @brief Writes out/junit.xml, out/norms.json and out/report.md of a result.

@@ -172,11 +172,6 @@ Study Study::load(const fs::path& file_in) {
         r.fail("parameter", "two parameters named '" + s.parameters.back().name + "'");
   }
   r.finish();
-  for (const auto& m : s.methods)
-    if (!method(m, file, "methods").in_process())
-      r.fail("methods", "'" + m + "' is an external program; a study runs in-process methods only (" + method_names() + "); run it with `beamimpact verify`");
-  if (!method(s.reference.method, file, "reference.method").in_process())
-    r.fail("reference.method", "'" + s.reference.method + "' is an external program; a study needs an in-process reference");
   // Every override must apply to the scene: check the first point now, before any run.
   try {
     std::vector<std::string> first = overrides(s, design_points(s).front());

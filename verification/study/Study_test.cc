@@ -124,8 +124,6 @@ TEST(Study, BadInputNamesTheFileAndTheKey) {
                 .find("bodies.Z.area"),
             std::string::npos);
   EXPECT_NE(message("badnorm", kMethods + "norms = [\"nonorm\"]\n" + mu).find("nonorm"), std::string::npos);
-  EXPECT_NE(message("external", "methods = [\"fenicsx\"]\nreference = { method = \"ida\" }\n" + mu).find("methods"),
-            std::string::npos);
 }
 
 }  // namespace

@@ -1,5 +1,4 @@
-#include <verification/matrix/child_process.hpp>
-#include <verification/matrix/interruption.hpp>
+#include <api/child_process.hpp>
 
 #include <fcntl.h>
 #include <signal.h>
@@ -12,10 +11,11 @@
 
 extern char** environ;
 
-namespace beamimpact::verification {
+namespace beamimpact {
 
 ProcessResult spawn_and_wait(const std::vector<std::string>& argv, const std::filesystem::path& log,
-                             double timeout_seconds) {
+                             double timeout_seconds, const std::function<int()>& interrupted,
+                             bool own_group) {
   ProcessResult r;
   const auto start = std::chrono::steady_clock::now();
   std::vector<char*> cargv;
@@ -30,13 +30,16 @@ ProcessResult spawn_and_wait(const std::vector<std::string>& argv, const std::fi
   posix_spawnattr_t attr;
   posix_spawnattr_init(&attr);
   // Own process group, so that a time-out also ends the children (mpirun, python workers).
-  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
-  posix_spawnattr_setpgroup(&attr, 0);
+  if (own_group) {
+    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
+    posix_spawnattr_setpgroup(&attr, 0);
+  }
   // A run started from a rank of an MPI job must not think it is one of its ranks (a FEniCSx run
   // would join the job): the launcher's variables are left out, so it runs as its own job.
   std::vector<char*> env;
   for (char** e = environ; *e; ++e)
-    if (std::strncmp(*e, "OMPI_", 5) != 0 && std::strncmp(*e, "PMIX_", 5) != 0 && std::strncmp(*e, "PMI_", 4) != 0)
+    if (std::strncmp(*e, "OMPI_", 5) != 0 && std::strncmp(*e, "PMIX_", 5) != 0 &&
+        std::strncmp(*e, "PMI_", 4) != 0)
       env.push_back(*e);
   env.push_back(nullptr);
   pid_t pid = 0;
@@ -56,18 +59,19 @@ ProcessResult spawn_and_wait(const std::vector<std::string>& argv, const std::fi
       return r;
     }
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (interruption() != 0) {  // forward: SIGTERM to the run's group, SIGKILL if still there after 2 s
-      kill(-pid, SIGTERM);
+    const int sig = interrupted ? interrupted() : 0;
+    if (sig != 0) {  // forward: SIGTERM to the run's group, SIGKILL if still there after 2 s
+      kill(own_group ? -pid : pid, SIGTERM);
       for (int i = 0; i < 100 && waitpid(pid, &status, WNOHANG) == 0; ++i)
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
-      kill(-pid, SIGKILL);  // the group's other members (mpirun's, python's children) too
+      kill(own_group ? -pid : pid, SIGKILL);  // the group's other members (mpirun's, python's children) too
       if (waitpid(pid, &status, WNOHANG) == 0) waitpid(pid, &status, 0);
       r.timed_out = true;
-      r.error = "interrupted (signal " + std::to_string(interruption()) + ")";
+      r.error = "interrupted (signal " + std::to_string(sig) + ")";
       break;
     }
     if (elapsed > timeout_seconds) {
-      kill(-pid, SIGKILL);  // the whole group of this one run, by its id
+      kill(own_group ? -pid : pid, SIGKILL);  // the whole group of this one run, by its id
       waitpid(pid, &status, 0);
       r.timed_out = true;
       r.error = "killed after the time limit of " + std::to_string(static_cast<long>(timeout_seconds)) + " s";
@@ -85,4 +89,4 @@ ProcessResult spawn_and_wait(const std::vector<std::string>& argv, const std::fi
   return r;
 }
 
-}  // namespace beamimpact::verification
+}  // namespace beamimpact

@@ -1,0 +1,77 @@
+#include <api/accepts.hpp>
+
+#include <cstdlib>
+
+#include <fmt/format.h>
+
+#include <solver/scene/SceneError.hpp>
+
+namespace beamimpact {
+namespace {
+
+/// Refuses with the method's name and where its capabilities were declared.
+[[noreturn]] void refuse(const Method& m, const Scene& scene, const std::string& key, const std::string& what,
+                         const std::string& flag) {
+  throw SceneError(scene.file, key,
+                   fmt::format("not applicable: method '{}' does not take {} (accepts.{} = false, {})",
+                               m.name, what, flag, m.origin));
+}
+
+void check_tables(const Scene& scene) {
+  for (const auto& [table, text] : scene.method_tables) {
+    bool known = false;
+    std::string tables;
+    for (const Method& m : methods()) {
+      known = known || m.options_table == table;
+      if (!m.options_table.empty()) tables += (tables.empty() ? "" : ", ") + m.options_table;
+    }
+    if (!known)
+      throw SceneError(scene.file, table,
+                       "unknown table [" + table + "]; expected a scene table or a method's options table (" +
+                           tables + ")");
+  }
+}
+
+}  // namespace
+
+int mesh_factor(const std::string& mesh, const std::string& file, const std::string& method) {
+  char* end = nullptr;
+  const long f = std::strtol(mesh.c_str(), &end, 10);
+  if (end == mesh.c_str() || *end != '\0' || f < 1 || f > 64)
+    throw SceneError(file, "mesh",
+                     "expected an element multiplier 1..64 for method '" + method + "', got '" + mesh + "'");
+  return static_cast<int>(f);
+}
+
+void check_accepts(const Method& m, const Scene& scene, const std::string& mesh) {
+  check_tables(scene);
+  const Method::Accepts& a = m.accepts;
+  for (const char* key : {"time.dt", "time.fraction"})
+    if (!a.dt && scene.overrides.count(key)) refuse(m, scene, key, "a time step (it picks its own)", "dt");
+  if (!mesh.empty()) {
+    if (a.mesh_factor)
+      (void)mesh_factor(mesh, scene.file, m.name);
+    else if (m.in_process())
+      refuse(m, scene, "mesh", "a mesh", "mesh_factor");
+    else if (!std::any_of(m.command.begin(), m.command.end(),
+                          [](const std::string& x) { return x.find("{mesh}") != std::string::npos; }))
+      refuse(m, scene, "mesh", "a mesh (its command has no {mesh})", "mesh_factor");
+  }
+  for (std::size_t i = 0; i < scene.contacts.size(); ++i) {
+    const Contact& c = scene.contacts[i];
+    const std::string key = "contacts[" + std::to_string(i) + "]";
+    if (!a.friction && c.friction > 0.0 && scene.effects.friction.value_or(true))
+      refuse(m, scene, key + ".friction", "friction (it does not model friction)", "friction");
+    if (!a.search && c.search) refuse(m, scene, key + ".node", "a contact search (node = \"all\")", "search");
+  }
+  if (!a.several_contacts && scene.contacts.size() > 1)
+    refuse(m, scene, "contacts", fmt::format("{} contacts (one only)", scene.contacts.size()),
+           "several_contacts");
+  if (!a.rotation && scene.model.kinematics == Kinematics::kCorotational)
+    refuse(m, scene, "model.kinematics", "large rotation (corotational kinematics)", "rotation");
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+    if (!a.rigid && scene.bodies[i].rigid)
+      refuse(m, scene, "bodies[" + std::to_string(i) + "].rigid", "rigid bodies", "rigid");
+}
+
+}  // namespace beamimpact

@@ -1,0 +1,62 @@
+#pragma once
+/// @file scorecard.hpp
+/// @brief A method's scorecard on the benchmark set (docs/protocol.md): the paper's scenes, the
+/// hard scenes and every scene with an exact answer, each run compared with the best reference
+/// (exact where the matrix has one, else IDA) under the matrix's own tolerances.
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <verification/matrix/VerificationMatrix.hpp>
+#include <verification/matrix/evaluate.hpp>
+
+namespace beamimpact::verification {
+
+/// @brief One benchmark scene: the method's run, its reference and the quantities compared.
+struct ScoreItem {
+  JobSpec run, reference;
+  std::string reference_kind;  ///< "exact" or "ida"
+  std::vector<Gate> gates;     ///< the matrix case's gates (tol and why); none: errors reported only
+  std::string source;          ///< the matrix case the reference and tolerances come from ("" none)
+};
+
+/// @brief The benchmark set for `method`: every scene of verification/scenes/paper and hard, and
+/// every scene the matrix compares with the exact method; for each, the matrix case giving the
+/// best reference (exact before IDA) and its tolerances, preferring a case of the method itself,
+/// then one of the paper integrator (whose run settings are taken only for the method itself).
+std::vector<ScoreItem> score_items(const VerificationMatrix& matrix, const std::string& method,
+                                   const std::filesystem::path& data_root);
+
+/// @brief One quantity of a scored scene.
+struct ScoreQuantity {
+  std::string metric;
+  std::optional<double> error, tol;
+  std::string status;  ///< "pass" | "fail" | "not applicable" | "failed" | "skipped" | "no tolerance"
+  std::string note;    ///< the tolerance's reason, or why there is no value
+};
+
+/// @brief A scored scene.
+struct ScoreRow {
+  const ScoreItem* item = nullptr;
+  JobOutcome outcome;  ///< the method's run
+  std::vector<ScoreQuantity> quantities;
+};
+
+/// @brief Compares each finished run with its reference (compare_runs, check_gate).
+std::vector<ScoreRow> score_rows(const std::vector<ScoreItem>& items,
+                                 const std::map<std::string, JobOutcome>& runs);
+
+/// @brief What the scorecard says about how it was made.
+struct ScoreContext {
+  std::string method, origin, command, version, made;
+  double wall_seconds = 0.0;
+};
+
+/// @brief Writes dir/scorecard.json and the self-contained dir/scorecard.html.
+void write_scorecard(const std::filesystem::path& dir, const ScoreContext& ctx,
+                     const std::vector<ScoreRow>& rows);
+
+}  // namespace beamimpact::verification

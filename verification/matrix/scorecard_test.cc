@@ -1,0 +1,51 @@
+// The scorecard's choice of reference and tolerances, read from the shipped matrix: exact where
+// the matrix compares a scene with it, else IDA; the method's own case first, then the paper's.
+#include <verification/matrix/scorecard.hpp>
+
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+namespace beamimpact::verification {
+namespace {
+
+namespace fs = std::filesystem;
+
+const ScoreItem& item(const std::vector<ScoreItem>& items, const std::string& scene) {
+  for (const auto& i : items)
+    if (i.run.scene_name() == scene) return i;
+  throw std::runtime_error("no scored scene " + scene);
+}
+
+TEST(Scorecard, PicksTheBestReferenceAndTheMatrixTolerances) {
+  const fs::path root = BEAMIMPACT_SOURCE;
+  const VerificationMatrix m = VerificationMatrix::load(root / "verification/matrix.toml");
+  const auto fenicsx = score_items(m, "fenicsx", root);
+  // Every paper and hard scene, and the extra scenes with an exact answer (rigid rod, offset gap).
+  std::size_t shipped = 0;
+  for (const char* folder : {"paper", "hard"})
+    for (const auto& e : fs::directory_iterator(root / "verification/scenes" / folder))
+      shipped += e.path().extension() == ".toml";
+  EXPECT_EQ(fenicsx.size(), shipped + 2);
+  // S1 has an exact solution and a FEniCSx case of its own: its mesh preset and its gates.
+  const ScoreItem& s1 = item(fenicsx, "s1_central");
+  EXPECT_EQ(s1.reference_kind, "exact");
+  EXPECT_EQ(s1.run.mesh, "coarse");
+  EXPECT_FALSE(s1.gates.empty());
+  // S4-45 has no exact solution: IDA, with the paper integrator's tolerances and no settings of its.
+  const auto standin = score_items(m, "standin", root);
+  const ScoreItem& s4 = item(standin, "s4_oblique_45");
+  EXPECT_EQ(s4.reference_kind, "ida");
+  EXPECT_EQ(s4.run.method, "standin");
+  EXPECT_FALSE(s4.run.dt);
+  EXPECT_FALSE(s4.gates.empty());
+  // A hard scene the matrix has no case for: IDA at the scene's settings, errors without a verdict.
+  const ScoreItem& grazing = item(standin, "grazing_1deg");
+  EXPECT_EQ(grazing.reference.method, "ida");
+  EXPECT_TRUE(grazing.gates.empty());
+  EXPECT_TRUE(grazing.source.empty());
+  EXPECT_EQ(item(standin, "rigid_rod_oblique").reference_kind, "exact");
+}
+
+}  // namespace
+}  // namespace beamimpact::verification

@@ -18,7 +18,7 @@ namespace {
 
 /// The scene's own tables; every other top-level table is a method's options (checked against
 /// the registry when a method runs: api/accepts.hpp).
-const std::vector<std::string> kSceneTables = {"time", "model", "effects", "output"};
+const std::vector<std::string> kSceneTables = {"time", "model", "loads", "effects", "output"};
 
 // ---- --set overrides --------------------------------------------------------------------
 

@@ -91,7 +91,6 @@ TEST(NegativeControl, DisplacementOnlyContactFailsTheBouncingBar) {
   ASSERT_NE(row, nullptr) << "matrix.toml has no bouncing_bar paper-vs-exact row";
   Launcher launcher;
   launcher.exe = BEAMIMPACT_EXE;
-  launcher.root = matrix.root;
   const fs::path tmp = fs::temp_directory_path() / fmt::format("beamimpact_negative_control_{}", ::getpid());
   fs::remove_all(tmp);
   auto runs = execute_jobs({row->run, row->reference}, tmp / "runs", launcher, 2, 600.0);

@@ -16,6 +16,7 @@
 #include "CommandExit.hpp"
 #include "command_methods.hpp"
 #include "command_protocol.hpp"
+#include "command_model.hpp"
 #include "command_run.hpp"
 #include "command_study.hpp"
 #include "command_verification.hpp"
@@ -43,6 +44,7 @@ int main(int argc, char** argv) {
     add_verification_commands(app);  // compare, verify, sweep
     add_command_study(app);
     add_protocol_commands(app);  // conform, score
+    add_command_model(app);
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = study::World::rank() == 0 ? app.exit(e) : e.get_exit_code();

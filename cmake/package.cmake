@@ -25,6 +25,11 @@ install(FILES ${PROJECT_SOURCE_DIR}/verification/matrix.toml ${PROJECT_SOURCE_DI
   DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/verification)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/references/fenicsx DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/references
   FILES_MATCHING PATTERN "*.py" PATTERN "tests" EXCLUDE PATTERN "__pycache__" EXCLUDE)
+# The Siconos adapter and the minimal outside solver (Python, run on `beamimpact model`'s export).
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/references/siconos DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/references
+  FILES_MATCHING PATTERN "*.py" PATTERN "tests" EXCLUDE PATTERN "__pycache__" EXCLUDE)
+install(FILES ${PROJECT_SOURCE_DIR}/examples/external_solver/penalty_central.py
+  DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/examples/external_solver)
 
 set(_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/beamimpact)
 install(EXPORT beamimpactTargets NAMESPACE beamimpact:: DESTINATION ${_cmake_dir})

@@ -20,7 +20,7 @@ sys.path.insert(0, HERE)
 
 from exported_model import Refused, load  # noqa: E402
 from output import Recorder, remove_stale, write_run  # noqa: E402
-from stepping import Options, simulate  # noqa: E402
+from stepping import Options, Simulation  # noqa: E402
 
 METHOD = "siconos"
 
@@ -90,14 +90,15 @@ def main(argv):
         opts = Options(theta=args.theta, restitution=args.restitution)
         remove_stale(args.out)
         model = load(args.beamimpact, args.scene, args.dt or None, args.mesh or None, args.set)
+        dt = model.doc["time"]["dt"]
+        steps = int(round(model.doc["time"]["end"] / dt))
+        start, cpu = time.perf_counter(), time.process_time()
+        simulation = Simulation(model, opts, steps, dt)
     except (Refused, ValueError) as e:
         return refuse(str(e))
-    dt = model.doc["time"]["dt"]
-    steps = int(round(model.doc["time"]["end"] / dt))
-    start, cpu = time.perf_counter(), time.process_time()
     try:
         rec = Recorder(model, dt, model.doc["time"]["output_every"])
-        for t, u, v, R, tau in simulate(model, opts, steps, dt):
+        for t, u, v, R, tau in simulation.run():
             rec.add(t, u, v, R, tau, last=R is None)
         rec.v_final = v
         summary = summary_of(model, opts, rec, steps, dt, time.perf_counter() - start, version)

@@ -42,6 +42,8 @@ def _interaction(sk, model, k, friction, opts, systems):
     rows = model.rows[k]
     H = np.vstack([rows["normal"], rows["tangent"]]) if friction else rows["normal"][None, :]
     touched = [s for s in systems if np.any(H[:, s[1]] != 0.0)]
+    if not touched:
+        raise ValueError(f"contacts[{k}]: expected a striker or target that can move (both are immovable)")
     Hs = np.hstack([H[:, eqs] for _, eqs, _ in touched])
     b = np.zeros(H.shape[0])
     b[0] = model.contacts[k]["g0"]
@@ -52,46 +54,52 @@ def _interaction(sk, model, k, friction, opts, systems):
     return sk.Interaction(law, sk.LagrangianLinearTIR(Hs, b)), [ds for _, _, ds in touched]
 
 
-def simulate(model, opts, steps, dt):
-    """Steps the model's initial state steps times by dt. Yields, for k = 0 .. steps,
-    (t_k, u_k, v_k, R, tau): R and tau lists (one per contact) of the mean forces over
-    [t_k, t_k + dt] (N), None at k = steps. u_k and v_k are reused buffers: copy to keep them."""
-    import siconos.kernel as sk
-    import siconos.numerics as sn
+class Simulation:
+    """The Siconos model of an exported model, built on construction (ValueError for a contact
+    it cannot link); steps() runs it."""
 
-    friction = "friction" in model.doc["effects"]
-    nsds = sk.NonSmoothDynamicalSystem(0.0, steps * dt)
-    systems = []
-    for b, eqs in _bodies(model):
-        sub = np.ix_(eqs, eqs)
-        ds = sk.LagrangianLinearTIDS(model.u0[eqs], model.v0[eqs], model.M[sub].toarray(),
-                                     model.K[sub].toarray(), model.C[sub].toarray())
-        if np.any(model.F[eqs] != 0.0):
-            ds.setFExtPtr(model.F[eqs].copy())
-        nsds.insertDynamicalSystem(ds)
-        systems.append((b, eqs, ds))
-    interactions = []
-    for k in range(len(model.contacts)):
-        inter, linked = _interaction(sk, model, k, friction, opts, systems)
-        nsds.link(inter, *linked)
-        interactions.append(inter)
-    problem = sk.FrictionContact(2) if friction else sk.LCP()
-    so = problem.numericsSolverOptions()
-    so.dparam[sn.SICONOS_DPARAM_TOL] = opts.tolerance
-    so.iparam[sn.SICONOS_IPARAM_MAX_ITER] = opts.max_iterations
-    sim = sk.TimeStepping(nsds, sk.TimeDiscretisation(0.0, dt), sk.MoreauJeanOSI(opts.theta), problem)
+    def __init__(self, model, opts, steps, dt):
+        import siconos.kernel as sk
+        import siconos.numerics as sn
 
-    u, v = model.u0.copy(), model.v0.copy()
-    for k in range(steps):
-        u_k, v_k = u.copy(), v.copy()
-        sim.computeOneStep()
-        R, tau = [], []
-        for inter in interactions:  # lambda(1): the impulse over the step (N s)
-            lam = inter.lambda_(1)
-            R.append(float(lam[0]) / dt)
-            tau.append(float(lam[1]) / dt if friction else 0.0)
-        for _, eqs, ds in systems:
-            u[eqs], v[eqs] = ds.q(), ds.velocity()
-        sim.nextStep()
-        yield k * dt, u_k, v_k, R, tau
-    yield steps * dt, u, v, None, None
+        self.model, self.steps, self.dt = model, steps, dt
+        self.friction = "friction" in model.doc["effects"]
+        self.nsds = sk.NonSmoothDynamicalSystem(0.0, steps * dt)
+        self.systems = []
+        for b, eqs in _bodies(model):
+            sub = np.ix_(eqs, eqs)
+            ds = sk.LagrangianLinearTIDS(model.u0[eqs], model.v0[eqs], model.M[sub].toarray(),
+                                         model.K[sub].toarray(), model.C[sub].toarray())
+            if np.any(model.F[eqs] != 0.0):
+                ds.setFExtPtr(model.F[eqs].copy())
+            self.nsds.insertDynamicalSystem(ds)
+            self.systems.append((b, eqs, ds))
+        self.interactions = []
+        for k in range(len(model.contacts)):
+            inter, linked = _interaction(sk, model, k, self.friction, opts, self.systems)
+            self.nsds.link(inter, *linked)
+            self.interactions.append(inter)
+        problem = sk.FrictionContact(2) if self.friction else sk.LCP()
+        so = problem.numericsSolverOptions()
+        so.dparam[sn.SICONOS_DPARAM_TOL] = opts.tolerance
+        so.iparam[sn.SICONOS_IPARAM_MAX_ITER] = opts.max_iterations
+        self.sim = sk.TimeStepping(self.nsds, sk.TimeDiscretisation(0.0, dt), sk.MoreauJeanOSI(opts.theta),
+                                   problem)
+
+    def run(self):
+        """Yields, for k = 0 .. steps, (t_k, u_k, v_k, R, tau): R and tau lists (one per contact)
+        of the mean forces over [t_k, t_k + dt] (N), None at k = steps."""
+        u, v = self.model.u0.copy(), self.model.v0.copy()
+        for k in range(self.steps):
+            u_k, v_k = u.copy(), v.copy()
+            self.sim.computeOneStep()
+            R, tau = [], []
+            for inter in self.interactions:  # lambda(1): the impulse over the step (N s)
+                lam = inter.lambda_(1)
+                R.append(float(lam[0]) / self.dt)
+                tau.append(float(lam[1]) / self.dt if self.friction else 0.0)
+            for _, eqs, ds in self.systems:
+                u[eqs], v[eqs] = ds.q(), ds.velocity()
+            self.sim.nextStep()
+            yield k * self.dt, u_k, v_k, R, tau
+        yield self.steps * self.dt, u, v, None, None

@@ -32,12 +32,11 @@ def load_model(args, folder):
 class Stats:  # intervals, impulse and peaks of one contact by the suite's rule (R > 0: in contact)
     def __init__(self, merge_gap): self.merge, self.iv, self.on, self.imp, self.peak = merge_gap, [], False, 0.0, 0.0
 
-    def add(self, t, R, dt):
-        self.imp += R * dt
-        if R > 0:
-            self.peak = max(self.peak, R)
-            if not self.on and not (self.iv and t - self.iv[-1][1] < self.merge): self.iv.append([t, t, 0.0, R])
-            else: self.iv[-1][1], self.iv[-1][2] = t, max(self.iv[-1][2], R)
+    def add(self, t, R, dt):  # a phase beginning within the merge gap of the last interval joins it
+        self.imp, self.peak = self.imp + R * dt, max(self.peak, R)
+        if R > 0 and not self.on and not (self.iv and t - self.iv[-1][1] < self.merge): self.iv.append([t, t, 0.0, R])
+        elif R > 0 and self.on: self.iv[-1][2] = max(self.iv[-1][2], R)  # a (re-)closure is no peak after it
+        if R > 0: self.iv[-1][1] = t
         self.on = R > 0
 
     def summary(self, c, k):

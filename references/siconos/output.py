@@ -1,7 +1,8 @@
 """history.csv and summary.json of a Siconos run, in the protocol's layout (`beamimpact schema`):
 the contact columns of each contact (suffix _k from the second), then the model's columns; the
-contact statistics by the suite's rule (a step is in contact when R > 0; an interval runs from
-its first to its last such step; phases separated by fewer than 3 open steps are merged)."""
+contact statistics by the suite's rule (solver/record/ContactIntervals.hpp): a step is in
+contact when R > 0, each run of contact steps is a phase, and a phase that begins less than the
+merge gap (3.5 steps) after the last interval's end joins it; a re-closure is a closure."""
 
 import json
 import math
@@ -36,18 +37,21 @@ class ContactStats:
         self.gap_min, self.gap_min_time, self.slide_max = math.inf, 0.0, 0.0
 
     def add(self, t, R, tau, dt, state):
+        if not R > 0:
+            self.on = False
+            return
         self.impulse_n += R * dt
         self.impulse_t += tau * dt
-        if R > 0:
-            self.peak = max(self.peak, R)
-            if not self.on and not (self.intervals and t - self.intervals[-1][1] < self.merge_gap):
+        self.peak = max(self.peak, R)
+        self.stick += state == STICK
+        self.slip += state == SLIP
+        if not self.on:  # a (re-)closure begins a phase; its force is not a peak after closure
+            if not (self.intervals and t - self.intervals[-1][1] < self.merge_gap):
                 self.intervals.append([t, t, 0.0, R])
-            else:
-                iv = self.intervals[-1]
-                iv[1], iv[2] = t, max(iv[2], R)
-            self.stick += state == STICK
-            self.slip += state == SLIP
-        self.on = R > 0
+            self.on = True
+        else:
+            self.intervals[-1][2] = max(self.intervals[-1][2], R)
+        self.intervals[-1][1] = t
 
     def track(self, t, gap, slide):
         if gap < self.gap_min:

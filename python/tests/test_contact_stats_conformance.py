@@ -72,37 +72,47 @@ def test_reclosure_inside_merged_chatter_is_a_closure():
         assert stats["peak_R"] == 9
 
 
-def _load(name, path):
-    """A module by file path under its own name (the references' modules share names)."""
-    import importlib.util
-    spec = importlib.util.spec_from_file_location(name, Path(os.environ["BEAMIMPACT_SOURCE"]) / path)
+# The outside solvers' statistics run in a child process: importing the example (scipy) here
+# would raise this process's memory, which a child started later inherits as its peak RSS
+# (test_module's memory test measures one).
+OUTSIDE = r"""
+import importlib.util, json, sys
+def load(name, path):
+    spec = importlib.util.spec_from_file_location(name, path)
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
+siconos, example = load("siconos_output", sys.argv[1]), load("example_solver", sys.argv[2])
+codes = {"open": 0, "stick": 1, "slip": 2, "frictionless": 3}
+contact = {"striker": "A", "target": "B", "kind": "end_to_end", "friction": 0.3}
+out = []
+for samples, merge_gap in json.load(sys.stdin):
+    s = siconos.ContactStats(1.0)
+    s.merge_gap = merge_gap
+    e = example.Stats(merge_gap)
+    for t, R, tau, dt, state in samples:
+        s.add(t, R, tau, dt, codes[state])
+        e.add(t, R, dt)
+    out.append([s.summary(contact), e.summary(contact, 0.0)])
+json.dump(out, sys.stdout)
+"""
 
 
 def test_outside_solvers_statistics_follow_the_rule():
     # The Siconos adapter's statistics (integer states) and the minimal example's (frictionless:
     # no tangential force or stick/slip counts) against the C++ rule on the same random chatter.
-    siconos = _load("siconos_output", "references/siconos/output.py")
-    example = _load("example_solver", "examples/external_solver/penalty_central.py")
-    codes = {"open": 0, "stick": 1, "slip": 2, "frictionless": 3}
-    contact = {"striker": "A", "target": "B", "kind": "end_to_end", "friction": 0.3}
+    import json
+    import subprocess
     rng = random.Random(20261126)
-    for case in range(200):
-        samples = chattering_samples(rng, rng.randint(0, 60))
-        merge_gap = rng.choice([0.0, 1.5e-6, 3.5e-6, 1e-5])
-        expected = cpp_stats(samples, merge_gap)
-        s = siconos.ContactStats(1.0)
-        s.merge_gap = merge_gap
-        for t, R, tau, dt, state in samples:
-            s.add(t, R, tau, dt, codes[state])
-        out = s.summary(contact)
-        assert {k: out[k] for k in KEYS} == expected, f"siconos, case {case}"
-        e = example.Stats(merge_gap)
-        frictionless = cpp_stats([(t, R, 0.0, dt, "frictionless" if R > 0 else "open")
-                                  for t, R, _, dt, _ in samples], merge_gap)
-        for t, R, _, dt, _ in samples:
-            e.add(t, R, dt)
-        out = e.summary(contact, 0.0)
-        assert {k: out[k] for k in KEYS} == frictionless, f"example, case {case}"
+    cases = []
+    for _ in range(200):
+        cases.append((chattering_samples(rng, rng.randint(0, 60)), rng.choice([0.0, 1.5e-6, 3.5e-6, 1e-5])))
+    src = Path(os.environ["BEAMIMPACT_SOURCE"])
+    p = subprocess.run([sys.executable, "-c", OUTSIDE, str(src / "references/siconos/output.py"),
+                        str(src / "examples/external_solver/penalty_central.py")],
+                       input=json.dumps(cases), capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    for case, ((samples, merge_gap), (siconos, example)) in enumerate(zip(cases, json.loads(p.stdout))):
+        assert {k: siconos[k] for k in KEYS} == cpp_stats(samples, merge_gap), f"siconos, case {case}"
+        frictionless = [(t, R, 0.0, dt, "frictionless" if R > 0 else "open") for t, R, _, dt, _ in samples]
+        assert {k: example[k] for k in KEYS} == cpp_stats(frictionless, merge_gap), f"example, case {case}"

@@ -9,6 +9,7 @@
 #include <solver/contact/ContactPair.hpp>
 #include <solver/model/Effects.hpp>
 #include <solver/model/critical_dt.hpp>
+#include <solver/model/load_vector.hpp>
 #include <solver/scene/SceneError.hpp>
 #include <solver/util/write_file_atomic.hpp>
 
@@ -218,10 +219,6 @@ json files_json(const Model& model) {
 
 }  // namespace
 
-Eigen::VectorXd external_load(const Scene& /*scene*/, const Model& model) {
-  return Eigen::VectorXd::Zero(model.size());
-}
-
 nlohmann::json export_model(const Scene& scene_in, const std::filesystem::path& dir) {
   std::filesystem::remove(dir / "model.json");  // nothing of an earlier export vouches for this one
   refuse_contact_search(scene_in, "model export");
@@ -260,8 +257,12 @@ nlohmann::json export_model(const Scene& scene_in, const std::filesystem::path& 
       {"bodies", bodies_json(scene, model)},
       {"contacts", json::array()},
       {"files", files_json(model)}};
-  for (int k = 0; k < static_cast<int>(scene.contacts.size()); ++k)
+  for (int k = 0; k < static_cast<int>(scene.contacts.size()); ++k) {
     doc["contacts"].push_back(contact_json(scene, model, k));
+    // The scene's coefficient, also where the model does not simulate it (an end-to-end contact
+    // has no tangent): a solver without friction refuses what the registry refuses.
+    doc["contacts"].back()["friction"] = scene_in.contacts[k].friction;
+  }
 
   std::filesystem::create_directories(dir);
   const SparseMatrix C = model.rayleigh_mass() * model.M() + model.rayleigh_stiffness() * model.K();
@@ -272,7 +273,9 @@ nlohmann::json export_model(const Scene& scene_in, const std::filesystem::path& 
   const Eigen::VectorXd u0 = Eigen::VectorXd::Zero(model.size());
   write_file_atomic(dir / "initial_state.csv",
                     vectors_csv({"u0", "v0"}, {u0, model.initial_velocity()}, model.size()));
-  write_file_atomic(dir / "load.csv", vectors_csv({"F"}, {external_load(scene, model)}, model.size()));
+  Eigen::VectorXd F = load_vector(model, scene);  // size 0 for a scene without loads
+  if (F.size() == 0) F = Eigen::VectorXd::Zero(model.size());
+  write_file_atomic(dir / "load.csv", vectors_csv({"F"}, {F}, model.size()));
   write_file_atomic(dir / "momentum.csv", momentum_csv(model));
   write_file_atomic(dir / "model.json", doc.dump(2) + "\n");
   return doc;

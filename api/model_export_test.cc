@@ -12,6 +12,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <solver/scene/SceneError.hpp>
+#include <solver/scene/scene_io.hpp>
 #include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact {
@@ -118,6 +119,26 @@ TEST(ModelExport, CentralRodsMassStiffnessAndGap) {
   EXPECT_NEAR(v0.dot(e.M * e.mode(0, 0, 1.0)), 4.0, 1e-12);
   EXPECT_EQ(e.doc["time"]["dt"], 0.01);
   EXPECT_EQ(e.doc["time"]["end"], 4.0);
+}
+
+// Gravity's load is each body's weight: e_y^T F = -m g for the bar (rho A L = 10 kg, g = 10
+// m/s^2 down), none along x; the immovable ground carries no equation. A scene without loads
+// exports F = 0 (S1 above has none).
+TEST(ModelExport, GravityLoadIsTheWeightOfTheBar) {
+  Exported e;
+  e.dir = testing::temp_path("bouncing_bar");
+  e.doc = export_model(load_scene(testing::source_dir() / "verification/scenes/benchmarks/bouncing_bar.toml"), e.dir);
+  e.M = read_mtx(e.dir / "M.mtx");
+  e.dofs = read_csv(e.dir / "dofs.csv");
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(e.M.rows());
+  for (const auto& r : read_csv(e.dir / "load.csv")) F(static_cast<int>(r[0])) = r[1];
+  // The bar is vertical: the rod layout's axis is y, so mode(0, 0, .) moves it along its axis.
+  ASSERT_EQ(e.doc["layout"], "rod");
+  const double g_along_axis = -10.0 * e.doc["rod_axis"][1].get<double>();  // g . axis, m/s^2
+  EXPECT_NEAR(F.dot(e.mode(0, 0, 1.0)), 10.0 * g_along_axis, 1e-12);
+  const Exported s1 = export_scene("s1_central", {}, "s1_load");
+  EXPECT_EQ(read_csv(s1.dir / "load.csv").size(), static_cast<std::size_t>(s1.M.rows()));
+  for (const auto& r : read_csv(s1.dir / "load.csv")) EXPECT_EQ(r[1], 0.0);
 }
 
 TEST(ModelExport, FreeRodFirstFrequencyIsPiCOverL) {

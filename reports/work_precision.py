@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """@brief Work-precision sets of the paper's scenes: every method that accepts a scene as its own
-curve (the paper integrator over dt and mesh ladders, IDA over rtol, FEniCSx over meshes, the exact
+curve (the paper integrator over dt and mesh ladders, IDA over rtol, FEniCSx over meshes, Siconos over meshes, the exact
 solution over its mode count), error against the best available reference vs the CPU time of the run.
 
 Usage: work_precision.py [--scenes s1_central,...] [--repeats 3] [--out reports/work_precision]
@@ -84,6 +84,12 @@ def plan_for(name, quick):
     # FEniCSx: the 2D continuum over its mesh presets.
     for m in ("coarse", "default", "fine")[: 1 if quick else 3]:
         rungs.append(("FEniCSx (meshes)", f"mesh {m}", ["--method", "fenicsx", "--mesh", m]))
+    # Siconos (outside solver, verification/methods.toml): Moreau-Jean on the exported model, a mesh
+    # ladder with the step scaled with the element. It refuses S4's corotational kinematics.
+    if not name.startswith("s4"):
+        for m in (1, 2, 4)[: 1 if quick else 3]:
+            rungs.append(("Siconos (mesh ladder)", f"mesh x{m}, dt {dt / m:g}",
+                          ["--method", "siconos", "--mesh", str(m), "--dt", repr(dt / m)]))
     # The exact solution over its mode count (rod on beam only; S1's rods are exact at roundoff).
     if name.startswith(("s2", "s3")):
         for n in (8, 16, 32)[: 1 if quick else 3]:

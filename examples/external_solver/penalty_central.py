@@ -113,7 +113,7 @@ def write(args, m, out, contacts, final, sub, steps, wall):
                "assumed": {**m["assumed"], "penalty": f"{PENALTY} x EA/le"}, "overrides": m["overrides"],
                "energy_initial": out[0, -5] + out[0, -4], "energy_final": out[-1, -5] + out[-1, -4],
                "momentum_drift_max": np.abs(out[:, -2:] - out[0, -2:]).max(), "bodies": final,
-               "contacts": contacts, "units": {"t": "s", "R": "N", "gap": "m", "u": "m", "v": "m/s", "energy": "J",
+               "contacts": contacts, "units": {"t": "s", "R": "N", "tau": "N", "gap": "m", "u": "m", "v": "m/s", "energy": "J",
                                                "momentum": "N s", "impulse": "N s"}, "complete": True}
     tmp = os.path.join(args.out, ".summary.json.tmp")  # summary.json last and atomically
     with open(tmp, "w") as f: json.dump(summary, f, indent=2, default=float)
@@ -135,7 +135,7 @@ def main():
     try:
         with tempfile.TemporaryDirectory() as folder:
             m, M, K, C, state, F, P = load_model(args, folder)
-        if "friction" in m["effects"]: refuse(f"{args.scene}: contacts[].friction: expected 0 (no friction here)")
+        if any(c["friction"] > 0 for c in m["contacts"]): refuse(f"{args.scene}: contacts[].friction: expected 0 (no friction here)")
         out, contacts, final, sub, steps = solve(m, M, K, C, state, F, P)
         write(args, m, out, contacts, final, sub, steps, time.perf_counter() - start)
     except (RuntimeError, ValueError, OSError, KeyError) as e:

@@ -59,3 +59,50 @@ def test_refuses_scenes_it_cannot_run_with_exit_2(tmp_path):
     assert not (out / "summary.json").exists()
     r, out = example(tmp_path, "missing.toml", name="missing")
     assert r.returncode == 2 and "missing.toml" in r.stderr
+
+
+def conform(tmp_path, name, methods=None):
+    args = [EXE, "conform", name, "--out", str(tmp_path / f"conform_{name}")]
+    return subprocess.run(args + (["--methods", str(methods)] if methods else []), capture_output=True, text=True)
+
+
+def test_conform_passes_every_rule_of_the_protocol(tmp_path):
+    r = conform(tmp_path, "example")  # declared in verification/methods.toml
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert "conform passed" in r.stdout and "[FAIL]" not in r.stdout
+
+
+# Broken copies of the example, each breaking one rule of docs/protocol.md: conform must fail
+# (exit 1) and name that rule. (old, new) is a single edit of the source.
+BROKEN = [
+    ("column", ('"R tau gap ua_x', '"F tau gap ua_x'), "columns"),
+    ("exit_code", ('sys.exit(2)  # the protocol', 'sys.exit(1)  # the protocol'), "exit code"),
+    ("summary_on_failure",
+     ('for c in m["contacts"]): refuse(',
+      'for c in m["contacts"]): open(os.path.join(args.out, "summary.json"), "w").write("{}"), refuse('),
+     "no summary after failure"),
+]
+
+
+@pytest.mark.parametrize("broken,edit,rule", BROKEN, ids=[b[0] for b in BROKEN])
+def test_conform_names_the_rule_a_broken_copy_breaks(tmp_path, broken, edit, rule):
+    with open(os.path.join(HERE, "penalty_central.py")) as f:
+        source = f.read()
+    assert source.count(edit[0]) == 1, f"the edit for '{broken}' no longer matches penalty_central.py"
+    copy = tmp_path / f"broken_{broken}.py"
+    copy.write_text(source.replace(edit[0], edit[1]))
+    name = f"broken_{broken}"
+    methods = tmp_path / "methods.toml"
+    methods.write_text(f'''[[method]]
+name = "{name}"
+summary = "the example with one broken rule: {broken}"
+command = ["/usr/bin/python3", "{copy}", "{{scene}}", "--out", "{{out}}", "--quiet", "--beamimpact",
+           "{{beamimpact}}", "--dt", "{{dt}}", "--mesh", "{{mesh}}", "--method", "{name}"]
+[method.accepts]
+dt = true
+mesh_factor = true
+several_contacts = true
+''')
+    r = conform(tmp_path, name, methods)
+    assert r.returncode == 1, r.stdout + r.stderr
+    assert f"[FAIL] {rule}" in r.stdout, r.stdout

@@ -73,7 +73,8 @@ def summary_of(model, opts, rec, steps, dt, wall, version):
                     "problem": "FrictionContact(2), NSGS" if "friction" in doc["effects"] else "LCP, Lemke",
                     "law": "NewtonImpactFrictionNSL" if "friction" in doc["effects"] else "NewtonImpactNSL",
                     "model_layout": doc["layout"], "equations": doc["equations"],
-                    "explicit_critical_dt": doc["time"]["critical_dt"]},
+                    # s; 0 when nothing limits an explicit step (rigid bodies only)
+                    "explicit_critical_dt": doc["time"]["critical_dt"] or 0.0},
         "complete": True,
     }
 
@@ -96,6 +97,9 @@ def main(argv):
         simulation = Simulation(model, opts, steps, dt)
     except (Refused, ValueError) as e:
         return refuse(str(e))
+    except (RuntimeError, OSError) as e:  # the export crashed or the model could not be read
+        print(f"error: {e}", file=sys.stderr)
+        return 3
     try:
         rec = Recorder(model, dt, model.doc["time"]["output_every"])
         for t, u, v, R, tau in simulation.run():

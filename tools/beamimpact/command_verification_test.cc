@@ -231,7 +231,7 @@ TEST_F(Commands, BadCompareAndSweepOptionsExitTwo) {
   const Result ref =
       run(fmt::format("sweep {} --dt 0.01 --reference bogus --out '{}'", s1, (tmp_ / "sw").string()));
   EXPECT_EQ(ref.code, 2) << ref.out;
-  EXPECT_NE(ref.out.find("expected a method name (paper, exact, ida, fenicsx), got 'bogus'"),
+  EXPECT_NE(ref.out.find("expected a method name (paper, exact, ida, fenicsx, siconos, example), got 'bogus'"),
             std::string::npos)
       << ref.out;
 }

@@ -92,3 +92,11 @@ def test_refusals_exit_2_with_one_line_and_no_summary(tmp_path):
     r, out = siconos(tmp_path, "s1_central.toml", "--set", "bodies.A.elements=0", name="bad")
     assert r.returncode == 2 and "elements" in r.stderr
     assert not (out / "summary.json").exists()
+
+
+def test_conform_passes_every_rule_of_the_protocol(tmp_path):
+    # Declared in verification/methods.toml: the conformance set of docs/protocol.md (valid scenes
+    # of each kind, a refused one, a malformed one, the same scene twice).
+    r = subprocess.run([EXE, "conform", "siconos", "--out", str(tmp_path / "conform")], capture_output=True, text=True)
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert "conform passed" in r.stdout and "[FAIL]" not in r.stdout

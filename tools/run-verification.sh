@@ -4,12 +4,18 @@
 # shipped scenes and writes its report under out/verify/, then one self-contained
 # out/verify/report.html: this run's verdicts plus the committed work-precision sets, paper
 # figures and benchmark plots (reports/html_report.py).
-# Usage: tools/run-verification.sh [--tier quick|full]   (default: quick)
+# Usage: tools/run-verification.sh [--tier quick|full] [--score]   (default: quick)
+#   --score  also scores every method that runs here (`beamimpact methods`) on the benchmark set:
+#            out/score/NAME/scorecard.html with its runs on the work-precision diagrams
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/build.sh beamimpact   # the report needs only the program and /usr/bin/python3 + matplotlib
 build=${BEAMIMPACT_BUILD_DIR:-build}
-args=("$@")
+args=()
+score=0
+for a in "$@"; do
+  if [[ $a == --score ]]; then score=1; else args+=("$a"); fi
+done
 ((${#args[@]})) || args=(--tier quick)
 status=0
 rm -f out/verify/norms.json out/verify/report.html  # never a stale report from an earlier run
@@ -17,5 +23,13 @@ rm -f out/verify/norms.json out/verify/report.html  # never a stale report from 
 # The report shows a failing run too (its verdicts say so); an interrupted or refused run wrote no norms.json.
 if [[ -f out/verify/norms.json ]]; then
   /usr/bin/python3 reports/html_report.py --verify out/verify --committed --out out/verify/report.html
+fi
+if ((score)); then
+  for m in $("$build"/beamimpact methods | awk '/ runs here/ {print $1}'); do
+    echo "score: $m -> out/score/$m/scorecard.html"
+    "$build"/beamimpact score "$m" --out "out/score/$m" --jobs "$(nproc)" >"out/score-$m.log" 2>&1 ||
+      { echo "score $m failed: out/score-$m.log" >&2; status=1; continue; }
+    /usr/bin/python3 reports/scorecard_figures.py "out/score/$m"
+  done
 fi
 exit "$status"

@@ -1,0 +1,110 @@
+#!/usr/bin/env python3
+"""@brief Draws a scored method's runs on the committed work-precision diagrams and adds them to
+its scorecard.html: for each scene of the scorecard with a work-precision set
+(reports/work_precision/<scene>/work_precision.json), the set's curves (impulse error against CPU
+time of the paper integrator, IDA, FEniCSx, Siconos, exact) and the scored run as one large
+marker (its impulse error against the scorecard's process seconds).
+
+Usage: scorecard_figures.py SCORE_DIR [--sets reports/work_precision]
+
+SCORE_DIR holds scorecard.json and scorecard.html (`beamimpact score NAME --out SCORE_DIR`).
+Writes SCORE_DIR/<scene>_work_precision.png and rewrites scorecard.html (atomically) with the
+figures embedded, so it stays one self-contained file. Exit 2 with one line on bad input.
+"""
+import argparse
+import base64
+import json
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+MARK = "<!-- work-precision figures -->"
+
+
+def fail(msg):
+    print(f"scorecard_figures: {msg}", file=sys.stderr)
+    sys.exit(2)
+
+
+def load_json(path, what):
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, ValueError) as e:
+        fail(f"{path}: expected {what} ({e})")
+
+
+def impulse_error(scene):
+    for q in scene.get("quantities", []):
+        if q.get("metric") == "impulse" and q.get("error") is not None:
+            return q["error"]
+    return None
+
+
+def figure(scene, wp, method, out_png):
+    """One diagram: the set's curves and the scored run; returns the caption."""
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    curves = {}
+    for p in wp["points"]:
+        if p.get("status") == "ok" and p["error"].get("impulse"):
+            curves.setdefault(p["method"], []).append((p["cpu_seconds_min"], p["error"]["impulse"]))
+    for i, (label, pts) in enumerate(sorted(curves.items())):
+        pts.sort()
+        ax.loglog([c for c, _ in pts], [e for _, e in pts], "o-", ms=4, color=f"C{i}", label=label)
+    err, secs = impulse_error(scene), scene.get("process_seconds")
+    if err and secs:
+        ax.loglog([secs], [err], "*", ms=16, color="k", label=f"{method} (scored: {scene['run']})")
+    ax.set_xlabel("CPU time of the run (s); scored run: process seconds")
+    ax.set_ylabel("relative impulse error")
+    ax.set_title(f"{scene['scene']}: reference {wp['reference']}", fontsize=9)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(out_png, dpi=110)
+    plt.close(fig)
+    return (f"Curves: {wp['command']} (version {wp['version']}); marker: this scorecard's run, "
+            f"{'error %.3g' % err if err else 'no impulse error'} against {scene['reference']}.")
+
+
+def embed(html, blocks):
+    head = html.split(MARK)[0].replace("</body></html>", "").rstrip()
+    section = [MARK, "<h2>On the work-precision diagrams</h2>"]
+    for png, caption in blocks:
+        with open(png, "rb") as f:
+            data = base64.b64encode(f.read()).decode()
+        section.append(f'<figure><img alt="{os.path.basename(png)}" src="data:image/png;base64,{data}">'
+                       f"<figcaption>{caption}</figcaption></figure>")
+    return head + "\n" + "\n".join(section) + "\n</body></html>\n"
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("score_dir")
+    ap.add_argument("--sets", default="reports/work_precision", help="folder of the work-precision sets")
+    args = ap.parse_args(argv)
+    card = load_json(os.path.join(args.score_dir, "scorecard.json"), "a scorecard (beamimpact score)")
+    html_path = os.path.join(args.score_dir, "scorecard.html")
+    if not os.path.isfile(html_path):
+        fail(f"{html_path}: missing; expected the scorecard.html beside scorecard.json")
+    blocks = []
+    for scene in card.get("scenes", []):
+        wp_path = os.path.join(args.sets, scene["scene"], "work_precision.json")
+        if not os.path.isfile(wp_path):
+            continue  # only the paper's scenes have a work-precision set
+        png = os.path.join(args.score_dir, f"{scene['scene']}_work_precision.png")
+        blocks.append((png, figure(scene, load_json(wp_path, "a work-precision set"), card["method"], png)))
+    with open(html_path) as f:
+        html = embed(f.read(), blocks)
+    tmp = html_path + ".tmp"
+    with open(tmp, "w") as f:
+        f.write(html)
+    os.replace(tmp, html_path)
+    print(f"scorecard_figures: {len(blocks)} diagram(s) added to {html_path}")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

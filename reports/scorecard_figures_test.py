@@ -1,0 +1,35 @@
+"""scorecard_figures.py on a real scorecard (`beamimpact score paper`): one embedded diagram per
+scored scene with a committed work-precision set, the page still self-contained, a second run
+replacing the figures instead of adding to them, and bad input refused with exit 2."""
+import os
+import re
+import subprocess
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+EXE = os.environ.get("BEAMIMPACT_EXE", os.path.join(ROOT, "build", "beamimpact"))
+SCRIPT = os.path.join(ROOT, "reports", "scorecard_figures.py")
+
+
+def figures(path):
+    with open(path) as f:
+        html = f.read()
+    return html, len(re.findall(r'<img [^>]*src="data:image/png;base64,', html))
+
+
+def test_one_diagram_per_scene_with_a_set_and_idempotent(tmp_path):
+    out = tmp_path / "score"
+    subprocess.run([EXE, "score", "paper", "--out", str(out)], cwd=ROOT, check=True, capture_output=True)
+    sets = {d for d in os.listdir(os.path.join(ROOT, "reports", "work_precision"))
+            if os.path.isfile(os.path.join(ROOT, "reports", "work_precision", d, "work_precision.json"))}
+    assert len(sets) == 7  # the paper's seven scenes (S1, S2, S3 x2, S4 x3)
+    for _ in range(2):
+        subprocess.run(["/usr/bin/python3", SCRIPT, str(out)], cwd=ROOT, check=True, capture_output=True)
+        html, n = figures(out / "scorecard.html")
+        assert n == len(sets)  # every paper scene is scored, each once (the second run replaces)
+    assert not re.search(r'src="(?!data:)', html)  # self-contained: no file the page would fetch
+    assert html.rstrip().endswith("</html>")
+
+
+def test_bad_input_exit_2_with_one_line(tmp_path):
+    r = subprocess.run(["/usr/bin/python3", SCRIPT, str(tmp_path)], capture_output=True, text=True)
+    assert r.returncode == 2 and "scorecard.json" in r.stderr and len(r.stderr.strip().splitlines()) == 1

@@ -26,6 +26,8 @@ import sys
 FIGURE_SETS = {
     "work_precision": "/usr/bin/python3 reports/work_precision.py",
     "paper_figures": "/usr/bin/python3 reports/paper_figures.py",
+    "scorecards": "build/beamimpact score NAME --out /tmp/scores/NAME for each method; "
+                  "/usr/bin/python3 reports/scorecard_table.py /tmp/scores/* --set reports/scorecards",
     "benchmarks": "/usr/bin/python3 reports/plot_effects_benchmark.py --run",
     "figures": "build/beamimpact study verification/studies/s4_angle_friction.toml --out DIR; "
                "/usr/bin/python3 reports/study_maps.py DIR (see README)",

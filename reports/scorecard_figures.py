@@ -45,29 +45,40 @@ def impulse_error(scene):
     return None
 
 
-def figure(scene, wp, method, out_png):
-    """One diagram: the set's curves and the scored run; returns the caption."""
-    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+MARKERS = "*PDXsv^<>"
+MARK_COLOURS = ("black", "gold", "white", "cyan", "magenta", "lime", "grey", "orange")  # apart from the curves' C0-C9
+
+
+def figure(name, wp, marks, out_png):
+    """One diagram of scene `name`: the set's curves and one large marker per scored run in
+    `marks` ((method, scorecard scene entry) pairs); returns the caption."""
+    fig, ax = plt.subplots(figsize=(8.4, 4.2))
     curves = {}
     for p in wp["points"]:
         if p.get("status") == "ok" and p["error"].get("impulse"):
             curves.setdefault(p["method"], []).append((p["cpu_seconds_min"], p["error"]["impulse"]))
     for i, (label, pts) in enumerate(sorted(curves.items())):
         pts.sort()
-        ax.loglog([c for c, _ in pts], [e for _, e in pts], "o-", ms=4, color=f"C{i}", label=label)
-    err, secs = impulse_error(scene), scene.get("process_seconds")
-    if err and secs:
-        ax.loglog([secs], [err], "*", ms=16, color="k", label=f"{method} (scored: {scene['run']})")
-    ax.set_xlabel("CPU time of the run (s); scored run: process seconds")
+        ax.loglog([c for c, _ in pts], [e for _, e in pts], "o-", ms=4, color=f"C{i}", label=label, alpha=0.6)
+    said = []
+    for k, (method, scene) in enumerate(marks):
+        err, secs = impulse_error(scene), scene.get("process_seconds")
+        if err and secs:
+            ax.loglog([secs], [err], MARKERS[k % len(MARKERS)], ms=13, color=MARK_COLOURS[k % len(MARK_COLOURS)],
+                      markeredgecolor="k", label=f"{method} (scored: {scene['run']})")
+            said.append(f"{method} {err:.3g}")
+        else:
+            said.append(f"{method}: {scene['status'] if scene['status'] != 'ok' else 'no impulse error'}")
+    ax.set_xlabel("CPU time of the run (s); scored runs: process seconds")
     ax.set_ylabel("relative impulse error")
-    ax.set_title(f"{scene['scene']}: reference {wp['reference']}", fontsize=9)
+    ax.set_title(f"{name}: reference {wp['reference']}", fontsize=9)
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=6, loc="center left", bbox_to_anchor=(1.01, 0.5))
     fig.tight_layout()
     fig.savefig(out_png, dpi=110)
     plt.close(fig)
-    return (f"Curves: {wp['command']} (version {wp['version']}); marker: this scorecard's run, "
-            f"{'error %.3g' % err if err else 'no impulse error'} against {scene['reference']}.")
+    return (f"Curves: {wp['command']} (version {wp['version']}); markers: the scored runs "
+            f"(impulse error against the scorecard's reference: {'; '.join(said)}).")
 
 
 def embed(html, blocks):
@@ -96,7 +107,8 @@ def main(argv):
         if not os.path.isfile(wp_path):
             continue  # only the paper's scenes have a work-precision set
         png = os.path.join(args.score_dir, f"{scene['scene']}_work_precision.png")
-        blocks.append((png, figure(scene, load_json(wp_path, "a work-precision set"), card["method"], png)))
+        wp = load_json(wp_path, "a work-precision set")
+        blocks.append((png, figure(scene["scene"], wp, [(card["method"], scene)], png)))
     with open(html_path) as f:
         html = embed(f.read(), blocks)
     tmp = html_path + ".tmp"

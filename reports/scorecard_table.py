@@ -1,13 +1,44 @@
 #!/usr/bin/env python3
-"""@brief One Markdown table from several scorecards (`beamimpact score NAME --out DIR`): per
-method, the count of each status, and per scene its impulse error and verdict for each method.
+"""@brief Several scorecards (`beamimpact score NAME --out DIR`) side by side: per method the
+count of each status, and per scene its impulse error and verdict for each method.
 
-Usage: scorecard_table.py DIR [DIR ...] > scorecards.md
-Exit 2 with one line when a DIR holds no scorecard.json.
+Usage: scorecard_table.py DIR [DIR ...] [--set OUT]
+Prints the tables as Markdown. With --set OUT, also writes OUT/scorecards.md, the figure set the
+HTML report reads (OUT/figures.json: both tables, and for each scene with a work-precision set
+one diagram with every method's scored run on it, OUT/<scene>.png) and each scorecard.json under
+OUT/<method>/. Exit 2 with one line when a DIR holds no scorecard.json.
 """
+import argparse
 import json
 import os
+import shutil
 import sys
+
+from scorecard_figures import figure
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+HEADER = """# Scorecards of the shipped methods
+
+Each method run on the benchmark set (the paper's scenes, the hard scenes and every scene with an
+exact answer) and compared with the best reference of each scene under the verification
+matrix's tolerance for that scene (docs/protocol.md, `beamimpact score`). `fail` means an error
+above the tolerance the matrix holds for that scene's reference (the tolerances are the paper
+integrator's unless the method has its own case: a 2D continuum or a penalty code is judged by
+the beam model's bounds, which is the point of a common scorecard); `no tolerance`: the matrix
+has no case for the scene, the error is reported; `not applicable`: the method refused the
+scene (exit 2 with its reason). Where the reference is IDA at the scene's own settings, IDA's
+own row compares it with itself (0). Made with:
+
+```sh
+for m in paper ida fenicsx siconos example; do
+  build/beamimpact score $m --out /tmp/scores/$m --jobs 2
+  /usr/bin/python3 reports/scorecard_figures.py /tmp/scores/$m     # scorecard.html with the diagrams
+done
+/usr/bin/python3 reports/scorecard_table.py /tmp/scores/{paper,ida,fenicsx,siconos,example} --set reports/scorecards
+```
+
+"""
+COMMAND = "/usr/bin/python3 reports/scorecard_table.py DIR... --set reports/scorecards (docs/protocol.md)"
 
 
 def load(d):
@@ -30,27 +61,67 @@ def cell(scene):
     return "no impulse gate"
 
 
-def main(dirs):
-    if not dirs:
-        print("scorecard_table: expected one or more scorecard folders", file=sys.stderr)
-        sys.exit(2)
-    cards = [load(d) for d in dirs]
-    names = [c["method"] for c in cards]
-    print(f"Scorecards of version {cards[0]['version']}, made {cards[0]['made']} UTC "
-          f"(`beamimpact score NAME`; command of the first: `{cards[0]['command']}`).\n")
+def tables(cards):
+    """(columns, rows) of the counts and of the per-scene impulse errors."""
     statuses = sorted({s for c in cards for s in c["counts"]})
-    print("| method | " + " | ".join(statuses) + " |")
-    print("|---|" + "---|" * len(statuses))
-    for c in cards:
-        print(f"| {c['method']} | " + " | ".join(str(c["counts"].get(s, 0)) for s in statuses) + " |")
-    print("\nRelative impulse error against the scene's best reference (verdict under the matrix's "
-          "tolerance for that scene):\n")
-    print("| scene | reference | " + " | ".join(names) + " |")
-    print("|---|---|" + "---|" * len(names))
+    counts = (["method"] + statuses, [[c["method"]] + [c["counts"].get(s, 0) for s in statuses] for c in cards])
     by_scene = [{s["scene"]: s for s in c["scenes"]} for c in cards]
+    rows = [[s["scene"], s["reference"]] + [cell(m[s["scene"]]) if s["scene"] in m else "-" for m in by_scene]
+            for s in cards[0]["scenes"]]
+    return counts, (["scene", "reference"] + [c["method"] for c in cards], rows)
+
+
+def markdown(columns, rows):
+    lines = ["| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
+    return "\n".join(lines + ["| " + " | ".join(str(x) for x in r) + " |" for r in rows])
+
+
+def write_set(out, dirs, cards, text):
+    os.makedirs(out, exist_ok=True)
+    for d, c in zip(dirs, cards):
+        os.makedirs(os.path.join(out, c["method"]), exist_ok=True)
+        shutil.copyfile(os.path.join(d, "scorecard.json"), os.path.join(out, c["method"], "scorecard.json"))
+    figures = []
     for s in cards[0]["scenes"]:
-        row = [cell(m[s["scene"]]) if s["scene"] in m else "-" for m in by_scene]
-        print(f"| {s['scene']} | {s['reference']} | " + " | ".join(row) + " |")
+        wp_path = os.path.join(HERE, "work_precision", s["scene"], "work_precision.json")
+        if not os.path.isfile(wp_path):
+            continue
+        with open(wp_path) as f:
+            wp = json.load(f)
+        marks = [(c["method"], e) for c in cards for e in c["scenes"] if e["scene"] == s["scene"]]
+        png = f"{s['scene']}.png"
+        caption = figure(s["scene"], wp, marks, os.path.join(out, png))
+        figures.append({"png": png, "title": f"{s['scene']}: every scored method on the work-precision diagram",
+                        "caption": caption, "command": COMMAND, "scene": s["file"], "version": cards[0]["version"]})
+    (cols1, rows1), (cols2, rows2) = tables(cards)
+    manifest = {"title": "Scorecards: every method on the benchmark set",
+                "about": "Each method run on the paper's scenes, the hard scenes and every scene with an exact "
+                         "answer, compared with the best reference of each scene under the verification matrix's "
+                         "tolerance (beamimpact score; docs/protocol.md).",
+                "tables": [{"title": "Verdicts per method", "columns": cols1, "rows": rows1},
+                           {"title": "Relative impulse error (verdict)", "columns": cols2, "rows": rows2}],
+                "figures": figures}
+    for name, content in (("figures.json", json.dumps(manifest, indent=1) + "\n"), ("scorecards.md", HEADER + text)):
+        tmp = os.path.join(out, name + ".tmp")
+        with open(tmp, "w") as f:
+            f.write(content)
+        os.replace(tmp, os.path.join(out, name))
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("dirs", nargs="+", help="scorecard folders (beamimpact score --out DIR)")
+    ap.add_argument("--set", help="write the figure set (scorecards.md, figures.json, diagrams) here")
+    args = ap.parse_args(argv)
+    cards = [load(d) for d in args.dirs]
+    (cols1, rows1), (cols2, rows2) = tables(cards)
+    text = (f"Scorecards of version {cards[0]['version']}, made {cards[0]['made']} UTC "
+            f"(`beamimpact score NAME`; command of the first: `{cards[0]['command']}`).\n\n"
+            + markdown(cols1, rows1) + "\n\nRelative impulse error against the scene's best reference "
+            "(verdict under the matrix's tolerance for that scene):\n\n" + markdown(cols2, rows2) + "\n")
+    print(text, end="")
+    if args.set:
+        write_set(args.set, args.dirs, cards, text)
 
 
 if __name__ == "__main__":

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <solver/scene/SceneError.hpp>
+#include <solver/scene/contact_law.hpp>
 
 namespace beamimpact::exact {
 namespace {
@@ -231,6 +232,8 @@ ExactProblem recognise_rod_on_wall(const Scene& scene) {
 
 ExactProblem recognise_scene(const Scene& scene) {
   refuse_contact_search(scene, "exact");
+  refuse_hertz(scene, "exact");
+  refuse_timoshenko(scene, "exact");
   if (scene.bodies.size() == 2 && scene.contacts.size() == 1 &&
       !scene.bodies[scene.contacts[0].striker].rigid && scene.bodies[scene.contacts[0].target].rigid)
     return recognise_rod_on_wall(scene);

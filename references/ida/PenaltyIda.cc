@@ -75,7 +75,7 @@ struct PenaltyIda::Impl {
   std::vector<ContactEvent> events;
   IdaCounters done;  // counters of finished segments (IDAReInit zeroes IDA's own)
   Messages messages;
-  double released_energy = 0.0;  // J, spring energy kn g^2/2 left in the penalty at releases
+  double released_energy = 0.0;  // J, spring energy (kn g^2/2) left in the penalty at releases
   Vec load;                      // constant external load F, empty for none
 
   SUNContext ctx = nullptr;
@@ -144,7 +144,7 @@ struct PenaltyIda::Impl {
     if (r.closed) {
       r.R = laws[i].normal_force(r.gap, r.gap_rate);
       r.tau = laws[i].friction_force(r.R, r.slip_rate);
-      r.penalty_energy = 0.5 * laws[i].kn * r.gap * r.gap;
+      r.penalty_energy = laws[i].spring_energy(r.gap);
     }
     return r;
   }
@@ -240,7 +240,8 @@ struct PenaltyIda::Impl {
     for (const Triplet& t : cj_trip) trip.emplace_back(t.row(), t.col(), cj * t.value());
     for (int i = 0; i < nc; ++i) {
       const ContactReading r = read(i, y);
-      // dF_v/dU -= G_n dR/dU + G_t dtau/dU, dF_v/dV likewise; dR/dU = -kn G_n, dR/dV = -cn G_n,
+      // dF_v/dU -= G_n dR/dU + G_t dtau/dU, dF_v/dV likewise; dR/dU = -kn G_n (Hertz: the
+      // spring's stiffness at the gap), dR/dV = -cn G_n,
       // dtau = -mu s(vt) dR - mu R s'(vt) G_t dV. Entries are written (as zeros) while open
       // too, so the sparsity pattern changes only when the struck point changes element.
       // The weights' own dependence on U (sliding) is left out: it only slows Newton slightly.
@@ -250,14 +251,15 @@ struct PenaltyIda::Impl {
       const double ds = law.slip_sign_derivative(r.slip_rate);
       const auto& Gn = r.frame.n_terms;
       const auto& Gt = r.frame.t_terms;
+      const double kn = law.spring_stiffness(r.gap);
       for (const DofTerm& a : Gn)
         for (const DofTerm& b : Gn) {
-          trip.emplace_back(n + a.eq, b.eq, on * law.kn * a.coeff * b.coeff);
+          trip.emplace_back(n + a.eq, b.eq, on * kn * a.coeff * b.coeff);
           trip.emplace_back(n + a.eq, n + b.eq, on * law.cn * a.coeff * b.coeff);
         }
       for (const DofTerm& a : Gt) {
         for (const DofTerm& b : Gn) {
-          trip.emplace_back(n + a.eq, b.eq, -on * law.mu * s * law.kn * a.coeff * b.coeff);
+          trip.emplace_back(n + a.eq, b.eq, -on * law.mu * s * kn * a.coeff * b.coeff);
           trip.emplace_back(n + a.eq, n + b.eq, -on * law.mu * s * law.cn * a.coeff * b.coeff);
         }
         for (const DofTerm& b : Gt)

@@ -19,6 +19,7 @@
 #include <solver/record/ContactIntervals.hpp>
 #include <solver/record/ResultRecorder.hpp>
 #include <solver/scene/SceneError.hpp>
+#include <solver/scene/contact_law.hpp>
 #include <solver/scene/run_cost.hpp>
 #include <solver/util/Progress.hpp>
 
@@ -79,7 +80,13 @@ PenaltyContacts make_penalty_contacts(const Scene& scene, const Model& model, co
     law.kn = opt.kn.value_or(opt.kn_factor * geo.element_stiffness());
     const double m_red = reduced_mass(model, geo.evaluate(U0));
     double zeta = 0.0;
-    if (opt.cn) {
+    if (scene.contacts[i].law == ContactLaw::kHertz) {
+      // The scene's own Hertz spring, elastic as in the paper method: no penalty, no dashpot.
+      law.hertz = true;
+      law.kn = scene.contacts[i].hertz_stiffness;
+      law.cn = 0.0;
+      r.assumed[key + "law"] = "hertz: the scene's spring kn |g|^(3/2), kn " + str(law.kn) + " N/m^1.5, cn 0";
+    } else if (opt.cn) {
       law.cn = *opt.cn;
       zeta = law.cn / (2.0 * std::sqrt(law.kn * m_red));
     } else {
@@ -88,17 +95,21 @@ PenaltyContacts make_penalty_contacts(const Scene& scene, const Model& model, co
     }
     law.mu = friction ? scene.contacts[i].friction : 0.0;
     law.v_reg = opt.friction_velocity;
-    if (!opt.kn) r.assumed[key + "kn"] = str(law.kn) + " N/m (kn_factor x EA/le)";
-    r.assumed[key + "cn"] = str(law.cn) + " N s/m (damping ratio " + str(zeta) + ", two-mass restitution " +
-                            str(restitution_for_damping_ratio(zeta)) + ", m_red " + str(m_red) + " kg)";
+    if (!opt.kn && !law.hertz) r.assumed[key + "kn"] = str(law.kn) + " N/m (kn_factor x EA/le)";
+    if (!law.hertz)
+      r.assumed[key + "cn"] = str(law.cn) + " N s/m (damping ratio " + str(zeta) + ", two-mass restitution " +
+                              str(restitution_for_damping_ratio(zeta)) + ", m_red " + str(m_red) + " kg)";
     pc.extra.push_back({{"kind", to_string(geo.kind())},
                         {"kn", law.kn},
                         {"cn", law.cn},
                         {"damping_ratio", zeta},
                         {"restitution", restitution_for_damping_ratio(zeta)},
                         {"reduced_mass", m_red},
-                        {"friction_velocity", law.v_reg},
-                        {"contact_period", M_PI * std::sqrt(m_red / law.kn)}});
+                        {"friction_velocity", law.v_reg}});
+    if (law.hertz)
+      pc.extra.back()["law"] = "hertz";  // kn in N/m^1.5; no fixed period
+    else
+      pc.extra.back()["contact_period"] = M_PI * std::sqrt(m_red / law.kn);
     pc.laws.push_back(law);
     pc.reduced_mass.push_back(m_red);
   }
@@ -113,6 +124,9 @@ PenaltyContacts make_penalty_contacts(const Scene& scene, const Model& model, co
 void check_penalty_cost(const Scene& scene, const PenaltyContacts& pc, int unknowns) {
   if (scene.time.allow_long_run) return;
   for (std::size_t i = 0; i < pc.laws.size(); ++i) {
+    // A Hertz spring softens as it opens (no fixed period): its cost follows the impact and is
+    // bounded by the run's own dynamics, not by a penalty the reference chose.
+    if (pc.laws[i].hertz) continue;
     const double m_red = pc.reduced_mass[i];
     const double period = 2.0 * M_PI * std::sqrt(m_red / pc.laws[i].kn);
     const double steps = 20.0 * scene.time.end / period;

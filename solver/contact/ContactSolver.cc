@@ -3,7 +3,18 @@
 #include <cmath>
 #include <limits>
 
+#include <solver/contact/hertz_law.hpp>
+
 namespace beamimpact::paper {
+namespace {
+
+/// The sign of a slipping tau: opposing the sliding the stick force Ts would have prevented
+/// (when the stick solve gave Rs > 0), else opposing the predicted slide s.
+double slip_direction(double Rs, double Ts, double s) {
+  return Rs > 0.0 ? (Ts >= 0 ? 1.0 : -1.0) : (s > 0 ? -1.0 : 1.0);
+}
+
+}  // namespace
 
 ContactSolver::ContactSolver(std::vector<ContactPair>& pairs, std::vector<double> mu, bool friction, int n,
                              std::vector<double> gap_tol, ApplyH apply_H)
@@ -49,6 +60,11 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
   any_ = false;
   engaged_.clear();
   if (boxes_) boxes_->update(Ubar);
+  if (!hertz_.empty()) {  // the springs' forces at U^{p-1} and U^p
+    spring_prev_.swap(spring_now_);
+    spring_now_.swap(spring_next_);
+    std::fill(spring_next_.begin(), spring_next_.end(), 0.0);  // set by this solve's Hertz pairs
+  }
   for (int c = 0; c < m; ++c) {
     // Contact search: an open searched pair whose node is outside the other body's box cannot
     // touch it within this step; it is skipped (gap reported as +inf: far).
@@ -73,6 +89,8 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
     }
     out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};
     active_[c] = gbar_[c] < -tol_[c] && p.on_surface();
+    // A Hertz pair whose spring pushed at U^{p-1} still carries half that force (hertz_local).
+    if (hertz_pair(c) && spring_prev_[c] > 0.0) active_[c] = p.on_surface();
     candidate_[c] = p.on_surface();
     if (active_[c]) {
       refresh_response(c);
@@ -104,6 +122,14 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
         engaged_.insert(std::upper_bound(engaged_.begin(), engaged_.end(), c), c);  // keep index order
       }
       const double Ann = ContactPair::eval(p.normal_row(), hn_[c]);
+      if (hertz_pair(c)) {
+        const ContactForce f = g < -tol_[c] || spring_prev_[c] > 0.0
+                                   ? hertz_local(c, g, s, Ann)
+                                   : ContactForce{0.0, 0.0, g, s, ContactState::kOpen};
+        change = std::max(change, std::abs(f.R - out_[c].R) + std::abs(f.tau - out_[c].tau));
+        out_[c] = f;
+        continue;
+      }
       ContactForce f{0.0, 0.0, g, s, ContactState::kOpen};
       if (g < -tol_[c]) {
         if (!friction_ || mu_[c] == 0.0) {
@@ -122,7 +148,7 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
             f.state = ContactState::kStick;
           } else {
             // Slip: tau opposes the sliding the stick force would have prevented.
-            const double sigma = Rs > 0.0 ? (Ts >= 0 ? 1.0 : -1.0) : (s > 0 ? -1.0 : 1.0);
+            const double sigma = slip_direction(Rs, Ts, s);
             const double R = -g / (Ann + sigma * mu_[c] * Ant);
             if (R > 0.0) {
               f.R = R;
@@ -158,6 +184,60 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
     }
   }
   return out_;
+}
+
+ContactForce ContactSolver::hertz_local(int c, double g, double s, double Ann) {
+  // The applied force is the mean of the spring's at U^{p-1} and U^{p+1}, R = (S_prev + S) / 2
+  // (hertz_law.hpp), with the corrected gap a + b R = -(S / k)^(2/3). Stick: tau from the
+  // tangential row (s + R Atn + tau Att = 0) leaves a scalar equation; slip: tau = sigma mu R.
+  const ContactPair& p = pairs_[c];
+  const double k = hertz_[c], sp = spring_prev_[c];
+  auto spring = [&](double a, double b) { return hertz_force(a + 0.5 * b * sp, 0.5 * b, k); };
+  ContactForce f{0.0, 0.0, g, s, ContactState::kOpen};
+  double S = 0.0;
+  if (!friction_ || mu_[c] == 0.0) {
+    S = spring(g, Ann);
+    f.state = friction_ ? ContactState::kSlip : ContactState::kClosed;
+  } else {
+    const double Ant = ContactPair::eval(p.normal_row(), ht_[c]);
+    const double Atn = ContactPair::eval(p.tangent_row(), hn_[c]);
+    const double Att = ContactPair::eval(p.tangent_row(), ht_[c]);
+    S = spring(g - s * Ant / Att, Ann - Ant * Atn / Att);
+    const double Rs = 0.5 * (S + sp), Ts = -(s + Rs * Atn) / Att;
+    f.state = ContactState::kStick;
+    f.tau = Ts;
+    if (!(Rs > 0.0 && std::abs(Ts) <= mu_[c] * Rs)) {
+      const double sigma = slip_direction(Rs, Ts, s);
+      S = spring(g, Ann + sigma * mu_[c] * Ant);
+      f.tau = sigma * mu_[c] * 0.5 * (S + sp);
+      f.state = ContactState::kSlip;
+    }
+  }
+  spring_next_[c] = S;
+  f.R = 0.5 * (S + sp);
+  if (!(f.R > 0.0)) return ContactForce{0.0, 0.0, g, s, ContactState::kOpen};
+  f.gap_next = g + f.R * Ann + (friction_ ? f.tau * ContactPair::eval(p.normal_row(), ht_[c]) : 0.0);
+  if (friction_)
+    f.slip_next = s + f.R * ContactPair::eval(p.tangent_row(), hn_[c]) +
+                  f.tau * ContactPair::eval(p.tangent_row(), ht_[c]);
+  return f;
+}
+
+void ContactSolver::set_hertz(std::vector<double> k) {
+  hertz_ = std::move(k);
+  spring_prev_.assign(hertz_.size(), 0.0);
+  spring_now_.assign(hertz_.size(), 0.0);
+  spring_next_.assign(hertz_.size(), 0.0);
+}
+
+double ContactSolver::hertz_energy() const {
+  // The springs' energy at the mean of U^p and U^{p+1}: the work R (g^{p+1} - g^{p-1}) / 2 of
+  // the trapezoidal force telescopes into it (exactly for a linear spring).
+  double e = 0.0;
+  for (std::size_t c = 0; c < hertz_.size(); ++c)
+    e += 0.5 *
+         (paper::hertz_energy(spring_now_[c], hertz_[c]) + paper::hertz_energy(spring_next_[c], hertz_[c]));
+  return e;
 }
 
 void ContactSolver::add_forces(Eigen::VectorXd& f, std::vector<int>* touched) const {

@@ -65,9 +65,22 @@ class ContactSolver {
   /// @brief How a closure step's stick test measures the tangential increment (default: the
   /// paper's whole step).
   void set_closure_slip(ClosureSlip c) { closure_slip_ = c; }
+  /// @brief Per contact pair: the Hertz stiffness k (N/m^1.5), or 0 for the hard law (the
+  /// default of every pair). A Hertz pair's spring force S follows its corrected gap,
+  /// g^{p+1} = -(S / k)^(2/3) (hertz_law.hpp), and the force applied at step p is the
+  /// trapezoidal mean R^p = (S(U^{p-1}) + S(U^{p+1})) / 2: centred on step p (second order, where
+  /// S(U^{p+1}) alone is a step late and first order) and, like the average-acceleration rule,
+  /// stable for any spring stiffness.
+  void set_hertz(std::vector<double> k);
+  /// @brief The energy stored in the Hertz springs after the last solve (J; 0 with the hard
+  /// law): the mean of their energies at U^p and U^{p+1}.
+  double hertz_energy() const;
 
  private:
   void refresh_response(int c);
+  /// The local solve of a Hertz pair c with predicted gap g and slip s (others' forces included).
+  ContactForce hertz_local(int c, double g, double s, double Ann);
+  bool hertz_pair(int c) const { return !hertz_.empty() && hertz_[c] > 0.0; }
   std::vector<ContactPair>& pairs_;
   std::vector<double> mu_;
   bool friction_;
@@ -83,6 +96,8 @@ class ContactSolver {
   std::vector<int> engaged_;     ///< active pairs of this solve, in index order
   SearchBoxes* boxes_ = nullptr;
   ClosureSlip closure_slip_ = ClosureSlip::kWholeStep;
+  std::vector<double> hertz_;  ///< per pair: Hertz k (N/m^1.5), 0 = hard; empty: all hard
+  std::vector<double> spring_prev_, spring_now_, spring_next_;  ///< N, per pair: S at U^{p-1}, U^p, U^{p+1}
   bool any_ = false;
 };
 

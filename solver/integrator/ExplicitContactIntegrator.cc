@@ -79,6 +79,13 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
               [this](const Eigen::VectorXd& f, Eigen::VectorXd& out) { apply_H(f, out); }),
       load_(effects.loads ? load_vector(model, scene) : Eigen::VectorXd()) {
   solver_.set_search_boxes(boxes_.get());
+  if (std::any_of(scene.contacts.begin(), scene.contacts.end(),
+                  [](const Contact& c) { return c.law == ContactLaw::kHertz; })) {
+    std::vector<double> k;
+    for (int c : search_.contact) k.push_back(scene.contacts[c].hertz_stiffness);
+    solver_.set_hertz(std::move(k));
+    hertz_ = true;
+  }
   if (!model.lumped() && fint_.nonlinear()) {
     cmass_ = std::make_unique<CorotationalMass>(model, fint_);
     minv_.factorize_pattern(cmass_->M());  // M_A(t) may hold entries the model's M never stored
@@ -135,6 +142,14 @@ void ExplicitContactIntegrator::solve_contacts() {
 
 void ExplicitContactIntegrator::resolve_contacts() {
   solver_.solve(Ubar_, U_);
+  if (hertz_) {
+    // The contact work below counts what the bodies put into the Hertz springs: the change of
+    // their energy is taken back out of the dissipated energy (what stays there is the
+    // discretisation's error in the springs' work).
+    const double e = solver_.hertz_energy();
+    dissipated_ -= e - hertz_energy_;
+    hertz_energy_ = e;
+  }
   v_stale_ = solver_.any_force();  // V^p = Vbar^p unless a contact force acts; formed on demand
   if (solver_.any_force()) {
     if (fused_) {

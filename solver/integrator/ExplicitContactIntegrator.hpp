@@ -80,6 +80,8 @@ class ExplicitContactIntegrator {
   double strain_energy() const { return fint_.strain_energy(U_); }
   /// @brief Work of the external loads up to step p, F^P . U^p (J; 0 without loads).
   double load_work() const { return load_.size() ? load_.dot(U_) : 0.0; }
+  /// @brief Energy stored in the Hertz contact springs at step p (J; 0 with the hard law).
+  double contact_energy() const { return hertz_energy_; }
   /// @brief Linear momentum of body b along global axis c (0 = x, 1 = y) at step p (N s).
   double momentum(int b, int c) const {
     return cmass_ ? cmass_->momentum(b, c, V()) : model_.momentum_covector(b, c).dot(V());
@@ -138,6 +140,8 @@ class ExplicitContactIntegrator {
   std::vector<int> fc_dofs_;           ///< fused path: the equations where fc_ may be non-zero
   std::vector<double> vbar_saved_;     ///< fused path: Vbar^p at fc_dofs_ during the sweep
   double dissipated_ = 0.0;
+  bool hertz_ = false;            ///< some contact has the Hertz law
+  double hertz_energy_ = 0.0;     ///< J, in the Hertz springs (ContactSolver::hertz_energy)
   mutable bool v_stale_ = false;  ///< V_ is still to be formed from Vbar_ and fc_
 };
 

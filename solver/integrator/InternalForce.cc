@@ -3,13 +3,20 @@
 #include <algorithm>
 #include <cmath>
 
+#include <solver/model/timoshenko_element.hpp>
+
 namespace beamimpact::paper {
 namespace {
 
 /// The element's end forces from its local deformation: axial stretch u (m) and end rotations
-/// th1, th2 relative to the chord (rad): N = EA/L u, M1 = EI/L (4 th1 + 2 th2), M2 = EI/L (2 th1 + 4 th2).
+/// th1, th2 relative to the chord (rad): N = EA/L u, M1 = EI/L (4 th1 + 2 th2), M2 = EI/L (2 th1 + 4 th2)
+/// (a Timoshenko element: timoshenko_end_moments).
 std::array<double, 3> section(const Model::Element& el, double u, double th1, double th2) {
   const double N = el.E * el.area / el.length * u;
+  if (el.timoshenko) {
+    const auto [M1, M2] = timoshenko_end_moments(el.E, el.inertia, el.length, el.phi, th1, th2);
+    return {N, M1, M2};
+  }
   const double k = el.E * el.inertia / el.length;
   return {N, k * (4 * th1 + 2 * th2), k * (2 * th1 + 4 * th2)};
 }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <solver/model/frame_element.hpp>
+#include <solver/model/timoshenko_element.hpp>
 #include <solver/scene/SceneError.hpp>
 #include <solver/scene/collinear.hpp>
 
@@ -144,9 +145,13 @@ Model::Model(const Scene& scene, bool bending)
       }
     }
     const Vec2 d = unit_axis(body);
+    const bool timoshenko = body.theory == BeamTheory::kTimoshenko && !body.rigid && dpn == 3;
+    const double le = body.length() / body.elements;
+    const double phi =
+        timoshenko ? shear_parameter(body.inertia, body.area, le, body.shear_coefficient, body.poisson) : 0.0;
     for (int i = 0; i < body.elements; ++i)
       elements_.push_back({b, body_first_node_[b] + i, body_first_node_[b] + i + 1, body.E, body.area,
-                           body.inertia, body.rho, body.length() / body.elements, d[0], d[1], body.rigid});
+                           body.inertia, body.rho, le, d[0], d[1], body.rigid, timoshenko, phi});
   }
   // Rigid bodies' centre DOFs: immovable when supported (the scene allows only a full fix).
   const std::size_t node_dofs = fixed.size();
@@ -265,12 +270,14 @@ Model::Model(const Scene& scene, bool bending)
 bool Model::same_element_matrices(int a, int b) const {
   const Element &x = elements_[a], &y = elements_[b];
   return x.E == y.E && x.area == y.area && x.inertia == y.inertia && x.rho == y.rho && x.length == y.length &&
-         x.c == y.c && x.s == y.s && x.rigid == y.rigid;
+         x.c == y.c && x.s == y.s && x.rigid == y.rigid && x.timoshenko == y.timoshenko && x.phi == y.phi;
 }
 
 Eigen::MatrixXd Model::element_stiffness(int e, double c, double s) const {
   const Element& el = elements_[e];
   if (dofs_per_node_ == 1) return bar_stiffness(el.E, el.area, el.length);
+  if (el.timoshenko)
+    return to_global(timoshenko_stiffness_local(el.E, el.area, el.inertia, el.length, el.phi), c, s);
   return to_global(frame_stiffness_local(el.E, el.area, el.inertia, el.length), c, s);
 }
 
@@ -280,6 +287,10 @@ Eigen::MatrixXd Model::element_mass(int e, double c, double s) const {
     return lumped_ ? Eigen::Matrix2d(bar_mass_lumped(el.rho, el.area, el.length).asDiagonal())
                    : bar_mass_consistent(el.rho, el.area, el.length);
   // A lumped mass is the same in every frame (equal x and y translational masses).
+  if (el.timoshenko && lumped_)
+    return Mat6(timoshenko_mass_lumped(el.rho, el.area, el.inertia, el.length).asDiagonal());
+  if (el.timoshenko)
+    return to_global(timoshenko_mass_consistent_local(el.rho, el.area, el.inertia, el.length, el.phi), c, s);
   if (lumped_) return Mat6(frame_mass_lumped(el.rho, el.area, el.inertia, el.length, rotary_).asDiagonal());
   return to_global(frame_mass_consistent_local(el.rho, el.area, el.length), c, s);
 }

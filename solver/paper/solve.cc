@@ -132,7 +132,7 @@ HistoryRow make_row(const ExplicitContactIntegrator& in) {
     row.contacts.push_back(s);
   }
   row.kinetic = in.kinetic_energy();
-  row.strain = in.strain_energy();
+  row.strain = in.strain_energy() + in.contact_energy();  // the Hertz springs' energy is strain too
   row.dissipated = in.dissipated();
   row.load_work = in.load_work();
   for (int b = 0; b < m.num_bodies(); ++b)

@@ -28,7 +28,7 @@ struct ContactSample {
 struct HistoryRow {
   double t = 0.0;                       ///< s
   std::vector<ContactSample> contacts;  ///< one per scene contact, in scene order
-  double kinetic = 0.0, strain = 0.0;   ///< J, totals over all bodies
+  double kinetic = 0.0, strain = 0.0;   ///< J, totals over all bodies (strain: with Hertz contact springs)
   double dissipated = 0.0;              ///< J, cumulative: closures, friction, damping
   /// J, work of the external loads ([loads]) since t = 0: the energy account is
   /// kinetic + strain + dissipated - load_work = its value at t = 0

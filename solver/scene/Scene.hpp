@@ -46,6 +46,9 @@ enum class MassKind { kLumped, kConsistent };
 enum class RotaryInertia { kHrz, kSection };
 /// @brief Linear (fixed global matrices) or corotational (element frames rebuilt every step).
 enum class Kinematics { kLinear, kCorotational };
+/// @brief Beam theory of a body's elements: Euler-Bernoulli (the paper's) or Timoshenko (shear
+/// deformation and rotary inertia).
+enum class BeamTheory { kEulerBernoulli, kTimoshenko };
 
 /// @brief The string form of a model choice, as written in scene files and summary.json
 /// ("lumped", "consistent", "hrz", "section", "linear", "corotational").
@@ -53,6 +56,8 @@ const char* to_string(MassKind m);
 const char* to_string(RotaryInertia r);
 const char* to_string(Kinematics k);
 const char* to_string(FieldFormat f);
+/// @brief "euler-bernoulli" | "timoshenko".
+const char* to_string(BeamTheory t);
 
 /// @brief Model choices: [model] table.
 struct ModelSettings {
@@ -84,6 +89,11 @@ struct Body {
   /// rho A L, inertia m L^2 / 12; small rotations). `elements` only places its nodes; no
   /// supports (free) or one fixing x, y and theta (immovable).
   bool rigid = false;
+  /// Beam theory of the elements (bending layout only); a Timoshenko body's shear modulus is
+  /// G = E / (2 (1 + poisson)) and its shear area shear_coefficient x area.
+  BeamTheory theory = BeamTheory::kEulerBernoulli;
+  double shear_coefficient = 5.0 / 6.0;  ///< kappa (-), 5/6: a rectangular section
+  double poisson = 0.3;                  ///< nu (-)
 
   /// @brief Length (m).
   double length() const;
@@ -92,6 +102,12 @@ struct Body {
   /// @brief Reference position of node i (m).
   Vec2 node_position(int i) const;
 };
+
+/// @brief Contact law: "hard" (the paper's displacement compatibility, g = 0 while closed) or
+/// "hertz" (a local Hertz spring between the bodies, R = k delta^(3/2) with delta = -g).
+enum class ContactLaw { kHard, kHertz };
+/// @brief "hard" | "hertz".
+const char* to_string(ContactLaw l);
 
 /// @brief One contact pair: a node of the striker against the surface (or end) of the target.
 struct Contact {
@@ -103,6 +119,8 @@ struct Contact {
   /// and the target's end nodes against the striker's; `node` is then the striker node nearest
   /// the target at t = 0 (the one whose motion the history reports while nothing touches).
   bool search = false;
+  ContactLaw law = ContactLaw::kHard;
+  double hertz_stiffness = 0.0;  ///< N/m^1.5, k of the Hertz law (0 for the hard law)
 };
 
 /// @brief A constant force (N, global axes) on one node of a body, for the whole run.

@@ -9,7 +9,9 @@
 
 #include <solver/scene/SceneError.hpp>
 #include <solver/scene/TableReader.hpp>
+#include <solver/scene/beam_theory.hpp>
 #include <solver/scene/collinear.hpp>
+#include <solver/scene/contact_law.hpp>
 #include <solver/scene/loads_io.hpp>
 #include <solver/util/sha256.hpp>
 
@@ -358,6 +360,7 @@ Body read_body(TableReader& r, Scene& sc) {
     (*assumed)[r.path("velocity")] = "[0, 0]";
   read_supports(r, b, assumed);
   b.rigid = r.boolean_or("rigid", false);
+  read_beam_theory(r, b);
   if (b.rigid && !b.supports.empty() &&
       !(b.supports.size() == 1 && b.supports[0].fix_x && b.supports[0].fix_y && b.supports[0].fix_theta))
     r.fail("supports",
@@ -398,6 +401,7 @@ Contact read_contact(TableReader& r, const Scene& sc) {
   c.friction = r.number_or("friction", 0.0, "a Coulomb coefficient >= 0");
   if (c.friction < 0) r.fail("friction", "expected a Coulomb coefficient >= 0");
   bounded(r, "friction", c.friction, "a Coulomb coefficient >= 0");
+  read_contact_law(r, c);
   r.finish();
   return c;
 }
@@ -483,6 +487,7 @@ void check_whole_scene(const Scene& sc) {
                          "bodies '" + sc.bodies[i].name + "' and '" + sc.bodies[j].name +
                              "' overlap at t = 0; expected a positive gap between them");
   check_initial_gaps(sc);
+  check_beam_theory(sc);
 }
 
 }  // namespace

@@ -31,6 +31,9 @@ from mutants import MUTANTS  # noqa: E402
 # tests measure penetration from U and the target's own interpolation (solver/paper/hard_cases_test.cc),
 # the sliding-gap test the gap of a closed sliding contact from the deformed node positions.
 GEOMETRY_TESTS = ["hard_cases_test", "sliding_gap_test"]
+# The Timoshenko element and the Hertz law are checked against theory by their own unit tests
+# (no quick-tier gate runs them): those binaries run against each mutant too.
+GEOMETRY_TESTS += ["timoshenko_element_test", "hertz_law_test", "hertz_contact_test"]
 
 
 def sh(cmd, **kw):

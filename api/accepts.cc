@@ -63,15 +63,20 @@ void check_accepts(const Method& m, const Scene& scene, const std::string& mesh)
     if (!a.friction && c.friction > 0.0 && scene.effects.friction.value_or(true))
       refuse(m, scene, key + ".friction", "friction (it does not model friction)", "friction");
     if (!a.search && c.search) refuse(m, scene, key + ".node", "a contact search (node = \"all\")", "search");
+    if (!a.hertz && c.law == ContactLaw::kHertz)
+      refuse(m, scene, key + ".law", "the Hertz contact law (law = \"hertz\")", "hertz");
   }
   if (!a.several_contacts && scene.contacts.size() > 1)
     refuse(m, scene, "contacts", fmt::format("{} contacts (one only)", scene.contacts.size()),
            "several_contacts");
   if (!a.rotation && scene.model.kinematics == Kinematics::kCorotational)
     refuse(m, scene, "model.kinematics", "large rotation (corotational kinematics)", "rotation");
-  for (std::size_t i = 0; i < scene.bodies.size(); ++i)
-    if (!a.rigid && scene.bodies[i].rigid)
-      refuse(m, scene, "bodies[" + std::to_string(i) + "].rigid", "rigid bodies", "rigid");
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    const std::string key = "bodies[" + std::to_string(i) + "]";
+    if (!a.rigid && scene.bodies[i].rigid) refuse(m, scene, key + ".rigid", "rigid bodies", "rigid");
+    if (!a.timoshenko && scene.bodies[i].theory == BeamTheory::kTimoshenko)
+      refuse(m, scene, key + ".theory", "Timoshenko beams (theory = \"timoshenko\")", "timoshenko");
+  }
 }
 
 }  // namespace beamimpact

@@ -26,6 +26,11 @@ TEST(Registry, HasEveryMethodOnceWithWhatItAccepts) {
   EXPECT_EQ(std::filesystem::path(fenicsx.origin).filename(), "methods.toml") << fenicsx.origin;
   EXPECT_FALSE(fenicsx.accepts.dt);  // it picks its own stable step
   EXPECT_FALSE(find_method("ida")->accepts.search);
+  // Exact solutions are of Euler-Bernoulli beams and rods with the hard law; IDA shares the
+  // element matrices and runs the scene's Hertz spring; the continuum has neither.
+  EXPECT_FALSE(find_method("exact")->accepts.timoshenko || find_method("exact")->accepts.hertz);
+  EXPECT_TRUE(find_method("ida")->accepts.timoshenko && find_method("ida")->accepts.hertz);
+  EXPECT_FALSE(fenicsx.accepts.timoshenko || fenicsx.accepts.hertz);
   EXPECT_EQ(find_method("bogus"), nullptr);
   try {
     method("bogus", "matrix.toml", "method");

@@ -86,7 +86,7 @@ std::vector<std::string> read_command(TableReader& r, const std::string& key, co
 }
 
 Method::Accepts read_accepts(TableReader& top) {
-  Method::Accepts a{false, false, false, false, false, false, false};
+  Method::Accepts a{false, false, false, false, false, false, false, false, false};
   const toml::node* n = top.raw("accepts");
   if (!n) return a;
   if (!n->as_table()) top.fail("accepts", "expected a table { dt = true, friction = false, ... }");
@@ -98,6 +98,8 @@ Method::Accepts read_accepts(TableReader& top) {
   a.rigid = r.boolean_or("rigid", false);
   a.search = r.boolean_or("search", false);
   a.several_contacts = r.boolean_or("several_contacts", false);
+  a.timoshenko = r.boolean_or("timoshenko", false);
+  a.hertz = r.boolean_or("hertz", false);
   r.finish();
   return a;
 }

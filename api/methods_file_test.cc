@@ -63,7 +63,7 @@ TEST_F(MethodsFile, ReadsAMethodWithItsFolderAndProgramExpanded) {
   EXPECT_TRUE(m.accepts.friction);
   // Keys left out are false: the method takes only what it declares.
   EXPECT_FALSE(m.accepts.rotation || m.accepts.rigid || m.accepts.search || m.accepts.several_contacts ||
-               m.accepts.mesh_factor);
+               m.accepts.mesh_factor || m.accepts.timoshenko || m.accepts.hertz);
   EXPECT_FALSE(m.slow);
 }
 
@@ -155,6 +155,9 @@ TEST_F(MethodsFile, AcceptanceIsCheckedAgainstTheScene) {
   EXPECT_NE(refusal({"model.kinematics=\"corotational\""}).find("model.kinematics"), std::string::npos);
   EXPECT_NE(refusal({"bodies[0].rigid=true"}).find("bodies[0].rigid"), std::string::npos);
   EXPECT_NE(refusal({"contacts[0].node=\"all\""}).find("contacts[0].node"), std::string::npos);
+  EXPECT_NE(refusal({"bodies.B.theory=timoshenko"}).find("bodies[1].theory"), std::string::npos);
+  EXPECT_NE(refusal({"contacts[0].law=hertz", "contacts[0].stiffness=50"}).find("contacts[0].law"),
+            std::string::npos);
   EXPECT_EQ(refusal({"ida.rtol=1e-6"}), "");  // another method's options: left to that method
   EXPECT_NE(refusal({"bogus.x=1"}).find("unknown table [bogus]"), std::string::npos);
   Method no_mesh = m;

@@ -11,6 +11,7 @@
 #include <solver/model/critical_dt.hpp>
 #include <solver/model/load_vector.hpp>
 #include <solver/scene/SceneError.hpp>
+#include <solver/scene/contact_law.hpp>
 #include <solver/util/write_file_atomic.hpp>
 
 namespace beamimpact {
@@ -154,7 +155,12 @@ json bodies_json(const Scene& scene, const Model& model) {
                    {"rho", body.rho},
                    {"area", body.area},
                    {"inertia", body.inertia},
-                   {"velocity", body.velocity}});
+                   {"velocity", body.velocity},
+                   {"theory", to_string(body.theory)}});
+    if (body.theory == BeamTheory::kTimoshenko) {  // M and K are the Timoshenko element's
+      out.back()["shear_coefficient"] = body.shear_coefficient;
+      out.back()["poisson"] = body.poisson;
+    }
   }
   return out;
 }
@@ -222,6 +228,7 @@ json files_json(const Model& model) {
 nlohmann::json export_model(const Scene& scene_in, const std::filesystem::path& dir) {
   std::filesystem::remove(dir / "model.json");  // nothing of an earlier export vouches for this one
   refuse_contact_search(scene_in, "model export");
+  refuse_hertz(scene_in, "model export");  // the contact rows are the hard law's: gap >= 0, no spring
   const Effects effects = derive_effects(scene_in);
   if (effects.corotational)
     throw SceneError(scene_in.file, "model.kinematics",

@@ -127,7 +127,8 @@ TEST(ModelExport, CentralRodsMassStiffnessAndGap) {
 TEST(ModelExport, GravityLoadIsTheWeightOfTheBar) {
   Exported e;
   e.dir = testing::temp_path("bouncing_bar");
-  e.doc = export_model(load_scene(testing::source_dir() / "verification/scenes/benchmarks/bouncing_bar.toml"), e.dir);
+  e.doc = export_model(load_scene(testing::source_dir() / "verification/scenes/benchmarks/bouncing_bar.toml"),
+                       e.dir);
   e.M = read_mtx(e.dir / "M.mtx");
   e.dofs = read_csv(e.dir / "dofs.csv");
   Eigen::VectorXd F = Eigen::VectorXd::Zero(e.M.rows());
@@ -229,6 +230,62 @@ TEST(ModelExport, RigidRodMassInertiaAndLeverArm) {
   u.setZero();
   u(et) = 0.01 / (0.5 * std::cos(std::acos(-1.0) / 6));
   EXPECT_NEAR(e.gap(0, u), 0.0, 1e-12);
+}
+
+// A Timoshenko body's exported K is the Timoshenko element's: B of S2 (simply supported, L = 10 m,
+// E = 100 N/m^2, I = 0.4^3/12 m^4, A = 0.4 m^2) under a unit load at midspan deflects
+// P L^3 / (48 E I) + P L / (4 kappa G A) (kappa 5/6, G = E / (2 (1 + 0.3))): 39.0625 + 0.195 m.
+// The interdependent-interpolation element is exact for nodal loads, so only the solve's
+// roundoff separates the two (1e-9 relative); the Euler-Bernoulli export gives 39.0625 m.
+double midspan_deflection(const Exported& e) {
+  std::vector<int> eqs;
+  int mid = -1;
+  for (const auto& r : e.dofs)
+    if (r[0] == 1)
+      for (int k = 4; k < 7; ++k)
+        if (r[k] >= 0) {
+          if (r[1] == 5 && k == 5) mid = static_cast<int>(eqs.size());
+          eqs.push_back(static_cast<int>(r[k]));
+        }
+  const int n = static_cast<int>(eqs.size());
+  Eigen::MatrixXd KB(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) KB(i, j) = e.K(eqs[i], eqs[j]);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
+  f(mid) = -1.0;  // N, downwards
+  return -KB.ldlt().solve(f)(mid);
+}
+
+TEST(ModelExport, TimoshenkoBodyExportsItsShearFlexibility) {
+  const double L = 10.0, E = 100.0, I = 0.0053333333333333, A = 0.4, G = E / (2.0 * 1.3);
+  const double bending = L * L * L / (48.0 * E * I), shear = L / (4.0 * 5.0 / 6.0 * G * A);
+  const Exported eb = export_scene("s2_transverse", {}, "s2_eb");
+  EXPECT_EQ(eb.doc["bodies"][1]["theory"], "euler-bernoulli");
+  EXPECT_NEAR(midspan_deflection(eb), bending, 1e-9 * bending);
+  const Exported t = export_scene("s2_transverse", {"bodies.B.theory=timoshenko"}, "s2_timoshenko");
+  EXPECT_EQ(t.doc["bodies"][1]["theory"], "timoshenko");
+  EXPECT_NEAR(t.doc["bodies"][1]["shear_coefficient"].get<double>(), 5.0 / 6.0, 1e-15);
+  EXPECT_NEAR(t.doc["bodies"][1]["poisson"].get<double>(), 0.3, 1e-15);
+  EXPECT_NEAR(midspan_deflection(t), bending + shear, 1e-9 * (bending + shear));
+}
+
+// The exported contact rows are the hard law's (gap >= 0, no spring): a Hertz contact is refused
+// naming the scene file and contacts[k].law, and no model.json is left behind.
+TEST(ModelExport, RefusesTheHertzLawNamingFileAndKey) {
+  const fs::path dir = testing::temp_path("refused_hertz");
+  export_model(testing::load_paper_scene("s2_transverse"), dir);
+  ASSERT_TRUE(fs::exists(dir / "model.json"));
+  const Scene hertz =
+      testing::load_paper_scene("s2_transverse", {"contacts[0].law=hertz", "contacts[0].stiffness=50"});
+  try {
+    export_model(hertz, dir);
+    FAIL() << "a Hertz contact was exported as hard contact rows";
+  } catch (const SceneError& err) {
+    EXPECT_EQ(err.key(), "contacts[0].law");
+    EXPECT_NE(std::string(err.what()).find("s2_transverse.toml"), std::string::npos) << err.what();
+    EXPECT_NE(std::string(err.what()).find("hard law"), std::string::npos) << err.what();
+  }
+  EXPECT_FALSE(fs::exists(dir / "model.json"));
 }
 
 TEST(ModelExport, RefusesWhatItCannotWriteOnceAndLeavesNoModelJson) {

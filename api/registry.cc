@@ -38,6 +38,8 @@ std::deque<Method> built_in() {
   exact.accepts.rotation = false;
   exact.accepts.search = false;
   exact.accepts.several_contacts = false;
+  exact.accepts.timoshenko = false;  // the solutions are of Euler-Bernoulli beams and rods
+  exact.accepts.hertz = false;       // and of the hard contact law
   exact.solve = exact::solve;
   t.push_back(exact);
 #endif

@@ -29,6 +29,8 @@ struct Method {
     bool rigid = true;             ///< rigid bodies (rigid = true)
     bool search = true;            ///< contact search (node = "all")
     bool several_contacts = true;  ///< more than one [[contacts]] table
+    bool timoshenko = true;        ///< Timoshenko beams (a body with theory = "timoshenko")
+    bool hertz = true;             ///< the Hertz contact law (a contact with law = "hertz")
   };
 
   std::string name;           ///< registry key and `--method` value

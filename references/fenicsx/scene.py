@@ -245,6 +245,10 @@ def load_scene(path, overrides=None):
             b.fail("end", "expected a point different from start (a body of positive length)")
         if body.inertia <= 0:
             b.fail("inertia", "expected > 0: the continuum's depth is sqrt(12 I / A)")
+        if b.raw("theory", "euler-bernoulli") != "euler-bernoulli":
+            b.fail("theory", "the plane-stress continuum is compared with Euler-Bernoulli beams only "
+                   "(theory = \"timoshenko\" is run by the paper method and ida); expected "
+                   "\"euler-bernoulli\" or no theory")
         sup_raw = b.raw("supports", [])
         if not isinstance(sup_raw, list):
             b.fail("supports", "expected an array of { at = ..., fix = [...] } tables")
@@ -301,6 +305,9 @@ def load_scene(path, overrides=None):
         else:
             c.fail("node", f'expected "start", "end" or a node index 0..{nel}, found {node!r}')
         mu = c.number("friction", "the Coulomb coefficient", 0.0, nonneg=True)
+        if c.raw("law", "hard") != "hard":
+            c.fail("law", "the continuum's contact is its own (hard, between the faces); law = \"hertz\" "
+                   "is run by the paper method and ida: expected \"hard\" or no law")
         c.finish()
         contacts.append(Contact(names[striker], end_name, names[target], mu, c.prefix))
     strikers = [c.striker for c in contacts]

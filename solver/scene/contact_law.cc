@@ -40,8 +40,8 @@ void refuse_hertz(const Scene& scene, const std::string& method) {
   for (std::size_t i = 0; i < scene.contacts.size(); ++i)
     if (scene.contacts[i].law == ContactLaw::kHertz)
       throw SceneError(scene.file, "contacts[" + std::to_string(i) + "].law",
-                       "\"hertz\" is run by the paper method only; method '" + method +
-                           "' runs the hard law: expected \"hard\" (or no law)");
+                       "\"hertz\" is not run by method '" + method +
+                           "', which takes the hard law only: expected \"hard\" (or no law)");
 }
 
 void refuse_timoshenko(const Scene& scene, const std::string& method) {

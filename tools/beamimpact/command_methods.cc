@@ -23,6 +23,8 @@ std::string accepted(const Method::Accepts& a) {
   add(a.rigid, "rigid");
   add(a.search, "search");
   add(a.several_contacts, "several-contacts");
+  add(a.timoshenko, "timoshenko");
+  add(a.hertz, "hertz");
   return s.empty() ? "-" : s;
 }
 

@@ -14,7 +14,9 @@
 namespace beamimpact::paper {
 namespace {
 
-std::string rigid_scene() { return (testing::source_dir() / "verification/scenes/extra/rigid_rod_oblique.toml").string(); }
+std::string rigid_scene() {
+  return (testing::source_dir() / "verification/scenes/extra/rigid_rod_oblique.toml").string();
+}
 
 // The closed form for the scene's rod: 1 kg, 1 m, 30 deg to the surface, V = 1 m/s.
 constexpr double kS = 0.5, kC = 0.86602540378443865, kM = 1.0, kV = 1.0;
@@ -47,6 +49,20 @@ TEST(RigidBodies, ObliqueRodOnARigidSurfaceMatchesTheClosedForm) {
       EXPECT_NEAR(r.contacts[0].impulse_tangential, pt, 1e-9 * pn) << "mu " << mu << " f " << f;
       EXPECT_EQ(r.contacts[0].intervals.size(), 1u) << "one impact";
     }
+  }
+}
+
+// Momentum drift with a known value: the surface is immovable (its support takes every impulse),
+// so the total momentum changes by the rod's alone, p(t) - p(0) = -(pt, pn) summed over the
+// impact, and after it the rod flies free (one impact): momentum_drift_max is |(pt, pn)| of the
+// closed form, both components non-zero (to roundoff, as the impulses above).
+TEST(RigidBodies, MomentumDriftIsTheSupportsImpulse) {
+  for (double mu : {0.3, 1.5}) {
+    Scene s = load_scene(rigid_scene());
+    s.contacts[0].friction = mu;
+    const SimulationResult r = solve(s);
+    const auto [pn, pt] = closed_form(mu);
+    EXPECT_NEAR(r.momentum_drift_max, std::hypot(pn, pt), 1e-9 * pn) << "mu " << mu;
   }
 }
 

@@ -163,6 +163,17 @@ void add_verification_commands(CLI::App& app) {
   c->add_option("--merge", ca->options.merge_gap,
                 "s, contact samples closer than this are one impact (default 3.5 coarser output steps)")
       ->check(positive_time);
+  c->add_option("--threshold", ca->options.threshold,
+                "fraction of the reference's largest R above which a sample counts as contact (default 1e-6)")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            if (end != text.c_str() && *end == '\0' && v >= 0.0 && v < 1.0) return {};
+            return "expected a fraction of the reference's largest R in [0, 1), got '" + text.substr(0, 80) +
+                   "'";
+          },
+          "FRACTION"));
   add_methods_option(c);
   c->callback([ca] { compare(*ca); });
 

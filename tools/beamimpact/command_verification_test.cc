@@ -145,7 +145,8 @@ scene = "{}"
 method = "paper"
 reference = {{ method = "paper" }}
 gates = [{{ metric = "impulse", tol = 0.01, why = "a scene that cannot exist" }}]
-)", name));
+)",
+                                        name));
   Result r = run(fmt::format("verify '{}' --out '{}'", m.string(), (tmp_ / "v").string()));
   EXPECT_EQ(r.code, 2) << r.out;
   EXPECT_NE(r.out.find("case[0].scene"), std::string::npos) << r.out;
@@ -210,6 +211,8 @@ TEST_F(Commands, BadCompareAndSweepOptionsExitTwo) {
       {"--window -1", "--window: expected a positive finite time (s)"},
       {"--merge inf", "--merge: expected a positive finite time (s)"},
       {"--grid 1e-9", "key '--grid': expected a step giving at most 1e+08 grid points"},
+      {"--threshold 1", "--threshold: expected a fraction of the reference's largest R in [0, 1), got '1'"},
+      {"--threshold nan", "--threshold: expected a fraction of the reference's largest R in [0, 1)"},
   };
   for (const auto& c : cases) {
     const Result r = run(fmt::format("compare '{}' '{}' {}", a, a, c.args));

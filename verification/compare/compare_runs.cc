@@ -313,11 +313,15 @@ Comparison compare_runs(const StoredRun& a, const StoredRun& b, const CompareOpt
         fmt::format("the runs overlap on [{:.6g}, {:.6g}] s only, the reference spans [{:.6g}, {:.6g}] s",
                     cmp.t0, cmp.t1, b.t().front(), b.t().back()));
   }
-  // Bad options are bad input (CLI: compare --grid/--window/--merge), not a silent default.
+  // Bad options are bad input (CLI: compare --grid/--window/--merge/--threshold), not a silent default.
   for (const auto& [key, v] : {std::pair{"--grid", options.grid_step}, std::pair{"--window", options.window},
                                std::pair{"--merge", options.merge_gap}})
     if (v != 0.0 && !(v > 0.0 && std::isfinite(v)))
       throw InputError(a.label(), key, fmt::format("expected a positive finite time (s), got {}", v));
+  if (!(options.threshold >= 0.0 && options.threshold < 1.0))
+    throw InputError(
+        a.label(), "--threshold",
+        fmt::format("expected a fraction of the reference's largest R in [0, 1), got {}", options.threshold));
   constexpr double kMostGridPoints = 1e8;  // 0.8 GB per resampled series: beyond any output
   if ((cmp.t1 - cmp.t0) / cmp.grid_step > kMostGridPoints)
     throw InputError(a.label(), "--grid",

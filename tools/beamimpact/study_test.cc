@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -41,11 +42,12 @@ class StudyCommand : public ::testing::Test {
   }
   fs::path study(const std::string& body) {
     const fs::path p = tmp_ / "study.toml";
-    std::ofstream(p) << "name = \"t\"\nscene = \"" << BEAMIMPACT_SOURCE
-                     << "/verification/scenes/paper/s4_oblique_90.toml\"\n"
-                        "methods = [\"paper\"]\nreference = { method = \"ida\" }\n"
-                        "set = [\"model.kinematics=linear\", \"time.end=0.03\", \"bodies.A.end=[5.0, 0.001]\"]\n"
-                     << body;
+    std::ofstream(p)
+        << "name = \"t\"\nscene = \"" << BEAMIMPACT_SOURCE
+        << "/verification/scenes/paper/s4_oblique_90.toml\"\n"
+           "methods = [\"paper\"]\nreference = { method = \"ida\" }\n"
+           "set = [\"model.kinematics=linear\", \"time.end=0.03\", \"bodies.A.end=[5.0, 0.001]\"]\n"
+        << body;
     return p;
   }
   fs::path tmp_;
@@ -67,7 +69,8 @@ values = [0.5, 3.0]
 )";
 
 TEST_F(StudyCommand, TableRecordsRefusedCasesAndFrictionActsOnlyOnObliqueImpacts) {
-  const auto [code, out] = run(fmt::format("study '{}' --out '{}'", study(kGrid).string(), (tmp_ / "o").string()));
+  const auto [code, out] =
+      run(fmt::format("study '{}' --out '{}'", study(kGrid).string(), (tmp_ / "o").string()));
   ASSERT_EQ(code, 0) << out;
   const auto j = nlohmann::json::parse(read(tmp_ / "o/study.json"));
   const auto& cases = j.at("cases");
@@ -120,7 +123,8 @@ name = "alpha0"
 rake = "A"
 values = [90]
 )";
-  const auto [code, out] = run(fmt::format("study '{}' --out '{}'", study(grid).string(), (tmp_ / "o").string()));
+  const auto [code, out] =
+      run(fmt::format("study '{}' --out '{}'", study(grid).string(), (tmp_ / "o").string()));
   ASSERT_EQ(code, 0) << out;
   std::istringstream csv(read(tmp_ / "o/study.csv"));
   auto cells = [](const std::string& line) {  // commas outside double quotes, plus one
@@ -146,12 +150,59 @@ values = [90]
 
 TEST_F(StudyCommand, BadStudyExitsTwoNamingFileAndKey) {
   const auto [code, out] =
-      run(fmt::format("study '{}' --out '{}'", study("[[parameter]]\nname = \"mu\"\nkey = \"contacts[0].friction\"\n").string(),
+      run(fmt::format("study '{}' --out '{}'",
+                      study("[[parameter]]\nname = \"mu\"\nkey = \"contacts[0].friction\"\n").string(),
                       (tmp_ / "o").string()));
   EXPECT_EQ(code, 2) << out;
   EXPECT_NE(out.find("study.toml"), std::string::npos) << out;
   EXPECT_NE(out.find("parameter[0].values"), std::string::npos) << out;
   EXPECT_FALSE(fs::exists(tmp_ / "o/study.csv"));
+}
+
+// Every norm `beamimpact compare` gives for a run with one contact.
+const char* kAllNorms =
+    R"("R.rel_l2", "R.rel_linf", "I.rel_linf", "Rw.rel_l2", "Rw.rel_linf", "impulse", "impacts", )"
+    R"("contact_start", "contact_end", "peak_R", "ua.rel_l2", "ua.rel_linf", "ub.rel_l2", "ub.rel_linf", )"
+    R"("va.rel_l2", "va.rel_linf", "vb.rel_l2", "vb.rel_linf", "final_velocity", "energy_final")";
+
+// A study row is `beamimpact compare` of the same two runs (the case's run against the point's
+// reference), every norm column, to the bit: the study compares in memory what it wrote to its
+// run directories, compare reads them back (history.csv holds round-trip decimals). The columns
+// are every norm compare gives for one contact; two points, so rows and runs must also pair up.
+TEST_F(StudyCommand, EachRowEqualsTheCompareCommandOnTheSameRuns) {
+  const fs::path file = tmp_ / "rows.toml";
+  std::ofstream(file) << "name = \"rows\"\nscene = \"" << BEAMIMPACT_SOURCE
+                      << "/verification/scenes/paper/s1_central.toml\"\n"
+                         "methods = [\"paper\"]\nreference = { method = \"exact\" }\nkeep_runs = true\n"
+                         "norms = ["
+                      << kAllNorms
+                      << "]\n"
+                         "[[parameter]]\nname = \"dt\"\nkey = \"time.dt\"\nvalues = [0.02, 0.005]\n";
+  const auto [code, out] = run(fmt::format("study '{}' --out '{}'", file.string(), (tmp_ / "o").string()));
+  ASSERT_EQ(code, 0) << out;
+  const auto cases = nlohmann::json::parse(read(tmp_ / "o/study.json")).at("cases");
+  ASSERT_EQ(cases.size(), 2u);
+  for (const auto& c : cases) {
+    ASSERT_EQ(c.at("status"), "ok") << c.dump();
+    const int i = c.at("index").get<int>();
+    const fs::path runs = tmp_ / "o/runs", json = tmp_ / fmt::format("compare{}.json", i);
+    const auto [rc, log] =
+        run(fmt::format("compare '{}' '{}' --json '{}'", (runs / fmt::format("{}.paper", i)).string(),
+                        (runs / fmt::format("{}.reference", i)).string(), json.string()));
+    ASSERT_EQ(rc, 0) << log;
+    std::map<std::string, nlohmann::json> expected;
+    const auto compared = nlohmann::json::parse(read(json));
+    for (const auto& n : compared.at("norms")) expected[n.at("name").get<std::string>()] = n.at("value");
+    int columns = 0;
+    for (const auto& [name, v] : c.at("norms").items()) {
+      ASSERT_TRUE(expected.count(name)) << name << " is no norm of " << json;
+      EXPECT_EQ(v, expected.at(name)) << "case " << i << ", column " << name;
+      ++columns;
+    }
+    EXPECT_EQ(columns, static_cast<int>(expected.size()));  // every norm compare gives is a column
+    // The paper against the exact solution is not error-free: the equality is not of zeros.
+    EXPECT_GT(c.at("norms").at("impulse").get<double>(), 1e-4);
+  }
 }
 
 }  // namespace

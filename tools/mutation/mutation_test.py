@@ -1,14 +1,16 @@
 #!/usr/bin/env python3
-"""@brief Mutation testing of the paper's integrator: build each mutant (tools/mutation/mutants.py)
-in a scratch copy of the source tree and run the quick verification tier against it.
+"""@brief Mutation testing in every layer: build each mutant (tools/mutation/mutants.py) in a
+scratch copy of the source tree and run against it the tests of the test command that judge it.
 
-Besides the quick tier, the real-gap tests (GEOMETRY_TESTS) run against each mutant.
+A mutant of the paper's code (verify = True, the default) meets the quick verification tier and
+the real-gap tests (GEOMETRY_TESTS); every mutant also meets its own `tests` (ctest names from
+the test command, built from its `targets`). The unmutated tree must pass all of them first.
 
 Usage: tools/mutation-test.sh [--all] [--only NAME[,NAME]] [--out DIR] [--scratch DIR] [--jobs N] [--check]
   default: the fast CI subset (mutants marked ci); --all: every mutant; --check: only check that
   every mutant's text occurs exactly once in the source (no build; ctest mutants_apply).
-Writes OUT/mutation.json: [{"mutant", "what", "killed_by": [gate ids "case:metric"], ...}] and
-OUT/mutation.md; exits 1 when a mutant survives (no gate fails), 2 on a usage or build error of
+Writes OUT/mutation.json: [{"mutant", "layer", "what", "killed_by": [gate ids "case:metric",
+"test:Suite.Name", "ctest:NAME"], ...}] and OUT/mutation.md (a table per layer); exits 1 when a mutant survives (no gate fails), 2 on a usage or build error of
 the unmutated tree. The worktree is never modified: the copy lives in SCRATCH/tree (default
 build-mutation/tree; its build directory SCRATCH/tree/build has the same relative layout as
 build/, so ccache serves every unmutated object).
@@ -70,20 +72,30 @@ def apply_edits(tree: Path, edits):
 
 
 def check_applicable():
-    """Every mutant's old text must occur exactly once in the source, or the mutant tests nothing."""
+    """Every mutant's old text must occur exactly once in the source, or the mutant tests nothing;
+    every mutant has a layer and something that judges it."""
     bad = []
+    listed = sh(["git", "-C", str(ROOT), "ls-files", "--cached", "--others", "--exclude-standard"]).stdout.split("\n")
+    cmake_text = "".join((ROOT / f).read_text() for f in listed if f.endswith("CMakeLists.txt") and (ROOT / f).is_file())
     for m in MUTANTS:
         for rel, old, _ in m["edits"]:
             n = (ROOT / rel).read_text().count(old)
             if n != 1:
                 bad.append(f"{m['name']}: {rel} holds {old!r} {n} times (expected once)")
+        for t in m.get("targets", []):
+            if not re.search(rf"\b{re.escape(t)}\b", cmake_text):
+                bad.append(f"{m['name']}: no CMakeLists.txt names the target {t}")
+        if not m.get("layer"):
+            bad.append(f"{m['name']}: no layer")
+        if not m.get("verify", True) and not m.get("tests"):
+            bad.append(f"{m['name']}: verify = False and no tests: nothing would judge it")
     for b in bad:
         print(f"mutation-test --check: {b}", file=sys.stderr)
     print(f"mutation-test --check: {len(MUTANTS) - len({b.split(':')[0] for b in bad})} / {len(MUTANTS)} mutants apply")
     return 1 if bad else 0
 
 
-def build(build_dir: Path, tree: Path, log: Path):
+def build(build_dir: Path, tree: Path, log: Path, targets):
     env = dict(os.environ)
     env.setdefault("CCACHE_BASEDIR", "/work")
     env.setdefault("CCACHE_DIR", "/work/.ccache")
@@ -94,9 +106,32 @@ def build(build_dir: Path, tree: Path, log: Path):
         if r.returncode:
             log.write_text(r.stdout + r.stderr)
             return False
-    r = sh(["cmake", "--build", str(build_dir), "-j2", "--target", "beamimpact", *GEOMETRY_TESTS], env=env)
+    r = sh(["cmake", "--build", str(build_dir), "-j2", "--target", *targets], env=env)
     log.write_text(r.stdout + r.stderr)
     return r.returncode == 0
+
+
+def targets_of(mutants, verify):
+    """The build targets: the program, the geometry tests when the quick tier runs, each mutant's own."""
+    t = ["beamimpact"] + (GEOMETRY_TESTS if verify else [])
+    for m in mutants:
+        t += [x for x in m.get("targets", []) if x not in t]
+    return t
+
+
+def ctests(build_dir: Path, patterns, log: Path):
+    """Run the tests of the test command whose ctest names match a pattern (a regular expression
+    matched whole, e.g. "CompareRuns\\..*"); return the failed ones as "ctest:NAME". A pattern no
+    test matches counts as failed ("ctest:PATTERN not found"): the mutant list is stale."""
+    if not patterns:
+        return []
+    r = sh(["ctest", "--test-dir", str(build_dir), "-R", "^(" + "|".join(patterns) + ")$", "-j2", "--timeout", "600",
+            "--output-on-failure"])
+    log.write_text(r.stdout + r.stderr)
+    failed = ["ctest:" + m.group(1) for m in re.finditer(r"^\s*\d+ - (\S+) \(", r.stdout, re.M)]
+    ran = re.findall(r"Test\s+#\d+: (\S+) ", r.stdout)
+    failed += [f"ctest:{p} not found" for p in patterns if not any(re.fullmatch(p, n) for n in ran)]
+    return failed
 
 
 def geometry_tests(build_dir: Path, log: Path):
@@ -156,54 +191,75 @@ def main():
     runs.mkdir(parents=True, exist_ok=True)
     sync_tree(tree)
     build_dir, binary = tree / "build", tree / "build/beamimpact"
+    any_verify = any(m.get("verify", True) for m in todo)
 
-    # The unmutated tree must pass: otherwise a "kill" would mean nothing.
-    if not build(build_dir, tree, runs / "baseline.build.log"):
+    # The unmutated tree must pass everything the mutants meet: otherwise a "kill" would mean nothing.
+    if not build(build_dir, tree, runs / "baseline.build.log", targets_of(todo, any_verify)):
         print(f"mutation-test: the unmutated tree does not build (see {runs / 'baseline.build.log'})", file=sys.stderr)
         return 2
-    failed, rc, wall = verify(tree, binary, runs / "baseline", a.jobs)
-    failed += geometry_tests(build_dir, runs / "baseline.tests.log")
+    failed, rc, wall = verify(tree, binary, runs / "baseline", a.jobs) if any_verify else ([], 0, 0.0)
+    if any_verify:
+        failed += geometry_tests(build_dir, runs / "baseline.tests.log")
+    all_tests = sorted({t for m in todo for t in m.get("tests", [])})
+    failed += ctests(build_dir, all_tests, runs / "baseline.ctest.log")
     if rc != 0 or failed:
-        print(f"mutation-test: the unmutated tree fails the quick tier ({failed}); see {runs / 'baseline.log'}", file=sys.stderr)
+        print(f"mutation-test: the unmutated tree fails ({failed}); see {runs}/baseline*.log", file=sys.stderr)
         return 2
-    print(f"baseline: quick tier passes ({wall:.0f} s)", flush=True)
+    print(f"baseline: quick tier and {len(all_tests)} test(s) pass ({wall:.0f} s quick tier)", flush=True)
 
     results = []
     for m in todo:
-        name = m["name"]
-        entry = {"mutant": name, "what": m["what"], "killed_by": []}
+        name, check_tier = m["name"], m.get("verify", True)
+        entry = {"mutant": name, "layer": m["layer"], "what": m["what"], "killed_by": []}
         try:
             saved = apply_edits(tree, m["edits"])
         except RuntimeError as e:
             print(f"mutation-test: {name}: {e}", file=sys.stderr)
             return 2
+        t0 = time.time()
         try:
-            if not build(build_dir, tree, runs / f"{name}.build.log"):
+            if not build(build_dir, tree, runs / f"{name}.build.log", targets_of([m], check_tier)):
                 entry["killed_by"] = ["build"]  # does not compile: a broken mutant, reported as such
                 entry["note"] = "mutant does not compile"
             else:
-                failed, rc, wall = verify(tree, binary, runs / name, a.jobs)
-                entry["killed_by"] = failed + geometry_tests(build_dir, runs / f"{name}.tests.log")
-                if rc not in (0, 1):
-                    entry["killed_by"].append(f"verify exited {rc}")
-                entry["wall_seconds"] = round(wall, 1)
+                if check_tier:
+                    failed, rc, _ = verify(tree, binary, runs / name, a.jobs)
+                    entry["killed_by"] = failed + geometry_tests(build_dir, runs / f"{name}.tests.log")
+                    if rc not in (0, 1):
+                        entry["killed_by"].append(f"verify exited {rc}")
+                entry["killed_by"] += ctests(build_dir, m.get("tests", []), runs / f"{name}.ctest.log")
         finally:
             for rel, text in saved.items():
                 (tree / rel).write_text(text)
-        verdict = f"killed by {len(entry['killed_by'])} gate(s)" if entry["killed_by"] else "SURVIVED"
-        print(f"{name}: {verdict} {entry['killed_by'][:4]}", flush=True)
+        entry["wall_seconds"] = round(time.time() - t0, 1)
+        verdict = f"killed by {len(entry['killed_by'])}" if entry["killed_by"] else "SURVIVED"
+        print(f"{name} [{m['layer']}]: {verdict} {entry['killed_by'][:4]}", flush=True)
         results.append(entry)
 
     (out / "mutation.json").write_text(json.dumps(results, indent=1) + "\n")
+    (out / "mutation.md").write_text(report(results))
     killed = sum(1 for r in results if r["killed_by"])
-    md = [f"# Mutation score: {killed} / {len(results)} killed (quick tier + geometry tests)\n",
-          "| mutant | what | killed by (gates) |", "|---|---|---|"]
-    for r in results:
-        k = ", ".join(r["killed_by"][:6]) + (f" (+{len(r['killed_by']) - 6})" if len(r["killed_by"]) > 6 else "")
-        md.append(f"| {r['mutant']} | {r['what']} | {k or '**SURVIVED**'} |")
-    (out / "mutation.md").write_text("\n".join(md) + "\n")
-    print(f"mutation score: {killed} / {len(results)}; {out / 'mutation.json'}")
+    print(f"mutation score: {killed} / {len(results)}; {out / 'mutation.md'}")
     return 0 if killed == len(results) else 1
+
+
+def report(results):
+    """Markdown: the score, then one table per layer (mutant, what, killed by)."""
+    killed = sum(1 for r in results if r["killed_by"])
+    md = [f"# Mutation score: {killed} / {len(results)} killed\n",
+          "Killed by: `case:metric` a gate of the quick verification tier, `test:Suite.Name` a real-gap "
+          "test, `ctest:NAME` a test of the test command.\n",
+          "| layer | mutants | killed |", "|---|---|---|"]
+    layers = list(dict.fromkeys(r["layer"] for r in results))
+    for layer in layers:
+        rs = [r for r in results if r["layer"] == layer]
+        md.append(f"| {layer} | {len(rs)} | {sum(1 for r in rs if r['killed_by'])} |")
+    for layer in layers:
+        md += ["", f"## {layer}", "", "| mutant | what | killed by |", "|---|---|---|"]
+        for r in (r for r in results if r["layer"] == layer):
+            k = ", ".join(r["killed_by"][:6]) + (f" (+{len(r['killed_by']) - 6})" if len(r["killed_by"]) > 6 else "")
+            md.append(f"| {r['mutant']} | {r['what']} | {k or '**SURVIVED**'} |")
+    return "\n".join(md) + "\n"
 
 
 if __name__ == "__main__":

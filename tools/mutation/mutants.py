@@ -145,7 +145,7 @@ MUTANTS = [
     dict(name="exact_rigid_spin_sign", layer="exact", ci=False,
          what="the exact rigid-rod impact: the tangential impulse's moment about the centre with the wrong sign",
          edits=[("references/exact/RigidRodImpact.cc", "(c * r.p_n - s * r.p_t)", "(c * r.p_n + s * r.p_t)")],
-         verify=False, tests=[r"RunExact\..*"], targets=["exact_test"]),
+         verify=False, tests=[r"RigidRodImpact\..*", r"RunExact\..*"], targets=["exact_test"]),
     dict(name="ida_struck_point_sign", layer="IDA", ci=False,
          what="IDA's struck point follows the target's axial displacement with the wrong sign",
          edits=[("references/ida/ContactKinematics.cc", "s = sa - dot(t_, ub);", "s = sa + dot(t_, ub);")],

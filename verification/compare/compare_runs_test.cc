@@ -49,6 +49,21 @@ TEST(CompareRuns, ShiftedStep) {
   EXPECT_NEAR(value(c, "energy_final"), 0.0, 1e-15);
 }
 
+// peak_R leaves out every closure row (the first row in contact after an open one): a penalty
+// method's sub-step closure spike is not the force the methods are compared on. Run a has a
+// spike of 10 N at its closure row, then the plateau P = 2 N of reference b: the peaks agree.
+TEST(CompareRuns, ClosureSpikeIsLeftOutOfThePeak) {
+  const double h = 0.01, T = 4.0, ts = 1.0, P = 2.0;
+  const auto a =
+      synthetic(h, T, [&](double t) { return std::abs(t - ts) < h / 2 ? 10.0 : (t > ts ? P : 0.0); });
+  const auto b = synthetic(h, T, [&](double t) { return t >= ts - h / 2 ? P : 0.0; });
+  EXPECT_NEAR(value(compare_runs(a, b), "peak_R"), 0.0, 1e-12);
+  // Not left out: the peak would be 10 N, an error of (10 - 2) / 2 = 4.
+  const auto c = synthetic(
+      h, T, [&](double t) { return std::abs(t - ts - 1.0) < h / 2 ? 10.0 : (t >= ts - h / 2 ? P : 0.0); });
+  EXPECT_NEAR(value(compare_runs(c, b), "peak_R"), 4.0, 1e-12);
+}
+
 // A force scaled by 1 + s: every relative force norm is exactly s (the norms are homogeneous).
 TEST(CompareRuns, ScaledForce) {
   const double s = 0.02;

@@ -301,6 +301,16 @@ toml::table parse_scene_text(const std::string& text, const Scene& sc) {
   }
 }
 
+/// A step in seconds given by --set replaces the file's dt = "auto" and with it the fraction that
+/// belongs to "auto" (no --set can remove a key): the fraction goes unless --set gave it too.
+void drop_auto_fraction(toml::table& root, const Scene& sc) {
+  const auto dt = sc.overrides.find("time.dt");
+  if (dt == sc.overrides.end() || sc.overrides.count("time.fraction")) return;
+  toml::table* time = root["time"].as_table();
+  if (!time || !(*time)["dt"].is_number()) return;
+  time->erase("fraction");
+}
+
 /// @brief Applies the --set key=value overrides to root in order and records them in sc.
 void apply_overrides(toml::table& root, const std::vector<std::string>& overrides, Scene& sc) {
   for (const std::string& o : overrides) {
@@ -308,6 +318,7 @@ void apply_overrides(toml::table& root, const std::vector<std::string>& override
     const auto eq = o.find('=');
     sc.overrides[o.substr(0, eq)] = o.substr(eq + 1);
   }
+  drop_auto_fraction(root, sc);
 }
 
 /// @brief Reads the optional [output] table.

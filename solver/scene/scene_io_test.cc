@@ -69,6 +69,18 @@ TEST(SceneIo, SetOverridesByPathIndexAndName) {
   EXPECT_EQ(s.overrides.at("time.dt"), "0.005");
 }
 
+TEST(SceneIo, SetStepInSecondsOnAnAutoScene) {
+  // S4-45 has dt = "auto" with fraction = 0.5: a step in seconds from --set replaces "auto" and
+  // its fraction (no --set can remove a key); a file that gives both is still refused.
+  const Scene s = load_scene(paper_scene("s4_oblique_45"), {"time.dt=0.001"});
+  ASSERT_TRUE(s.time.dt.has_value());
+  EXPECT_DOUBLE_EQ(*s.time.dt, 0.001);
+  const Scene back = load_scene(paper_scene("s4_oblique_45"), {"time.dt=0.001", "time.dt=\"auto\""});
+  EXPECT_FALSE(back.time.dt.has_value());
+  EXPECT_DOUBLE_EQ(back.time.fraction, 0.5);  // the file's fraction stays with "auto"
+  EXPECT_THROW(load_scene(paper_scene("s4_oblique_45"), {"time.dt=0.001", "time.fraction=0.25"}), SceneError);
+}
+
 // Writes `text` to a temporary scene file and returns the SceneError it raises.
 SceneError error_of(const std::string& text, const std::vector<std::string>& sets = {}) {
   const std::string path = testing::temp_path("bad_scene.toml").string();

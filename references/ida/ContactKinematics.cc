@@ -25,7 +25,10 @@ void append_scaled(std::vector<DofTerm>& out, const std::vector<DofTerm>& in, do
 double ContactFrame::gap(const Eigen::VectorXd& U) const {
   return beyond > 0.0 ? beyond : g0 + apply(n_terms, U);
 }
-double ContactFrame::normal_rate(const Eigen::VectorXd& V) const { return apply(n_terms, V); }
+double ContactFrame::normal_rate(const Eigen::VectorXd& V) const {
+  return apply(n_terms, V) - rate_coupling * apply(t_terms, V);
+}
+double ContactFrame::force_rate(const Eigen::VectorXd& V) const { return apply(n_terms, V); }
 double ContactFrame::tangential_rate(const Eigen::VectorXd& V) const { return apply(t_terms, V); }
 
 ModelContact::ModelContact(const Model& model, const Scene& scene, int contact_index) : model_(model) {
@@ -117,6 +120,11 @@ ContactFrame ModelContact::evaluate(const Eigen::VectorXd& U) const {
   append_scaled(f.n_terms, model_.project(n2, n_), -f.xi2);
   append_scaled(f.t_terms, model_.project(n1, t_), -(1.0 - f.xi2));
   append_scaled(f.t_terms, model_.project(n2, t_), -f.xi2);
+  if (f.beyond == 0.0) {
+    const Vec2 u1 = model_.node_vector(U, n1), u2 = model_.node_vector(U, n2);
+    const Vec2 slope{(u2[0] - u1[0]) / le_, (u2[1] - u1[1]) / le_};
+    f.rate_coupling = dot(n_, slope) / (1.0 + dot(t_, slope));
+  }
   return f;
 }
 

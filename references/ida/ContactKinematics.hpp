@@ -24,12 +24,21 @@ struct ContactFrame {
   int segment = 0;               ///< target element that holds the struck point (sparsity identity)
   double xi2 = 0.0;              ///< weight of the segment's second node (0 at its first node)
   double beyond = 0.0;           ///< m, how far the striker is past the target's end (0 over the surface)
+  /// The struck point slides over a deflected target: d gap/dt = n . V_terms - rate_coupling
+  /// t . V_terms, rate_coupling = n.u_b' / (1 + t.u_b') with u_b' the element chord's slope (its
+  /// displacement per metre along the target). 0 for an end-to-end pair and past the end.
+  double rate_coupling = 0.0;
 
   /// @brief Gap (m) = g0 + n . U over the surface; past the target's end the surface has ended
   /// and the gap is the distance beyond it (> 0: the contact opens, no phantom surface).
   double gap(const Eigen::VectorXd& U) const;
-  /// @brief n . V (m/s) for any vector (gap rate for V).
+  /// @brief d gap / dt (m/s) for a velocity V: n_terms . V less the slide over the deflected
+  /// surface (rate_coupling). The normal force still acts along n_terms (the reference normal,
+  /// as the paper's contact): its power R n_terms . V differs from the spring's by R
+  /// rate_coupling v_t, work the run books in `dissipated` (it may then decrease).
   double normal_rate(const Eigen::VectorXd& V) const;
+  /// @brief n_terms . V (m/s): the velocity along the normal force's direction.
+  double force_rate(const Eigen::VectorXd& V) const;
   /// @brief t . V (m/s): relative tangential (slip) velocity of striker over target.
   double tangential_rate(const Eigen::VectorXd& V) const;
 };

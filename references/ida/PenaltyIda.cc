@@ -140,6 +140,7 @@ struct PenaltyIda::Impl {
     r.gap = r.frame.gap(U);
     r.gap_rate = r.frame.normal_rate(V);
     r.slip_rate = r.frame.tangential_rate(V);
+    r.force_rate = r.frame.force_rate(V);
     r.closed = phase[i] == Phase::kClosed;
     if (r.closed) {
       r.R = laws[i].normal_force(r.gap, r.gap_rate);
@@ -226,8 +227,12 @@ struct PenaltyIda::Impl {
       const ContactReading r = read(i, y);
       out[3 * i] = r.R;
       out[3 * i + 1] = r.tau;
-      // Dashpot power cn g'^2 plus friction power -tau v_t, both >= 0.
-      out[3 * i + 2] = r.closed ? laws[i].cn * r.gap_rate * r.gap_rate - r.tau * r.slip_rate : 0.0;
+      // What the contact forces take from the bodies, -(R force_rate + tau v_t), less what the
+      // spring stores, d(kn g^2/2)/dt = kn g g': the dashpot's cn g'^2 and friction's -tau v_t
+      // (both >= 0), and the reference normal's work on a slide over a deflected target,
+      // R rate_coupling v_t (either sign: energy the linear contact creates or removes).
+      out[3 * i + 2] =
+          r.closed ? -(r.R * r.force_rate + r.tau * r.slip_rate) - laws[i].kn * r.gap * r.gap_rate : 0.0;
     }
     const CMap V(y + n, n);
     out[3 * nc] = V.dot(C * V);

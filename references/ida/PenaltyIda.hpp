@@ -55,7 +55,8 @@ struct ContactReading {
   bool closed = false;
   double R = 0.0, tau = 0.0;                          ///< N
   double gap = 0.0, gap_rate = 0.0, slip_rate = 0.0;  ///< m, m/s, m/s
-  double penalty_energy = 0.0;                        ///< J, kn g^2 / 2 while closed
+  double force_rate = 0.0;      ///< m/s, V along the normal force's direction (its power is R force_rate)
+  double penalty_energy = 0.0;  ///< J, kn g^2 / 2 while closed
   ContactFrame frame;
 };
 

@@ -75,6 +75,10 @@ class ExplicitContactIntegrator {
   const std::vector<ContactPair>& pairs() const { return search_.pairs; }
   /// @brief Per scene contact: its pairs, the declared (or, for node = "all", nearest) one first.
   const std::vector<std::vector<int>>& pair_groups() const { return search_.group; }
+  /// @brief Energy of the initial conditions (J): kinetic 1/2 V0^T M V0 of the scene's
+  /// velocities at U = 0, before any contact force (V^0 carries the step-0 contact force when a
+  /// contact closes in the first step).
+  double initial_energy() const { return initial_energy_; }
   /// @brief Kinetic 1/2 V^T M V and strain energy at step p (J).
   double kinetic_energy() const;
   double strain_energy() const { return fint_.strain_energy(U_); }
@@ -120,6 +124,11 @@ class ExplicitContactIntegrator {
     fint_.apply(U, f);
     if (load_.size()) f -= load_;
   }
+  /// Books the damper's work on the contact part dt/2 M^-1 f_c of the physical velocity: half
+  /// of dt/2 (M^-1 f_c) . C du for the current f_c and the last step's du (damped models).
+  void book_damper_contact_share();
+  /// The damper's share of the step's strain energy change (damped models; J).
+  double damper_strain_share();
 
   const Model& model_;
   double dt_;
@@ -142,6 +151,7 @@ class ExplicitContactIntegrator {
   double dissipated_ = 0.0;
   bool hertz_ = false;            ///< some contact has the Hertz law
   double hertz_energy_ = 0.0;     ///< J, in the Hertz springs (ContactSolver::hertz_energy)
+  double initial_energy_ = 0.0;
   mutable bool v_stale_ = false;  ///< V_ is still to be formed from Vbar_ and fc_
 };
 

@@ -55,6 +55,15 @@ Vec2 DeformedSurface::point(const Eigen::VectorXd& U, int k, double xi) const {
   return {s.a[0] + xi * s.c[0] + w * s.n[0], s.a[1] + xi * s.c[1] + w * s.n[1]};
 }
 
+double DeformedSurface::turn(const Eigen::VectorXd& U, int k, double xi) const {
+  const Shape s = shape(U, k);
+  // d point / d xi = c + w'(xi) n, w' the derivative of the cubic in point().
+  const double dw = s.L * ((1 - 4 * xi + 3 * xi * xi) * s.phi1 + (-2 * xi + 3 * xi * xi) * s.phi2);
+  const Vec2 tangent{s.c[0] + dw * s.n[0], s.c[1] + dw * s.n[1]};
+  const Model::Element& el = model_.elements()[elements_[k]];
+  return std::atan2(cross({el.c, el.s}, tangent), dot({el.c, el.s}, tangent));
+}
+
 RealGap DeformedSurface::gap(const Eigen::VectorXd& U) {
   const Vec2 X = model_.node_position(striker_), us = model_.node_vector(U, striker_);
   const Vec2 x{X[0] + us[0], X[1] + us[1]};

@@ -40,6 +40,10 @@ class DeformedSurface {
   /// @brief Deformed position of the point at xi (0..1) of element e (0-based within the body).
   Vec2 point(const Eigen::VectorXd& U, int e, double xi) const;
 
+  /// @brief How far the deformed centreline's tangent at xi (0..1) of element e has turned from
+  /// the element's reference direction (rad, counter-clockwise positive).
+  double turn(const Eigen::VectorXd& U, int e, double xi) const;
+
  private:
   struct Shape {
     Vec2 a, c, n;

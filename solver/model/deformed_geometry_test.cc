@@ -82,6 +82,25 @@ TEST(DeformedGeometry, ConstantCurvatureFollowsTheCubicNotTheChord) {
 }
 
 // Two collinear rods, end-on: the gap is the distance beyond the target's end.
+// The arc's tangent at arc length a from the middle has turned by -a/rho from x. The cubic
+// turns from its chord by atan(phi), phi the node's rotation relative to the chord (0.05 rad
+// here: atan departs from the angle by phi^3/3 = 4e-5 rad), and inside an element follows the
+// arc to O(le^2 / rho^2) of the turn: 1e-4 rad accepted at le = 1 m, rho = 10 m.
+TEST(DeformedGeometry, TurnOfTheTangentFollowsTheArc) {
+  const double rho = 10.0;
+  const Model m(scene_with_tip({4.5, 0.5}), true);
+  Eigen::VectorXd U = Eigen::VectorXd::Zero(m.size());
+  for (int i = 0; i <= 10; ++i) {
+    const double phi = (i - 5.0) / rho;
+    place(m, U, m.node_id(1, i), {5.0 + rho * std::sin(phi), -rho * (1 - std::cos(phi))}, -phi);
+  }
+  DeformedSurface s(m, 1, m.node_id(0, 1));
+  EXPECT_NEAR(s.turn(U, 7, 0.0), -0.2, 1e-4);
+  EXPECT_NEAR(s.turn(U, 2, 1.0), 0.2, 1e-4);
+  EXPECT_NEAR(s.turn(U, 4, 0.5), 0.05, 1e-4);
+  EXPECT_NEAR(s.turn(Eigen::VectorXd::Zero(m.size()), 4, 0.5), 0.0, 1e-15);
+}
+
 TEST(DeformedGeometry, EndOnGapIsTheDistanceBeyondTheEnd) {
   Scene s;
   s.bodies = {soft_body("A", {-3.0, 0}, {-0.5, 0}, 5), soft_body("B", {0, 0}, {10, 0}, 10)};

@@ -157,23 +157,53 @@ void write_fields(const ExplicitContactIntegrator& in, double t, FieldWriter& fi
   fields.write(t, in.U(), in.V(), fc, ends);
 }
 
+/// Above this turn (rad) of the target under a closed sliding contact the reference normal's
+/// force does work R x turn x slide that the run cannot hold (summary.json "warnings").
+constexpr double kWarnTurn = 0.1;
+
+/// Per scene contact: the largest turn (rad) of the target's deformed centreline under the
+/// struck point while a sliding pair of it carries a force.
+void track_turn(const ExplicitContactIntegrator& in, const std::vector<int>& group,
+                std::vector<DeformedSurface>& surfaces, double& turn_max) {
+  for (int q : group) {
+    if (!in.pairs()[q].can_slide() || in.forces()[q].R <= 0.0) continue;
+    const RealGap g = surfaces[q].gap(in.U());
+    if (g.beyond_end) continue;
+    turn_max = std::max(turn_max, std::abs(surfaces[q].turn(in.U(), g.element, g.xi)));
+  }
+}
+
+/// The warning of a contact whose target turned beyond kWarnTurn (empty otherwise).
+std::string turn_warning(const Scene& scene, std::size_t c, double turn_max) {
+  if (turn_max <= kWarnTurn) return {};
+  const Contact& k = scene.contacts[c];
+  return fmt::format(
+      "contact {} -> {}: the target turned by up to {:.3g} rad under the sliding contact; the "
+      "contact force keeps the target's reference normal (linear contact kinematics), so on a "
+      "turned target it works on the slide and energy is created or lost (see dissipated and "
+      "energy_final); keep the target's turn under the contact below {} rad (a stiffer target, "
+      "a lighter or slower striker) for the energy to hold",
+      scene.bodies[k.striker].name, scene.bodies[k.target].name, turn_max, kWarnTurn);
+}
+
 /// Records the complete step p: contact samples and real gaps every step, a row (and the fields,
 /// when asked for) every output_every-th step and at the last one. Throws when the energy is no
 /// longer finite or has grown 1e6-fold.
 void record_step(const ExplicitContactIntegrator& integ, long p, long N, const Scene& scene,
                  double critical_dt, std::vector<DeformedSurface>& surfaces, ResultRecorder& rec,
-                 FieldWriter* fields) {
+                 FieldWriter* fields, std::vector<double>& turn_max) {
   const auto& groups = integ.pair_groups();
   for (std::size_t c = 0; c < groups.size(); ++c) {
     const ContactForce f = view(integ, groups[c]).f;
     rec.sample(c, integ.time(), f.R, f.tau, integ.dt(), f.state);
     for (int q : groups[c]) rec.track_real_gap(c, integ.time(), surfaces[q].gap(integ.U()).gap);
+    track_turn(integ, groups[c], surfaces, turn_max[c]);
   }
   if (p % scene.time.output_every != 0 && p != N) return;
   HistoryRow row = make_row(integ);
   const double E = row.kinetic + row.strain;
   // Loads feed the energy: the bound is on the initial energy plus their work so far.
-  const double E0 = (p == 0 ? E : rec.result().energy_initial) + std::abs(row.load_work);
+  const double E0 = rec.result().energy_initial + std::abs(row.load_work);
   if (!std::isfinite(E) || E > 1e6 * E0 + 1e-300)
     throw std::runtime_error(fmt::format(
         "the run diverged at t = {:.6g} s (energy {:.3g} J from {:.3g} J) with dt = {:.6g} s, critical "
@@ -222,14 +252,16 @@ SimulationResult solve(const Scene& scene_in, const std::filesystem::path& field
 
   ExplicitContactIntegrator integ(model, scene, effects, r.dt, options.surface);
   integ.set_closure_slip(options.closure_slip);
+  rec.set_initial_energy(integ.initial_energy());
   std::vector<DeformedSurface> surfaces;  // the real gap of each pair, from the deformed geometry
   for (const ContactPair& pair : integ.pairs())
     surfaces.emplace_back(model, pair.target_body(), pair.striker_node());
   std::optional<FieldWriter> fields;
   if (!fields_dir.empty()) fields.emplace(model, fields_dir, scene.output.field_format);
   Progress progress("paper", scene.time.end);
+  std::vector<double> turn_max(scene.contacts.size(), 0.0);
   for (long p = 0;; ++p) {
-    record_step(integ, p, N, scene, cs.dt, surfaces, rec, fields ? &*fields : nullptr);
+    record_step(integ, p, N, scene, cs.dt, surfaces, rec, fields ? &*fields : nullptr, turn_max);
     if (p == N) break;
     integ.step();
     progress.update(integ.time());
@@ -245,6 +277,11 @@ SimulationResult solve(const Scene& scene_in, const std::filesystem::path& field
   std::vector<ContactKind> kinds;
   for (const auto& group : integ.pair_groups()) kinds.push_back(integ.pairs()[group.front()].kind());
   SimulationResult result = rec.finish(kinds);
+  for (std::size_t c = 0; c < scene.contacts.size(); ++c) {
+    result.contacts[c].extra["target_turn_max"] = turn_max[c];
+    if (const std::string w = turn_warning(scene, c, turn_max[c]); !w.empty())
+      result.extra["warnings"].push_back(w);
+  }
   for (std::size_t c = 0; c < scene.contacts.size(); ++c) {
     result.contacts[c].friction = scene.contacts[c].friction;  // as applied
     result.contacts[c].extra["contact_search"] =

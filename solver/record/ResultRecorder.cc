@@ -43,7 +43,7 @@ void ResultRecorder::track_momentum(const Vec2& p) {
 
 void ResultRecorder::add_row(HistoryRow row) {
   const double E = row.kinetic + row.strain;
-  if (rows_++ == 0) r_.energy_initial = E;
+  if (rows_++ == 0 && !initial_energy_set_) r_.energy_initial = E;
   r_.energy_final = E;
   load_work_final_ = row.load_work;
   if (scene_.output.history) r_.history.push_back(std::move(row));

@@ -58,9 +58,16 @@ class ResultRecorder {
   /// @brief Total linear momentum (N s); the drift is measured from the first value given.
   void track_momentum(const Vec2& p);
 
-  /// @brief One output row: the first row's kinetic + strain energy is E0, the last one's is the
-  /// final energy. The row is kept for history.csv unless the scene says [output] history = false.
+  /// @brief One output row: the first row's kinetic + strain energy is E0 (unless
+  /// set_initial_energy() gave it), the last one's is the final energy. The row is kept for
+  /// history.csv unless the scene says [output] history = false.
   void add_row(HistoryRow row);
+  /// @brief E0 (J) from the initial conditions, for a method whose t = 0 row already carries a
+  /// contact force in its velocity (the paper's V^0 when the contact closes in the first step).
+  void set_initial_energy(double E0) {
+    r_.energy_initial = E0;
+    initial_energy_set_ = true;
+  }
 
   /// @brief Centre-of-mass velocity (m/s) of a body at the end of the run.
   void set_final_velocity(const std::string& body, const Vec2& v) { r_.final_velocity[body] = v; }
@@ -78,6 +85,7 @@ class ResultRecorder {
   const Scene& scene_;
   SimulationResult r_;
   std::vector<ContactStats> stats_;
+  bool initial_energy_set_ = false;
   std::vector<std::pair<double, double>> real_gap_;  ///< per contact: smallest real gap (m) and its time (s)
   double load_work_final_ = 0.0;                     ///< J, the last row's load_work
   long rows_ = 0;                                    ///< output rows seen (kept or not: [output] history)

@@ -50,6 +50,8 @@ void simulate(const RunArgs& a) {
   if (a.dt != 0.0) o.dt = a.dt;
   const SimulationResult r = beamimpact::run(a.scene, a.method, o);
   if (!a.quiet) print_result(r, a.out);
+  if (const auto w = r.extra.find("warnings"); w != r.extra.end())  // also when quiet: on stderr
+    for (const auto& text : *w) fmt::print(stderr, "warning: {}\n", text.get<std::string>());
 }
 
 }  // namespace

@@ -24,33 +24,58 @@ double max_over_rows(std::size_t rows, F f) {
   return m;
 }
 
+/// E0 (J): summary.json's energy_initial (the initial conditions' energy), else the first row's
+/// K + S (a method whose t = 0 row carries a step-0 contact force reports V^0 with it).
+double initial_energy(const StoredRun& run, double first_row) {
+  const nlohmann::json& s = run.summary();
+  if (s.contains("energy_initial") && s["energy_initial"].is_number())
+    return s["energy_initial"].get<double>();
+  return first_row;
+}
+
+/// Largest drop of a cumulative column below its running maximum.
+double largest_drop(const std::vector<double>& d) {
+  double high = d.empty() ? 0.0 : d.front(), drop = 0.0;
+  for (double v : d) {
+    high = std::max(high, v);
+    drop = std::max(drop, high - v);
+  }
+  return drop;
+}
+
 void energy(const StoredRun& run, Comparison& c) {
   Norm band = make("energy_band", "1",
                    "max_t |K + S + D - W - E0| / E: kinetic + strain + dissipated - load work against the "
                    "initial energy, E = E0 + max_t |W| (W = 0 without loads or a load_work column)");
   Norm growth =
       make("energy_growth", "1", "max_t max(0, K + S + D - W - E0) / E: energy created (instability)");
+  Norm drop = make("dissipated_decrease", "1",
+                   "max_t (max_{t' <= t} D(t') - D(t)) / E: the dissipated energy never decreases (a "
+                   "decrease is energy created and hides in K + S + D)");
   for (const char* col : {"kinetic", "strain", "dissipated"})
-    if (!run.has(col)) band.unavailable = growth.unavailable = std::string("no column ") + col;
+    if (!run.has(col))
+      band.unavailable = growth.unavailable = drop.unavailable = std::string("no column ") + col;
   if (band.unavailable.empty()) {
     const auto& K = run.column("kinetic");
     const auto& S = run.column("strain");
     const auto& D = run.column("dissipated");
     const std::vector<double> zero(K.size(), 0.0);
     const auto& W = run.has("load_work") ? run.column("load_work") : zero;
-    const double E0 = K[0] + S[0] - W[0];
+    const double E0 = initial_energy(run, K[0] + S[0] - W[0]);
     const double E = E0 + max_over_rows(W.size(), [&](std::size_t i) { return std::abs(W[i]); });
     if (E > 0.0) {
       band.value = max_over_rows(K.size(),
                                  [&](std::size_t i) { return std::abs(K[i] + S[i] + D[i] - W[i] - E0) / E; });
       growth.value = max_over_rows(
           K.size(), [&](std::size_t i) { return std::max(0.0, K[i] + S[i] + D[i] - W[i] - E0) / E; });
+      drop.value = largest_drop(D) / E;
     } else {
-      band.unavailable = growth.unavailable = "initial energy and load work are zero";
+      band.unavailable = growth.unavailable = drop.unavailable = "initial energy and load work are zero";
     }
   }
   c.norms.push_back(band);
   c.norms.push_back(growth);
+  c.norms.push_back(drop);
 }
 
 void contact_forces(const StoredRun& run, Comparison& c) {
@@ -115,8 +140,9 @@ void geometry_and_momentum(const StoredRun& run, Comparison& c) {
 }  // namespace
 
 const std::vector<std::string>& check_names() {
-  static const std::vector<std::string> n = {"energy_band",   "energy_growth", "tension",
-                                             "friction_cone", "penetration",   "momentum_drift"};
+  static const std::vector<std::string> n = {"energy_band",   "energy_growth", "dissipated_decrease",
+                                             "tension",       "friction_cone", "penetration",
+                                             "momentum_drift"};
   return n;
 }
 

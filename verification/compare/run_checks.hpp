@@ -13,8 +13,8 @@
 
 namespace beamimpact::verification {
 
-/// @brief The health metrics of a run: energy_band, energy_growth, tension, friction_cone,
-/// penetration, momentum_drift (definitions in each Norm). A metric the run cannot give (no
+/// @brief The health metrics of a run: energy_band, energy_growth, dissipated_decrease, tension,
+/// friction_cone, penetration, momentum_drift (definitions in each Norm). A metric the run cannot give (no
 /// dissipated column, no friction coefficient in the summary, ...) is unavailable with the reason.
 Comparison check_run(const StoredRun& run);
 

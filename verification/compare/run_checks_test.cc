@@ -7,9 +7,9 @@ namespace beamimpact::verification {
 namespace {
 
 // Three rows: E0 = K + S = 10 J; row 1 books 1 J too little (K + S + D = 9), row 2 creates
-// 0.5 J (10.5): band 0.1, growth 0.05. R = {0, 4, -0.2}: tension 0.2 / 4 = 0.05. With mu = 0.5,
-// tau = {0, 2.5, 0}: |tau| - mu R = 0.5 at row 1: cone 0.5 / 4 = 0.125. Momentum 2 N s, drift
-// 1e-3 N s: 5e-4. Real gap -3 mm: penetration 3e-3 m.
+// 0.5 J (10.5): band 0.1, growth 0.05; D falls from 1 to 0.5 J: dissipated_decrease 0.05. R = {0, 4, -0.2}:
+// tension 0.2 / 4 = 0.05. With mu = 0.5, tau = {0, 2.5, 0}: |tau| - mu R = 0.5 at row 1: cone 0.5 / 4 =
+// 0.125. Momentum 2 N s, drift 1e-3 N s: 5e-4. Real gap -3 mm: penetration 3e-3 m.
 StoredRun hand_made() {
   std::map<std::string, std::vector<double>> c;
   c["t"] = {0.0, 1.0, 2.0};
@@ -30,11 +30,23 @@ TEST(RunChecks, KnownAnswers) {
   auto v = [&](const char* n) { return c.find(n)->value.value_or(-1.0); };
   EXPECT_NEAR(v("energy_band"), 0.1, 1e-15);
   EXPECT_NEAR(v("energy_growth"), 0.05, 1e-15);
+  EXPECT_NEAR(v("dissipated_decrease"), 0.05, 1e-15);
   EXPECT_NEAR(v("tension"), 0.05, 1e-15);
   EXPECT_NEAR(v("friction_cone"), 0.125, 1e-15);
   EXPECT_NEAR(v("penetration"), 3e-3, 1e-18);
   EXPECT_NEAR(v("momentum_drift"), 5e-4, 1e-15);
   for (const std::string& n : check_names()) EXPECT_NE(c.find(n), nullptr) << n;
+}
+
+TEST(RunChecks, InitialEnergyFromTheSummaryWhenGiven) {
+  // A t = 0 row with a step-0 contact force in its velocity: K[0] = 9.5 J, while the initial
+  // conditions held 10 J (summary.json). Band against 10 J: row 0 books 0.5 J too little (0.05).
+  StoredRun r = hand_made();
+  r.columns()["kinetic"] = {9.5, 6.0, 5.5};
+  nlohmann::json summary = r.summary();
+  summary["energy_initial"] = 10.0;
+  const Comparison c = check_run(StoredRun::from_columns(r.columns(), summary, "closed at t = 0"));
+  EXPECT_NEAR(c.find("energy_band")->value.value_or(-1.0), 0.05, 1e-15);
 }
 
 TEST(RunChecks, MissingInputsAreUnavailableWithAReason) {

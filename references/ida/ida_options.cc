@@ -13,8 +13,11 @@ IdaOptions read_ida_options(const Scene& scene, double dt, double v_scale,
     if (!(v > 0.0)) r.fail(key, "expected a positive number, got " + std::to_string(v));
     return v;
   };
-  o.rtol = r.number_or("rtol", o.rtol, "a relative tolerance in (0, 0.1]");
-  if (!(o.rtol > 0.0 && o.rtol <= 0.1)) r.fail("rtol", "expected a number in (0, 0.1]");
+  // Below 1e-14 (~100 x the double's unit roundoff 1.1e-16) IDA cannot meet the tolerance and
+  // stops at t = 0 ("too much accuracy requested").
+  o.rtol = r.number_or("rtol", o.rtol, "a relative tolerance in [1e-14, 0.1]");
+  if (!(o.rtol >= 1e-14 && o.rtol <= 0.1))
+    r.fail("rtol", "expected a relative tolerance in [1e-14, 0.1] (below 1e-14 double precision cannot meet it)");
   // Displacements of the paper's scenes are O(0.01-1) m and speeds O(1) m/s: an absolute
   // tolerance 1e-3 x rtol keeps the relative test in charge except near zero crossings.
   o.atol = positive("atol", r.number_or("atol", 1e-3 * o.rtol, "a positive absolute tolerance"));

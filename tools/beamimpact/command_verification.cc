@@ -1,5 +1,6 @@
 #include "command_verification.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -133,6 +134,9 @@ void sweep(SweepArgs& a) {
     fmt::print("\n");
   }
   fmt::print("errors against {}\nreport: {}\n", r.reference_label, (fs::path(a.out) / "sweep.md").string());
+  if (std::all_of(r.points.begin(), r.points.end(),
+                  [](const SweepPoint& p) { return p.outcome.status == JobOutcome::Status::kNotApplicable; }))
+    throw InputError(a.scene, "", "every run of the sweep was refused: " + r.points.front().outcome.message);
   if (interruption()) {
     fmt::print(stderr, "sweep: interrupted (signal {}): the report is marked incomplete\n", interruption());
     throw CommandExit{interrupted_exit_code()};

@@ -58,6 +58,7 @@ class Loader {
       if (st.has("root"))
         m.root = m.file.parent_path() / st.string("root", "a directory relative to the matrix file");
       m.timeout = st.number_or("timeout", m.timeout, "a positive number of seconds per run");
+      if (!(m.timeout > 0.0)) st.fail("timeout", "expected a positive number of seconds per run");
       st.finish();
     }
     m.root = m.root.lexically_normal();
@@ -118,10 +119,12 @@ class Loader {
       if (!(*s.dt > 0.0)) r.fail("dt", "expected a positive time step (s)");
     }
     if (const toml::node* n = mesh_ladder ? nullptr : r.raw("mesh")) {
-      if (auto i = n->value<long>())
+      if (auto i = n->value<long>()) {
+        if (*i < 1) r.fail("mesh", "expected a whole element multiplier >= 1");
         s.mesh = std::to_string(*i);
-      else if (auto str = n->value<std::string>())
+      } else if (auto str = n->value<std::string>()) {
         s.mesh = *str;
+      }
       else
         r.fail("mesh", "expected an element multiplier or a method's mesh preset name");
     }

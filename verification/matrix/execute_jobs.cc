@@ -26,7 +26,10 @@ JobOutcome execute_job(const JobSpec& spec, const std::filesystem::path& dir, co
   }
   std::error_code ec;
   std::filesystem::remove_all(dir, ec);  // never mistake an old result for this run's
-  std::filesystem::create_directories(dir);
+  if (std::filesystem::create_directories(dir, ec); ec) {  // in a worker thread: never throw
+    o.message = fmt::format("cannot create {}: {}", dir.string(), ec.message());
+    return o;
+  }
   std::vector<std::string> argv;
   try {
     argv = launcher.argv(spec, dir);

@@ -40,6 +40,10 @@ std::optional<SweepResult> execute_sweep(const SweepOptions& o, const Launcher& 
                      "expected either --dt LIST or --fraction LIST (for dt = \"auto\" scenes)");
   for (double v : steps)
     if (!(v > 0.0)) throw InputError(o.scene.string(), key, "expected positive values");
+  for (double v : o.fractions)
+    if (v > 1.0)
+      throw InputError(o.scene.string(), key,
+                       fmt::format("expected fractions of the critical step in (0, 1], got {:g}", v));
   std::error_code unreadable;  // a path the file system refuses (too long) is not found either
   if (!fs::exists(o.scene, unreadable)) throw InputError(o.scene.string(), "", "scene file not found");
   const Method& method = beamimpact::method(o.method, o.scene.string(), "--method");
@@ -78,14 +82,19 @@ std::optional<SweepResult> execute_sweep(const SweepOptions& o, const Launcher& 
   }
   std::vector<JobSpec> all = specs;
   if (ref) all.push_back(*ref);
-  // Bad input (a mesh multiplier of 0, an unknown reference method) is refused before any run.
+  // Bad input (a mesh multiplier of 0, an unknown reference method, an --out that cannot be a
+  // directory) is refused before any run.
   for (const JobSpec& s : all) (void)launcher.argv(s, o.out);
+  if (std::error_code ec; fs::create_directories(o.out / "runs", ec), ec)
+    throw InputError(o.out.string(), "--out", "expected a directory that can be written: " + ec.message());
   const auto ran = o.executor ? o.executor(all, o.out / "runs", launcher, o.jobs, o.timeout)
                               : execute_jobs(all, o.out / "runs", launcher, o.jobs, o.timeout);
   if (!ran) return std::nullopt;
   const auto& outcomes = *ran;
   if (ref) {
     const JobOutcome& ro = outcomes.at(ref->key());
+    if (ro.status == JobOutcome::Status::kNotApplicable)
+      throw InputError(o.scene.string(), "--reference", "the reference run " + ref->label() + " was refused: " + ro.message);
     if (ro.status != JobOutcome::Status::kOk)
       throw std::runtime_error("reference run " + ref->label() + " " + status_name(ro.status) + ": " +
                                ro.message);
@@ -161,7 +170,10 @@ void write_sweep(const SweepOptions& o, const SweepResult& r, const std::string&
                                     fmt::format("{:.4g}", p.outcome.process_seconds)};
     for (const auto& n : names) {
       csv_row.push_back(cell(c, n));
-      md_row.push_back(c ? cell(c, n) : std::string(status_name(p.outcome.status)));
+      // A run without a comparison says why once, in its first norm's cell: "not applicable: reason".
+      md_row.push_back(c                 ? cell(c, n)
+                       : n == names[0] ? fmt::format("{}: {}", status_name(p.outcome.status), p.outcome.message)
+                                       : "-");
     }
     csv.add(csv_row);
     md.add(md_row);

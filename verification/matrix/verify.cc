@@ -63,6 +63,11 @@ std::optional<VerifyResult> verify(const VerifyOptions& o, const std::filesystem
     throw InputError(o.matrix.string(), "--jobs", "expected a positive number of parallel runs");
   const VerificationMatrix m = VerificationMatrix::load(o.matrix);
   const Selection s = select(m, o);
+  if (s.cases.empty() && s.ladders.empty() && s.checks.empty())
+    throw InputError(o.matrix.string(), o.only.empty() ? "--tier" : "--only",
+                     "expected a selection with at least one case, ladder or check; tier '" + o.tier + "'" +
+                         (o.only.empty() ? "" : " has no item whose name contains '" + o.only + "'") +
+                         " (a verify of nothing would pass)");
   Launcher launcher;
   launcher.exe = exe;
   launcher.methods_files = loaded_methods_files();  // each run sees the same registry

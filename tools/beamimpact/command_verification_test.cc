@@ -133,6 +133,56 @@ gates = [{ metric = "impluse", tol = 0.01, why = "misspelt metric name" }]
   EXPECT_FALSE(fs::exists(tmp_ / "v" / "report.md"));
 }
 
+// Matrix values out of range are refused at load (exit 2 naming the key), never run: a timeout
+// <= 0 killed every run, a mesh multiplier 0 reached the launcher.
+TEST_F(Commands, MatrixTimeoutAndMeshOutOfRangeExitTwo) {
+  struct Bad {
+    const char* body;
+    const char* key;
+  } bad[] = {
+      {"[settings]\ntimeout = -5\n", "settings.timeout"},
+      {"[[case]]\nscene = \"s1\"\nmethod = \"paper\"\nmesh = 0\nreference = { method = \"exact\" }\n"
+       "gates = [{ metric = \"impulse\", tol = 0.04, why = \"x\" }]\n",
+       "case[0].mesh"},
+  };
+  for (const Bad& b : bad) {
+    // The [settings] table of the helper comes first; a second one would be a TOML error, so the
+    // timeout case writes its own file.
+    fs::path m = tmp_ / "bad.toml";
+    if (std::string(b.key) == "settings.timeout")
+      std::ofstream(m) << b.body << "root = \"" << src_.string() << "\"\n";
+    else
+      m = matrix(b.body);
+    const Result r = run(fmt::format("verify '{}' --out '{}'", m.string(), (tmp_ / "v").string()));
+    EXPECT_EQ(r.code, 2) << b.key << ": " << r.out;
+    EXPECT_NE(r.out.find(fmt::format("key '{}'", b.key)), std::string::npos) << b.key << ": " << r.out;
+  }
+}
+
+// A verify of nothing would pass: an --only that matches no item is bad input.
+TEST_F(Commands, VerifyOfAnEmptySelectionExitsTwo) {
+  const Result r =
+      run(fmt::format("verify verification/matrix.toml --only NOMATCH --out '{}'", (tmp_ / "v").string()));
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("--only"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("passed"), std::string::npos) << r.out;
+}
+
+// sweep: a fraction above the critical step and an --out that is a file are refused before any
+// run (a file as --out aborted with an uncaught filesystem_error in a worker thread).
+TEST_F(Commands, SweepRefusesFractionAboveOneAndAFileAsOut) {
+  const std::string s4 = "verification/scenes/paper/s4_oblique_90.toml";
+  Result r = run(fmt::format("sweep {} --fraction 0.5,2 --out '{}'", s4, (tmp_ / "f").string()));
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("expected fractions of the critical step in (0, 1], got 2"), std::string::npos)
+      << r.out;
+  const fs::path file = tmp_ / "a_file";
+  std::ofstream(file) << "not a directory\n";
+  r = run(fmt::format("sweep verification/scenes/paper/s1_central.toml --dt 0.01 --out '{}'", file.string()));
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("key '--out'"), std::string::npos) << r.out;
+}
+
 // A scene path the file system refuses (a name longer than NAME_MAX, found by the matrix fuzz
 // target: std::filesystem threw "File name too long" through verify) is a missing scene: exit 2
 // naming the key, like any other path that does not exist. The same for sweep's scene and run's
@@ -234,8 +284,9 @@ TEST_F(Commands, BadCompareAndSweepOptionsExitTwo) {
   const Result ref =
       run(fmt::format("sweep {} --dt 0.01 --reference bogus --out '{}'", s1, (tmp_ / "sw").string()));
   EXPECT_EQ(ref.code, 2) << ref.out;
-  EXPECT_NE(ref.out.find("expected a method name (paper, exact, ida, fenicsx, siconos, example), got 'bogus'"),
-            std::string::npos)
+  EXPECT_NE(
+      ref.out.find("expected a method name (paper, exact, ida, fenicsx, siconos, example), got 'bogus'"),
+      std::string::npos)
       << ref.out;
 }
 

@@ -89,8 +89,8 @@ def solve(m, M, K, C, state, F, P):
             line += [Rc, 0.0, gap, g("striker_x", u0), g("striker_y", u0), g("striker_x", v0), g("striker_y", v0),
                      g("target_x", u0), g("target_y", u0), g("target_x", v0), g("target_y", v0), 3 if Rc > 0 else 0]
         kinetic = 0.5 * v0 @ (M @ v0)
-        e0 = out[0][-5] + out[0][-4] if out else kinetic + strain
-        out.append(line + [kinetic, strain, e0 + F @ u0 - F0 - kinetic - strain, Px @ v0, Py @ v0])
+        e0 = out[0][-6] + out[0][-5] if out else kinetic + strain
+        out.append(line + [kinetic, strain, e0 + F @ u0 - F0 - kinetic - strain, F @ u0 - F0, Px @ v0, Py @ v0])
     final = {b["name"]: {"final_velocity": [P[:, 1 + 2 * i] @ v / b["mass"], P[:, 2 + 2 * i] @ v / b["mass"]]}
              for i, b in enumerate(m["bodies"])}
     return np.array(out), [s.summary(c, k) for s, c, k in zip(stats, contacts, kp)], final, sub, steps
@@ -101,7 +101,7 @@ def write(args, m, out, contacts, final, sub, steps, wall):
     cols = ["t"] + [c + (f"_{k + 1}" if k else "") for k in range(len(contacts)) for c in
                    "R tau gap ua_x ua_y va_x va_y ub_x ub_y vb_x vb_y state".split()]
     with open(os.path.join(args.out, "history.csv"), "w") as f:
-        f.write(",".join(cols + ["kinetic", "strain", "dissipated", "px", "py"]) + "\n")
+        f.write(",".join(cols + ["kinetic", "strain", "dissipated", "load_work", "px", "py"]) + "\n")
         f.writelines(",".join(repr(float(x)) for x in r) + "\n" for r in out)
     for k, c in enumerate(contacts):  # the least gap of the linear rows (no deformed geometry here)
         c["real_gap_min"], c["real_gap_min_time"] = out[:, 3 + 12 * k].min(), out[np.argmin(out[:, 3 + 12 * k]), 0]
@@ -111,7 +111,7 @@ def write(args, m, out, contacts, final, sub, steps, wall):
                "dt": m["time"]["dt"], "steps": steps, "end_time": m["time"]["end"], "wall_seconds": wall,
                "critical_dt": m["time"]["critical_dt"] or 0.0, "effects": m["effects"],
                "assumed": {**m["assumed"], "penalty": f"{PENALTY} x EA/le"}, "overrides": m["overrides"],
-               "energy_initial": out[0, -5] + out[0, -4], "energy_final": out[-1, -5] + out[-1, -4],
+               "energy_initial": out[0, -6] + out[0, -5], "energy_final": out[-1, -6] + out[-1, -5],
                "momentum_drift_max": np.abs(out[:, -2:] - out[0, -2:]).max(), "bodies": final,
                "contacts": contacts, "units": {"t": "s", "R": "N", "tau": "N", "gap": "m", "u": "m", "v": "m/s", "energy": "J",
                                                "momentum": "N s", "impulse": "N s"}, "complete": True}

@@ -106,3 +106,20 @@ several_contacts = true
     r = conform(tmp_path, name, methods)
     assert r.returncode == 1, r.stdout + r.stderr
     assert f"[FAIL] {rule}" in r.stdout, r.stdout
+
+
+def test_gravity_work_is_the_free_fall_of_the_bouncing_bar(tmp_path):
+    # Free fall before the first touch (at 1 s): the loads' work is m g^2 t^2 / 2 (m = 10 kg,
+    # g = 10 m/s^2). Central differences are exact for a constant acceleration: roundoff only.
+    scene = os.path.join(ROOT, "verification", "scenes", "benchmarks", "bouncing_bar.toml")
+    out = tmp_path / "bar"
+    r = subprocess.run(["/usr/bin/python3", os.path.join(HERE, "penalty_central.py"), scene, "--out", str(out),
+                        "--beamimpact", EXE, "--quiet"], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    with open(out / "history.csv") as f:
+        head = f.readline().strip().split(",")
+        rows = [dict(zip(head, map(float, line.split(",")))) for line in f]
+    before = [row for row in rows if row["t"] <= 0.9]
+    assert len(before) > 10
+    for row in before:
+        assert row["load_work"] == pytest.approx(10.0 * 100.0 * row["t"] ** 2 / 2, rel=1e-9, abs=1e-9)

@@ -11,7 +11,7 @@ import os
 import numpy as np
 
 CONTACT_COLUMNS = ["R", "tau", "gap", "ua_x", "ua_y", "va_x", "va_y", "ub_x", "ub_y", "vb_x", "vb_y", "state"]
-MODEL_COLUMNS = ["kinetic", "strain", "dissipated", "px", "py"]
+MODEL_COLUMNS = ["kinetic", "strain", "dissipated", "load_work", "px", "py"]  # load_work: F . (u - u0), J
 OPEN, STICK, SLIP, CLOSED = 0, 1, 2, 3  # column `state`
 MERGE_STEPS = 3
 
@@ -114,7 +114,7 @@ class Recorder:
             line.append(state)
         dissipated = self.e0 + work - kinetic - strain
         if self.k % self.every == 0 or last:
-            self.rows.append(line + [kinetic, strain, dissipated, p[0], p[1]])
+            self.rows.append(line + [kinetic, strain, dissipated, work, p[0], p[1]])
         self.k += 1
 
 

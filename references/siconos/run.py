@@ -63,7 +63,7 @@ def summary_of(model, opts, rec, steps, dt, wall, version):
                     "siconos.restitution": str(opts.restitution),
                     "siconos.contact_point": "fixed at t = 0 (the exported linear rows)"},
         "overrides": doc["overrides"],
-        "energy_initial": first[-5] + first[-4], "energy_final": last[-5] + last[-4],
+        "energy_initial": first[-6] + first[-5], "energy_final": last[-6] + last[-5],
         "momentum_drift_max": rec.drift,
         "bodies": {name: {"final_velocity": v} for name, v in model.final_velocities(rec.v_final).items()},
         "contacts": [s.summary(c) for s, c in zip(rec.stats, model.contacts)],

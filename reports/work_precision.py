@@ -3,16 +3,25 @@
 curve (the paper integrator over dt and mesh ladders, IDA over rtol, FEniCSx over meshes, Siconos over meshes, the exact
 solution over its mode count), error against the best available reference vs the CPU time of the run.
 
-Usage: work_precision.py [--scenes s1_central,...] [--repeats 3] [--out reports/work_precision]
-                         [--runs out/work_precision] [--build build] [--quick] [--replot]
+Usage: work_precision.py [--scenes s1_central,...] [--sizes all|s1_central_x100,...] [--repeats 3]
+                         [--out reports/work_precision] [--runs out/work_precision] [--build build]
+                         [--quick] [--replot]
 
-Each point is `beamimpact run` as a child process, run `--repeats` times one after another
-(`--jobs 1`: nothing else of ours runs meanwhile); its CPU time is the child's user + system time
-from os.wait4 (its own children, the FEniCSx Python process, included). The error comes from
-`beamimpact compare RUN REFERENCE --json` (impulse, and ub.rel_l2: the struck point's
-displacement). Writes OUT/<scene>/work_precision.json and .png, OUT/figures.json (the manifest the
-HTML report reads) and OUT/equal_error.md (ratios of CPU time at equal error). Progress goes to
-stderr: scene, rung, elapsed and estimated time left. --quick: one scene, two rungs per method.
+In-process methods (paper, ida, exact) run through the Python module of --build: each point is
+beamimpact.run() called at least 3 times and until 0.2 s have passed (wp_timing.py), its CPU time
+from time.process_time, wall from time.perf_counter, minimum and maximum kept with every
+repetition and the load average. Their start-up is measured apart: the cheapest rung of each
+run once more as a `beamimpact run` process. Outside methods (FEniCSx, Siconos) run as
+`beamimpact run` child processes, `--repeats` times, CPU = user + system of the child and its
+children (os.wait4), start-up included; `beamimpact --version`, `python3 -c pass` and each outside
+method's check command (interpreter and library import) are timed and shown beside them, never
+subtracted. The error: beamimpact.compare against the reference (impulse, and ub.rel_l2: the
+struck point's displacement). --sizes: S1 and S2 with every body's elements multiplied (about
+1e3 to 1e4 DOFs), paper vs IDA vs Siconos against the exact solution. Writes
+OUT/<set>/work_precision.json and .png, OUT/figures.json (the manifest the HTML report reads) and
+OUT/equal_error.md (ratios of CPU time at equal error with their range over the repeats, and the
+start-ups). Progress goes to stderr: set, rung, elapsed and estimated time left. --quick: two
+rungs per in-process method, one Siconos rung, no FEniCSx.
 """
 import argparse
 import json
@@ -20,19 +29,20 @@ import math
 import os
 import subprocess
 import sys
-import textwrap
 import time
 import tomllib
 
-import matplotlib
+import wp_figures
+import wp_timing
+from wp_figures import ERRORS
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+bi = None  # the beamimpact module of --build, imported in main()
 
 PAPER = "verification/scenes/paper"
-ERRORS = ("impulse", "ub.rel_l2")  # norm names owned by verification/compare (compare_runs.cc)
-ERROR_LABEL = {"impulse": "relative impulse error", "ub.rel_l2": "rel. L2 error of the struck point's displacement"}
-EQUAL_ERROR_LEVELS = (3e-2, 1e-2, 3e-3)  # relative impulse error at which CPU times are compared
+IN_PROCESS = ("paper", "ida", "exact")  # registry methods run through the Python module
+OUTSIDE = ("fenicsx", "siconos")  # methods of verification/methods.toml on the diagrams (processes)
+FENICSX_CMD = ["/usr/bin/python3", "references/fenicsx/run.py"]  # as verification/methods.toml runs it
+EQUAL_ERROR_LEVELS = (3e-2, 1e-2, 1e-3)  # relative impulse error at which CPU times are compared
 
 
 def fail(msg):
@@ -40,11 +50,33 @@ def fail(msg):
     sys.exit(2)
 
 
-class Plan:
-    """The rungs of one scene: (method label, setting label, beamimpact run arguments)."""
+class Rung:
+    """One point of a curve: method label, setting label, registry method, scene overrides
+    ({key: value} as --set key=value) and command-line options of outside methods (--mesh, --dt)."""
 
-    def __init__(self, name, reference, rungs, reference_note):
-        self.name, self.reference, self.rungs, self.reference_note = name, reference, rungs, reference_note
+    def __init__(self, label, setting, method, overrides, cli=()):
+        self.label, self.setting, self.method, self.overrides, self.cli = label, setting, method, overrides, list(cli)
+
+    def in_process(self):
+        return self.method in IN_PROCESS
+
+    def args(self, base):
+        """The `beamimpact run` options of this rung on a scene with overrides `base`."""
+        sets = dict(base, **self.overrides)
+        return (["--method", self.method] if self.method != "paper" else []) + sum(
+            (["--set", f"{k}={toml_value(v)}"] for k, v in sets.items()), []) + self.cli
+
+
+class Plan:
+    """The rungs of one set: its name, the scene file and the overrides every rung shares."""
+
+    def __init__(self, name, path, base, reference, rungs, reference_note):
+        self.name, self.path, self.base, self.reference = name, path, base, reference
+        self.rungs, self.reference_note = rungs, reference_note
+
+
+def toml_value(v):
+    return json.dumps(v) if isinstance(v, str) else repr(v)
 
 
 def scene_info(path):
@@ -54,7 +86,7 @@ def scene_info(path):
 
 
 def mesh_sets(elements, mult):
-    return [f"bodies.{n}.elements={e * mult}" for n, e in elements.items()]
+    return {f"bodies.{n}.elements": e * mult for n, e in elements.items()}
 
 
 def plan_for(name, quick):
@@ -64,68 +96,63 @@ def plan_for(name, quick):
     # Paper integrator: a dt ladder at the scene's mesh, then a mesh ladder.
     if dt == "auto":
         for f in (0.5, 0.25, 0.125)[: 2 if quick else 3]:
-            rungs.append(("paper (dt ladder)", f"fraction {f}", ["--set", f"time.fraction={f}"]))
+            rungs.append(Rung("paper (dt ladder)", f"fraction {f}", "paper", {"time.fraction": f}))
         for m in (2, 4)[: 1 if quick else 2]:
-            rungs.append(("paper (mesh ladder)", f"mesh x{m}, fraction 0.5",
-                          sum((["--set", s] for s in mesh_sets(elements, m)), [])))
+            rungs.append(Rung("paper (mesh ladder)", f"mesh x{m}, fraction 0.5", "paper", mesh_sets(elements, m)))
     else:
         for k in (1, 2, 4)[: 2 if quick else 3]:
-            rungs.append(("paper (dt ladder)", f"dt {dt / k:g}", ["--set", f"time.dt={dt / k!r}"]))
+            rungs.append(Rung("paper (dt ladder)", f"dt {dt / k:g}", "paper", {"time.dt": dt / k}))
         for m in (2, 4, 8, 16, 32)[: 1 if quick else 5]:
             # Bending meshes shrink the stable step like h^2: the mesh rungs take half the critical step.
-            sets = mesh_sets(elements, m) + ['time.dt="auto"', "time.fraction=0.5"]
-            rungs.append(("paper (mesh ladder)", f"mesh x{m}, half critical dt", sum((["--set", s] for s in sets), [])))
+            sets = dict(mesh_sets(elements, m), **{"time.dt": "auto", "time.fraction": 0.5})
+            rungs.append(Rung("paper (mesh ladder)", f"mesh x{m}, half critical dt", "paper", sets))
     # IDA: same beam model, rtol ladder at the scene's mesh.
     for r in (1e-4, 1e-6, 1e-8)[: 2 if quick else 3]:
-        rungs.append(("IDA (rtol ladder)", f"rtol {r:g}", ["--method", "ida", "--set", f"ida.rtol={r:g}"]))
+        rungs.append(Rung("IDA (rtol ladder)", f"rtol {r:g}", "ida", {"ida.rtol": r}))
     if not quick:
-        rungs.append(("IDA (mesh x2)", "mesh x2, rtol 1e-6", ["--method", "ida", "--set", "ida.rtol=1e-6"]
-                      + sum((["--set", s] for s in mesh_sets(elements, 2)), [])))
-    # FEniCSx: the 2D continuum over its mesh presets.
-    for m in ("coarse", "default", "fine")[: 1 if quick else 3]:
-        rungs.append(("FEniCSx (meshes)", f"mesh {m}", ["--method", "fenicsx", "--mesh", m]))
+        rungs.append(Rung("IDA (mesh x2)", "mesh x2, rtol 1e-6", "ida", dict(mesh_sets(elements, 2), **{"ida.rtol": 1e-6})))
+    # FEniCSx: the 2D continuum over its mesh presets (an outside program: timed as a process).
+    for m in ("coarse", "default", "fine")[: 0 if quick else 3]:
+        rungs.append(Rung("FEniCSx (meshes)", f"mesh {m}", "fenicsx", {}, ["--mesh", m]))
     # Siconos (outside solver, verification/methods.toml): Moreau-Jean on the exported model, a mesh
     # ladder with the step scaled with the element. It refuses S4's corotational kinematics.
     if not name.startswith("s4"):
         for m in (1, 2, 4)[: 1 if quick else 3]:
-            rungs.append(("Siconos (mesh ladder)", f"mesh x{m}, dt {dt / m:g}",
-                          ["--method", "siconos", "--mesh", str(m), "--dt", repr(dt / m)]))
+            rungs.append(Rung("Siconos (mesh ladder)", f"mesh x{m}, dt {dt / m:g}", "siconos", {},
+                              ["--mesh", str(m), "--dt", repr(dt / m)]))
     # The exact solution over its mode count (rod on beam only; S1's rods are exact at roundoff).
     if name.startswith(("s2", "s3")):
         for n in (8, 16, 32)[: 1 if quick else 3]:
-            rungs.append(("exact (modes)", f"{n} modes", ["--method", "exact", "--set", f"exact.modes={n}"]))
+            rungs.append(Rung("exact (modes)", f"{n} modes", "exact", {"exact.modes": n}))
     if name.startswith("s4"):
         # No exact solution accepts S4 (friction, oblique): the reference is a converged fine run of
         # the independent time integrator (IDA, same beam model) on a finer mesh.
-        ref = ["--method", "ida", "--set", "ida.rtol=1e-9"] + sum((["--set", s] for s in mesh_sets(elements, 4)), [])
+        ref = Rung("reference", "", "ida", dict(mesh_sets(elements, 4), **{"ida.rtol": 1e-9}))
         note = "IDA, mesh x4, rtol 1e-9 (converged fine run; no exact solution for S4)"
     else:
-        ref = ["--method", "exact"]
+        ref = Rung("reference", "", "exact", {})
         note = "exact (references/exact: " + ("d'Alembert rods" if name.startswith("s1") else "rod on beam, converged modes") + ")"
-    return Plan(name, ref, rungs, note)
+    return Plan(name, path, {}, ref, rungs, note)
 
 
-def run_timed(exe, scene, args, out):
-    """One `beamimpact run`: (exit code, CPU s of the child and its waited-for children, wall s).
-    External methods (FEniCSx) run through it too, as their methods file says."""
-    cmd = [exe, "run", scene, "--out", out, "--quiet"] + args
-    t0 = time.perf_counter()
-    p = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-    err = p.stderr.read().decode(errors="replace")
-    _, status, ru = os.wait4(p.pid, 0)
-    wall = time.perf_counter() - t0
-    p.returncode = os.waitstatus_to_exitcode(status)
-    return p.returncode, ru.ru_utime + ru.ru_stime, wall, err.strip()[-400:]
-
-
-def compare(exe, run_dir, ref_dir):
-    js = os.path.join(run_dir, "compare.json")
-    r = subprocess.run([exe, "compare", run_dir, ref_dir, "--json", js], capture_output=True, text=True)
-    if r.returncode not in (0, 1):
-        return None, r.stderr.strip()[-300:]
-    with open(js) as f:
-        norms = {n["name"]: n.get("value") for n in json.load(f)["norms"]}
-    return {k: norms.get(k) for k in ERRORS}, ""
+def sized_plan(name, mult, quick):
+    """S1 or S2 with every body's elements times `mult` (the sizes where cost matters): the paper
+    integrator over fractions of the critical step, IDA over rtol, Siconos at the same mesh over
+    its step; the exact solution (independent of the mesh) as the reference."""
+    path = f"{PAPER}/{name}.toml"
+    dt, elements = scene_info(path)
+    base = mesh_sets(elements, mult)
+    rungs = [Rung("paper (dt ladder)", f"fraction {f}", "paper", dict(base, **{"time.dt": "auto", "time.fraction": f}))
+             for f in (0.9, 0.5, 0.25)[: 2 if quick else 3]]
+    rungs += [Rung("IDA (rtol ladder)", f"rtol {r:g}", "ida", dict(base, **{"ida.rtol": r}))
+              for r in (1e-4, 1e-6, 1e-8)[: 2 if quick else 3]]
+    # Moreau-Jean is implicit: steps above the explicit limit are stable, so its ladder starts there.
+    rungs += [Rung("Siconos (dt ladder)", f"dt {dt / k:g}", "siconos", base, ["--dt", repr(dt / k)])
+              for k in (mult / 4, mult, mult * 4)[: 1 if quick else 3]]
+    if name.startswith("s2"):
+        rungs += [Rung("exact (modes)", f"{n} modes", "exact", {"exact.modes": n}) for n in (16, 32)]
+    note = "exact (references/exact: " + ("d'Alembert rods" if name.startswith("s1") else "rod on beam, converged modes") + ")"
+    return Plan(f"{name}_x{mult}", path, base, Rung("reference", "", "exact", {}), rungs, note)
 
 
 class Progress:
@@ -139,48 +166,124 @@ class Progress:
               f"~{left:.0f} s left", file=sys.stderr, flush=True)
 
 
-def measure_scene(a, plan, progress, version):
-    scene = f"{PAPER}/{plan.name}.toml"
-    runs = os.path.join(a.runs, plan.name)
-    os.makedirs(runs, exist_ok=True)
-    ref_dir = os.path.join(runs, "reference")
+def cost_of(summary):
+    """The run's own cost figures from its summary.json: steps, DOFs, IDA's counters."""
+    keys = ("steps", "dofs", "wall_seconds", "cost")
+    out = {k: summary[k] for k in keys if k in summary}
+    if "ida" in summary:
+        out["ida"] = {k: summary["ida"].get(k) for k in ("steps", "residual_evals", "jacobian_evals",
+                                                          "nonlinear_conv_fails", "unknowns")}
+    return out
+
+
+def measure_rung(a, plan, k, rung):
+    """(timing summary or None, the run (Run or directory), failure note) of one rung."""
+    if rung.in_process():
+        try:
+            scene = bi.load_scene(plan.path, dict(plan.base, **rung.overrides))  # parsed once, outside the timing
+            timing, run = wp_timing.time_in_process(lambda: bi.run(scene, rung.method, progress=False))
+            return timing, run, ""
+        except bi.InputError as e:
+            return None, None, str(e)
+        except RuntimeError as e:
+            return None, None, f"failed: {e}"
+    out = os.path.join(a.runs, plan.name, f"rung{k:02d}")
+    timing, note = wp_timing.time_process([a.exe, "run", plan.path, "--out", out, "--quiet"] + rung.args(plan.base),
+                                          a.repeats)
+    return timing, out, note
+
+
+def compare(run, ref):
+    try:
+        c = bi.compare(run, ref)
+    except (RuntimeError, ValueError, bi.InputError) as e:
+        return None, f"compare: {e}"
+    return {k: bi.norm(c, k) for k in ERRORS}, ""
+
+
+def measure_scene(a, plan, progress, version, startup):
+    os.makedirs(os.path.join(a.runs, plan.name), exist_ok=True)
     progress.line(plan.name, "reference: " + plan.reference_note)
-    code, cpu, wall, err = run_timed(a.exe, scene, plan.reference, ref_dir)
+    ref = bi.run(bi.load_scene(plan.path, dict(plan.base, **plan.reference.overrides)), plan.reference.method,
+                 progress=False)
     progress.done += 1
-    if code != 0:
-        fail(f"{plan.name}: the reference run failed (exit {code}): {err}")
     points = []
-    for k, (method, setting, args) in enumerate(plan.rungs):
-        progress.line(plan.name, f"{method}: {setting}")
-        out = os.path.join(runs, f"rung{k:02d}")
-        cpus, walls, load, note = [], [], [], ""
-        for rep in range(a.repeats):
-            load.append(os.getloadavg()[0])
-            code, cpu, wall, err = run_timed(a.exe, scene, args, out)
-            if code != 0:
-                note = f"exit {code}: {err}"
-                break
-            cpus.append(cpu)
-            walls.append(wall)
+    for k, rung in enumerate(plan.rungs):
+        progress.line(plan.name, f"{rung.label}: {rung.setting}")
+        timing, run, note = measure_rung(a, plan, k, rung)
         progress.done += 1
-        p = {"method": method, "setting": setting, "args": args, "loadavg_1min": load}
+        p = {"method": rung.label, "method_name": rung.method, "setting": rung.setting, "args": rung.args(plan.base),
+             "timed": "in process" if rung.in_process() else "as a process (`beamimpact run`, start-up included)"}
+        errors = None
+        if timing:
+            errors, note = compare(run, ref)
+            summary = run.summary if rung.in_process() else bi.read_run(run).summary
+            p.update(timing, cost=cost_of(summary))
+        p.update(status="ok" if errors else "failed", error=errors, note=note)
         if note:
-            p.update(status="failed", note=note)
             print(f"[work-precision]   {note}", file=sys.stderr)
-        else:
-            errors, why = compare(a.exe, out, ref_dir)
-            p.update(status="ok" if errors else "failed", error=errors, note=why, cpu_seconds_min=min(cpus),
-                     cpu_seconds_all=cpus, wall=min(walls), wall_all=walls)
         points.append(p)
-    cmd = f"/usr/bin/python3 reports/work_precision.py --scenes {plan.name} --repeats {a.repeats}"
-    return {"scene": scene, "reference": plan.reference_note, "reference_args": plan.reference, "version": version,
-            "command": cmd, "repeats": a.repeats, "jobs": 1, "points": points, "cpu_time": "user + system of the "
-            "child (os.wait4), FEniCSx's Python included", "equal_error": equal_error(points)}
+    cmd = "/usr/bin/python3 reports/work_precision.py " + (f"--sizes {plan.name}" if plan.base else f"--scenes {plan.name}")
+    return {"scene": plan.path, "overrides": plan.base, "dofs": ref_dofs(points), "reference": plan.reference_note,
+            "reference_args": plan.reference.args(plan.base), "version": version, "command": cmd,
+            "repeats": f"in process: at least {wp_timing.MIN_REPEATS} and until {wp_timing.MIN_SECONDS} s "
+                       f"(at most {wp_timing.MAX_REPEATS}); processes: {a.repeats}",
+            "points": points, "startup": startup_for(a, plan, points, startup),
+            "cpu_time": "in process: time.process_time() around beamimpact.run() (the scene parsed before); "
+                        "processes: user + system of the child and its children (os.wait4)",
+            "equal_error": equal_error(points)}
 
 
-def front(points, method, key):
+def ref_dofs(points):
+    """The DOFs of the paper integrator's first run (its summary's count), or None."""
+    for p in points:
+        if p["status"] == "ok" and p["method"].startswith("paper") and "dofs" in p.get("cost", {}):
+            return p["cost"]["dofs"]
+    return None
+
+
+def startup_for(a, plan, points, startup):
+    """Start-up per method, measured and kept apart: for an in-process method the CPU of its
+    cheapest rung run as a `beamimpact run` process minus the same rung in process (the process
+    also writes history.csv); for outside methods the process-wide figures of `startup`."""
+    res = dict(startup)
+    for method in sorted({r.method for r in plan.rungs if r.in_process()}):
+        cands = [(p["cpu_seconds_min"], r) for p, r in zip(points, plan.rungs) if r.method == method and p["status"] == "ok"]
+        if not cands:
+            continue
+        cpu, rung = min(cands, key=lambda c: c[0])
+        out = os.path.join(a.runs, plan.name, f"startup_{method}")
+        timing, note = wp_timing.time_process([a.exe, "run", plan.path, "--out", out, "--quiet"] + rung.args(plan.base),
+                                              a.repeats)
+        if timing:
+            res[method] = {"rung": rung.setting, "process_cpu_seconds_min": timing["cpu_seconds_min"],
+                           "process_wall_seconds_min": timing["wall_seconds_min"], "in_process_cpu_seconds_min": cpu,
+                           "startup_cpu_seconds": timing["cpu_seconds_min"] - cpu, "loadavg_1min": timing["loadavg_1min"]}
+        else:
+            res[method] = {"note": note}
+    return res
+
+
+def process_startup(a):
+    """Start-up of the processes the outside methods pay on every run: the `beamimpact` program
+    (`--version`), the Python interpreter (`python3 -c pass`) and each outside method's own check
+    command (interpreter and its library's import, verification/methods.toml)."""
+    cmds = {"beamimpact --version": [a.exe, "--version"], "python3 -c pass": ["/usr/bin/python3", "-c", "pass"]}
+    with open("verification/methods.toml", "rb") as f:
+        for m in tomllib.load(f)["method"]:
+            if m["name"] in OUTSIDE:
+                cmds[m["name"]] = m["check"]
+    res = {}
+    for name, cmd in cmds.items():
+        timing, note = wp_timing.time_process(cmd, a.repeats)
+        keep = ("cpu_seconds_min", "cpu_seconds_max", "wall_seconds_min", "wall_seconds_max", "loadavg_1min")
+        res[name] = dict({k: timing[k] for k in keep} if timing else {"note": note}, command=" ".join(cmd))
+    return res
+
+
+def front(points, method, key, field="cpu_seconds_min"):
     """(cpu, error) pairs of one method, sorted by CPU time, only those that improve the error."""
-    pts = sorted((p["cpu_seconds_min"], p["error"][key]) for p in points
+    pts = sorted((p[field], p["error"][key]) for p in points
                  if p["status"] == "ok" and p["method"].split(" (")[0] == method and p["error"][key])
     out = []
     for c, e in pts:
@@ -202,141 +305,116 @@ def cpu_at(fr, level):
 
 
 def equal_error(points):
-    """Per impulse-error level: each method's CPU time to reach it and its ratio to the paper integrator's.
-    "<=": the method is below the level at its cheapest rung already, so that rung's cost bounds it."""
+    """Per impulse-error level: each method's CPU time to reach it (min of the repeats, and the
+    same from the max of the repeats) and its ratio to the paper integrator's, with the range
+    min/max .. max/min. "<=": below the level at its cheapest rung already (an upper bound)."""
     methods = ["paper"] + sorted({p["method"].split(" (")[0] for p in points} - {"paper"})
     res = []
     for level in EQUAL_ERROR_LEVELS:
-        cpu = {m: cpu_at(front(points, m, "impulse"), level) for m in methods}
-        paper = cpu["paper"][0]
+        lo = {m: cpu_at(front(points, m, "impulse"), level) for m in methods}
+        hi = {m: cpu_at(front(points, m, "impulse", "cpu_seconds_max"), level) for m in methods}
+        paper, paper_hi = lo["paper"][0], hi["paper"][0]
         parts = []
-        entry = {"impulse_error": level, "cpu_s": {}, "upper_bound": {}, "ratio_to_paper": {}}
+        entry = {"impulse_error": level, "cpu_s": {}, "cpu_s_max": {}, "upper_bound": {}, "ratio_to_paper": {},
+                 "ratio_range": {}}
         for m in methods:
-            c, bound = cpu[m]
-            entry["cpu_s"][m], entry["upper_bound"][m] = c, bound
+            (c, bound), c_hi = lo[m], hi[m][0]
+            entry["cpu_s"][m], entry["cpu_s_max"][m], entry["upper_bound"][m] = c, c_hi, bound
             if c is None:
                 parts.append(f"{m} not reached")
                 continue
             txt = f"{m} {'<=' if bound else ''}{c:.3g} s"
             if m != "paper" and paper:
                 entry["ratio_to_paper"][m] = c / paper
-                txt += f" ({c / paper:.3g} x the paper's)"
+                rng = [c / paper_hi, c_hi / paper] if c_hi and paper_hi else None
+                entry["ratio_range"][m] = rng
+                txt += f" ({c / paper:.3g} x the paper's" + (f", {rng[0]:.3g}-{rng[1]:.3g}" if rng else "") + ")"
             parts.append(txt)
         entry["text"] = f"at {level:.1%} impulse error, CPU time: " + "; ".join(parts)
         res.append(entry)
     return res
 
 
-def plot(res, png):
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.8))
-    fig.subplots_adjust(left=0.07, right=0.98, bottom=0.27, top=0.9, wspace=0.25)
-    methods = []
-    for p in res["points"]:
-        if p["method"] not in methods:
-            methods.append(p["method"])
-    for ax, key in zip(axes, ERRORS):
-        for i, m in enumerate(methods):
-            pts = [p for p in res["points"] if p["method"] == m and p["status"] == "ok" and p["error"][key]]
-            if not pts:
-                continue
-            xs = [p["cpu_seconds_min"] for p in pts]
-            ys = [p["error"][key] for p in pts]
-            lo = [x - x for x in xs]
-            hi = [max(p["cpu_seconds_all"]) - p["cpu_seconds_min"] for p in pts]
-            ax.errorbar(xs, ys, xerr=[lo, hi], fmt="o-" if "ladder" in m or "modes" in m else "s--",
-                        ms=4, capsize=2, label=m, color=f"C{i}")
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.set_xlabel("CPU time of the run (s, min of repeats; bar to max)")
-        ax.set_ylabel(ERROR_LABEL[key])
-        ax.grid(True, which="both", alpha=0.3)
-    axes[0].legend(fontsize=7)
-    fig.suptitle(f"{os.path.basename(res['scene'])}: work-precision against {res['reference']}", fontsize=9)
-    loads = [x for p in res["points"] for x in p["loadavg_1min"]]
-    foot = textwrap.wrap(res["command"], 150) + textwrap.wrap(
-        f"scene {res['scene']} | reference {res['reference']} | beamimpact {res['version']} | "
-        f"{res['repeats']} timings per point, --jobs 1 | load average during timing {min(loads):.1f}-{max(loads):.1f}", 150)
-    fig.text(0.01, 0.01, "\n".join(foot), fontsize=6.5, family="monospace", va="bottom")
-    fig.savefig(png, dpi=100)
-    plt.close(fig)
+SIZES = {"s1_central": (17, 100, 167), "s2_transverse": (22, 222)}  # element multipliers: ~1e3, 2e3 / 1e4 DOFs
 
 
-def write_manifest(out, version):
-    figs, rows = [], []
-    for name in sorted(os.listdir(out)):
-        js = os.path.join(out, name, "work_precision.json")
+def sized_list(text):
+    """--sizes: "all" or a list of SCENE_xMULT (e.g. s1_central_x100)."""
+    if text == "all":
+        return [(s, m) for s, ms in SIZES.items() for m in ms]
+    out = []
+    for item in text.split(","):
+        name, _, mult = item.rpartition("_x")
+        if name not in SIZES or not mult.isdigit() or int(mult) < 1:
+            fail(f"--sizes: '{item}' is not SCENE_xMULT with SCENE one of {', '.join(SIZES)} (e.g. s1_central_x100)")
+        out.append((name, int(mult)))
+    return out
+
+
+def replot(a):
+    for s in a.scenes.split(","):
+        js = os.path.join(a.out, s, "work_precision.json")
         if not os.path.isfile(js):
-            continue
+            fail(f"--replot: {js} not found (measure first)")
         with open(js) as f:
             res = json.load(f)
-        figs.append({"png": f"{name}/work_precision.png", "title": f"{name}: work-precision",
-                     "command": res["command"], "scene": res["scene"], "version": res["version"],
-                     "caption": f"Reference: {res['reference']}. Left: impulse, right: struck-point displacement."})
-        rows += [[name, e["text"]] for e in res["equal_error"]]
-    with open(os.path.join(out, "figures.json"), "w") as f:
-        json.dump({"title": "Work-precision sets (what accuracy costs in CPU time)",
-                   "about": "Each point: one `beamimpact run`, timed 3 times one after another (CPU time of the "
-                            "child process from wait4, minimum and spread); error against the reference named "
-                            "on each figure. Ratios at equal impulse error below (log-log interpolation along "
-                            "each method's front).",
-                   "tables": [{"title": "CPU time at equal impulse error", "columns": ["scene", "finding"],
-                               "rows": rows}],
-                   "figures": figs}, f, indent=1)
-    with open(os.path.join(out, "equal_error.md"), "w") as f:
-        f.write("# CPU time at equal impulse error\n\nMade by `reports/work_precision.py` (beamimpact "
-                f"{version}); per-scene commands in each work_precision.json.\n\n| scene | finding |\n|---|---|\n")
-        f.writelines(f"| {r[0]} | {r[1]} |\n" for r in rows)
+        res["equal_error"] = equal_error(res["points"])
+        wp_figures.write_json_atomic(js, res)
+        wp_figures.plot(res, os.path.join(a.out, s, "work_precision.png"))
+    wp_figures.write_manifest(a.out, res["version"])
 
 
-def main():
+def parse_args():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--scenes", default="s1_central,s2_transverse,s3_surface_10,s3_surface_20,"
-                                       "s4_oblique_90,s4_oblique_60,s4_oblique_45")
-    p.add_argument("--repeats", type=int, default=3)
+                                       "s4_oblique_90,s4_oblique_60,s4_oblique_45",
+                   help="paper scenes at their own sizes ('' for none)")
+    p.add_argument("--sizes", default="", help="'all' or SCENE_xMULT,... : S1 / S2 with the elements times MULT")
+    p.add_argument("--repeats", type=int, default=3, help="repetitions of each process-timed point")
     p.add_argument("--out", default="reports/work_precision")
     p.add_argument("--runs", default="out/work_precision")
     p.add_argument("--build", default=os.environ.get("BEAMIMPACT_BUILD_DIR", "build"))
-    p.add_argument("--quick", action="store_true")
+    p.add_argument("--quick", action="store_true", help="two rungs per in-process method, no FEniCSx")
     p.add_argument("--replot", action="store_true", help="only redraw the PNGs and the manifest from the JSON in --out")
     a = p.parse_args()
-    if a.replot:
-        for s in a.scenes.split(","):
-            js = os.path.join(a.out, s, "work_precision.json")
-            if not os.path.isfile(js):
-                fail(f"--replot: {js} not found (measure first)")
-            with open(js) as f:
-                res = json.load(f)
-            res["equal_error"] = equal_error(res["points"])
-            with open(js, "w") as f:
-                json.dump(res, f, indent=1)
-            plot(res, os.path.join(a.out, s, "work_precision.png"))
-            version = res["version"]
-        write_manifest(a.out, version)
-        return
     if a.repeats < 1:
         fail(f"--repeats {a.repeats}: expected an integer >= 1")
+    return a
+
+
+def main():
+    global bi
+    a = parse_args()
+    if a.replot:
+        return replot(a)
     a.exe = os.path.join(a.build, "beamimpact")
     if not os.access(a.exe, os.X_OK):
         fail(f"--build {a.build}: no beamimpact program there (build first: bash tools/build.sh)")
+    sys.path.insert(0, os.path.join(a.build, "python"))
+    try:
+        import beamimpact as bi
+    except ImportError as e:
+        fail(f"--build {a.build}: the Python module does not import from {a.build}/python ({e})")
     version = subprocess.run([a.exe, "--version"], capture_output=True, text=True).stdout.strip()
     plans = []
-    for s in a.scenes.split(","):
+    for s in filter(None, a.scenes.split(",")):
         if not os.path.isfile(f"{PAPER}/{s}.toml"):
             fail(f"--scenes: '{s}' is not a scene in {PAPER}/ (expected a file name without .toml)")
         plans.append(plan_for(s, a.quick))
+    plans += [sized_plan(s, m, a.quick) for s, m in sized_list(a.sizes)] if a.sizes else []
+    if not plans:
+        fail("--scenes '' and no --sizes: nothing to measure")
+    startup = process_startup(a)
     progress = Progress(sum(len(pl.rungs) + 1 for pl in plans))
     for pl in plans:
-        res = measure_scene(a, pl, progress, version)
+        res = measure_scene(a, pl, progress, version, startup)
         d = os.path.join(a.out, pl.name)
         os.makedirs(d, exist_ok=True)
-        tmp = os.path.join(d, "work_precision.json.tmp")
-        with open(tmp, "w") as f:
-            json.dump(res, f, indent=1)
-        os.replace(tmp, os.path.join(d, "work_precision.json"))
-        plot(res, os.path.join(d, "work_precision.png"))
+        wp_figures.write_json_atomic(os.path.join(d, "work_precision.json"), res)
+        wp_figures.plot(res, os.path.join(d, "work_precision.png"))
         for e in res["equal_error"]:
             print(f"[work-precision] {pl.name}: {e['text']}", file=sys.stderr)
-    write_manifest(a.out, version)
+    wp_figures.write_manifest(a.out, version)
 
 
 if __name__ == "__main__":

@@ -344,6 +344,7 @@ SimulationResult solve(const Scene& scene) {
   }
   const IdaCounters c = ida.counters();
   r.steps = c.steps;
+  r.dofs = n;
   r.extra["ida"] = {{"rtol", opt.rtol},
                     {"atol", opt.atol},
                     {"linear_solver", settings.linear_solver == IdaLinearSolver::kDense ? "dense" : "klu"},

@@ -259,6 +259,7 @@ SimulationResult solve(const Scene& scene_in, const std::filesystem::path& field
   std::optional<FieldWriter> fields;
   if (!fields_dir.empty()) fields.emplace(model, fields_dir, scene.output.field_format);
   Progress progress("paper", scene.time.end);
+  progress.set_dofs_per_update(model.size());
   std::vector<double> turn_max(scene.contacts.size(), 0.0);
   for (long p = 0;; ++p) {
     record_step(integ, p, N, scene, cs.dt, surfaces, rec, fields ? &*fields : nullptr, turn_max);
@@ -273,6 +274,7 @@ SimulationResult solve(const Scene& scene_in, const std::filesystem::path& field
                                                   integ.momentum(b, 1) / model.body_mass(b)});
   r.extra["critical_step"] = critical_step_json(cs, r.dt);
   r.extra["dofs"] = model.size();
+  r.dofs = model.size();
   r.extra["dofs_per_node"] = model.dofs_per_node();
   std::vector<ContactKind> kinds;
   for (const auto& group : integ.pair_groups()) kinds.push_back(integ.pairs()[group.front()].kind());

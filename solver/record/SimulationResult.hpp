@@ -62,6 +62,7 @@ struct SimulationResult {
   double dt = 0.0;               ///< s, the step (nominal output step for adaptive methods)
   double critical_dt = 0.0;      ///< s, 0 when not applicable
   long steps = 0;                ///< time steps taken
+  long dofs = 0;                 ///< DOFs of the discrete beam model (0: none, e.g. a modal solution)
   double wall_seconds = 0.0;
   std::vector<std::string> effects;            ///< e.g. {"axial"} or {"axial", "bending", "friction"}
   std::map<std::string, std::string> assumed;  ///< method-level defaults (merged with the scene's)

@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include <solver/schema/output_schema.hpp>
 #include <beamimpact/version.hpp>
+#include <solver/schema/output_schema.hpp>
 #include <solver/util/write_file_atomic.hpp>
 
 namespace beamimpact {
@@ -27,6 +27,20 @@ std::vector<double> history_values(const HistoryRow& row) {
   v.insert(v.end(),
            {row.kinetic, row.strain, row.dissipated, row.load_work, row.momentum[0], row.momentum[1]});
   return v;
+}
+
+nlohmann::json cost_json(const Scene& scene, const SimulationResult& r) {
+  long elements = 0;  // the elastic bodies' elements (a rigid body's only place its nodes)
+  for (const Body& b : scene.bodies)
+    if (!b.rigid) elements += b.elements;
+  const double ns = 1e9 * r.wall_seconds, steps = static_cast<double>(r.steps);
+  nlohmann::json c = {{"dofs", r.dofs},
+                      {"elements", elements},
+                      {"steps", r.steps},
+                      {"ns_per_dof_step", ns / (static_cast<double>(r.dofs) * steps)},
+                      {"basis", "wall_seconds (set-up included) over DOFs x steps and elements x steps"}};
+  if (elements > 0) c["ns_per_element_step"] = ns / (static_cast<double>(elements) * steps);
+  return c;
 }
 
 nlohmann::json summary_json(const Scene& scene, const SimulationResult& r) {
@@ -97,6 +111,7 @@ nlohmann::json summary_json(const Scene& scene, const SimulationResult& r) {
             {"contacts", contacts},
             {"units", summary_units()},
             {"complete", true}};
+  if (r.dofs > 0 && r.steps > 0) s["cost"] = cost_json(scene, r);
   s.update(r.extra);
   return s;
 }

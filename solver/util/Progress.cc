@@ -30,10 +30,15 @@ void Progress::report(double value) {
     return;
   }
   const double pct = total_ > 0 ? 100.0 * value / total_ : 0.0;
+  char cost[64] = "";
+  if (dofs_ > 0)
+    std::snprintf(cost, sizeof cost, ", %.3g ns per DOF-step",
+                  1e9 * duration<double>(now - start_).count() /
+                      (static_cast<double>(dofs_) * static_cast<double>(updates_)));
   // On a terminal, one line rewritten in place; in a log, one line per update.
   const bool tty = isatty(fileno(stderr));
-  std::fprintf(stderr, "%s%s: %3.0f%% (%.4g of %.4g)%s", tty ? "\r" : "", label_.c_str(), pct, value, total_,
-               tty ? "" : "\n");
+  std::fprintf(stderr, "%s%s: %3.0f%% (%.4g of %.4g%s)%s", tty ? "\r" : "", label_.c_str(), pct, value,
+               total_, cost, tty ? "" : "\n");
   std::fflush(stderr);
   printed_ = tty;
 }

@@ -16,8 +16,12 @@ class Progress {
   Progress(std::string label, double total);
   /// @brief Call often; cheap (checks the clock every 256 calls).
   void update(double value) {
+    ++updates_;
     if ((++calls_ & 255u) == 0) report(value);
   }
+  /// @brief The line also shows the wall time per DOF-step so far (ns), counting one step per
+  /// update() call: for loops that call update() once per time step of a `dofs`-DOF model.
+  void set_dofs_per_update(long dofs) { dofs_ = dofs; }
   /// @brief Ends the line if anything was printed.
   ~Progress();
   /// @brief Silences every Progress of this process (the CLI's --quiet); on by default.
@@ -44,6 +48,8 @@ class Progress {
   std::string label_;
   double total_;
   unsigned calls_ = 0;
+  unsigned long updates_ = 0;  // update() calls, for the cost per DOF-step
+  long dofs_ = 0;
   bool printed_ = false;
   std::chrono::steady_clock::time_point start_, last_;
 };

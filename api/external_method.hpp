@@ -26,9 +26,10 @@ std::vector<std::string> external_argv(const Method& m, const ExternalRun& run);
 
 /// @brief Runs the external method on the scene into `out` (the scene's overrides are written
 /// to out/scene.toml, which the program then reads). Its output goes to out/method.log, echoed
-/// on stderr after a failure or when progress is shown (Progress::enabled). Exit 0 with summary.json: the result's summary keys are read back (the run
-/// directory holds the rest). Exit 2: SceneError "not applicable: ..." with the program's last
-/// line. Otherwise std::runtime_error; a summary.json left by a failed run is removed.
+/// on stderr after a failure or when progress is shown (Progress::enabled). Exit 0 with summary.json: the
+/// result's summary keys are read back (the run directory holds the rest). Exit 2: SceneError "not
+/// applicable: ..." with the program's last line. Otherwise std::runtime_error; a summary.json left by a
+/// failed run is removed.
 /// @param m the method; @param scene the scene; @param out the run directory
 /// @param mesh the mesh asked for ("" none)
 SimulationResult run_external(const Method& m, const Scene& scene, const std::filesystem::path& out,

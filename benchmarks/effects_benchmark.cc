@@ -17,9 +17,9 @@
 
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -49,9 +49,11 @@ struct Variant {
   double rayleigh_mass = 0.0;  ///< a0 (1/s)
 };
 
-constexpr const char* kBeam = "E = 100.0\nrho = 1.0\narea = 0.4\ninertia = 0.0053333333333333\nvelocity = [0.0, 0.0]\n";
+constexpr const char* kBeam =
+    "E = 100.0\nrho = 1.0\narea = 0.4\ninertia = 0.0053333333333333\nvelocity = [0.0, 0.0]\n";
 
-std::string rigid_striker(int k, double x0, double x1, double y0, double y1, double vx, double vy, double rho) {
+std::string rigid_striker(int k, double x0, double x1, double y0, double y1, double vx, double vy,
+                          double rho) {
   return fmt::format(
       "[[bodies]]\nname = \"A{}\"\nstart = [{}, {}]\nend = [{}, {}]\nelements = 1\nE = 100.0\nrho = {}\n"
       "area = 0.4\ninertia = 0.0053333333333333\nvelocity = [{}, {}]\nsupports = []\nrigid = true\n",
@@ -64,9 +66,12 @@ std::string scene_text(const Variant& v, long elements) {
       "[model]\nmass = \"{}\"\nrotary_inertia = \"hrz\"\nkinematics = \"{}\"\nrayleigh_mass = {}\n",
       v.mass, v.kinematics, v.rayleigh_mass);
   if (v.targets == 1) {  // the effect layout
-    s += fmt::format("[[bodies]]\nname = \"B0\"\nstart = [0.0, 0.0]\nend = [10.0, 0.0]\nelements = {}\n{}supports = {}\n",
-                     elements, kBeam,
-                     v.free_target || v.rods ? "[]" : "[{ at = \"start\", fix = [\"x\", \"y\"] }, { at = \"end\", fix = [\"y\"] }]");
+    s += fmt::format(
+        "[[bodies]]\nname = \"B0\"\nstart = [0.0, 0.0]\nend = [10.0, 0.0]\nelements = {}\n{}supports = {}\n",
+        elements, kBeam,
+        v.free_target || v.rods
+            ? "[]"
+            : "[{ at = \"start\", fix = [\"x\", \"y\"] }, { at = \"end\", fix = [\"y\"] }]");
     s += v.rods ? rigid_striker(0, -2.0, -1.0, 0.0, 0.0, 0.0, 0.0, 100.0)
                 : rigid_striker(0, 5.37, 5.37, 2.0, 1.0, 0.0, 0.0, 100.0);
   } else {  // the contact layout: targets 2 m apart in y, strikers in line, the first `closed` pushing
@@ -81,7 +86,8 @@ std::string scene_text(const Variant& v, long elements) {
     }
   }
   for (int k = 0; k < v.targets; ++k)
-    s += fmt::format("[[contacts]]\nstriker = \"A{}\"\nnode = \"end\"\ntarget = \"B{}\"\nfriction = {}\n", k, k, v.mu);
+    s += fmt::format("[[contacts]]\nstriker = \"A{}\"\nnode = \"end\"\ntarget = \"B{}\"\nfriction = {}\n", k,
+                     k, v.mu);
   return s;
 }
 
@@ -147,7 +153,8 @@ Variant variant(const std::function<void(Variant&)>& edit) {
 }
 
 // Name: the effect (what is switched on relative to "frames"); the plot script divides the ratios.
-#define EFFECT(name, edit) BENCHMARK_CAPTURE(run_variant, name, variant([](Variant& v) { edit; }))->Apply(sizes);
+#define EFFECT(name, edit) \
+  BENCHMARK_CAPTURE(run_variant, name, variant([](Variant& v) { edit; }))->Apply(sizes);
 
 BENCHMARK_CAPTURE(kernel, frame_kernel, false)->Apply(sizes);
 BENCHMARK_CAPTURE(kernel, rod_kernel, true)->Apply(sizes);

@@ -89,7 +89,9 @@ int main(int argc, char** argv) {
     const double t_every = best_run(scene_text(elements, end, every, true, false, "binary"), out);
     const double rows = static_cast<double>(N / every + 1);
     const double t_bin = best_run(scene_text(elements, end, every, true, true, "binary"), out);
-    const auto bytes = [&] { return std::filesystem::file_size(out / "fields" / fmt::format("step_{:06d}.vtu", N / every)); };
+    const auto bytes = [&] {
+      return std::filesystem::file_size(out / "fields" / fmt::format("step_{:06d}.vtu", N / every));
+    };
     const double bin_bytes = static_cast<double>(bytes());
     const double t_ascii = best_run(scene_text(elements, end, every, true, true, "ascii"), out);
     const double ascii_bytes = static_cast<double>(bytes());

@@ -14,7 +14,7 @@ namespace beamimpact::bench {
 /// @brief A free-free chain of n identical elements (steel, 1 m long, 0.01 m square section),
 /// stepped by u_{k+1} = 2 u_k - u_{k-1} + dt^2 M^-1 (-K u_k) at half the element bound.
 class StepKernel {
-public:
+ public:
   /// @param elements number of elements (>= 1)
   /// @param frame true: frame element (u, v, theta per node); false: axial rod (u per node)
   StepKernel(std::size_t elements, bool frame);
@@ -28,10 +28,10 @@ public:
   /// @brief Current displacement (for DoNotOptimize and sanity checks).
   const std::vector<double>& displacement() const { return u_; }
 
-private:
+ private:
   bool frame_;
   std::size_t nodes_;
-  double k_[36] = {};  ///< element stiffness (6x6 frame, or 2x2 rod in k_[0..3]), row-major
+  double k_[36] = {};             ///< element stiffness (6x6 frame, or 2x2 rod in k_[0..3]), row-major
   std::vector<double> minv_dt2_;  ///< dt^2 / m per DOF
   std::vector<double> u_, u_prev_, f_;
 };

@@ -20,10 +20,10 @@
 
 #include "step_kernel.hpp"
 
+#include <beamimpact/version.hpp>
 #include <solver/integrator/ExplicitContactIntegrator.hpp>
 #include <solver/model/critical_dt.hpp>
 #include <solver/scene/scene_io.hpp>
-#include <beamimpact/version.hpp>
 
 namespace {
 
@@ -108,9 +108,9 @@ int main(int argc, char** argv) {
       return 1;
     }
     const double ns_int = t_int / dofs * 1e9, ns_ker = t_ker / kdofs * 1e9;
-    std::printf("| %.0f | %.2f | %.2f | %.2f | %.4f | %.0f | %.0f / %.0f / %.0f | %.0f | %.0f |\n", dofs, ns_ker,
-                ns_int, ns_int / ns_ker, setup, setup / t_int, t_model / t_int, t_crit / t_int, t_integ / t_int,
-                t_first / t_int, t_scene / t_int);
+    std::printf("| %.0f | %.2f | %.2f | %.2f | %.4f | %.0f | %.0f / %.0f / %.0f | %.0f | %.0f |\n", dofs,
+                ns_ker, ns_int, ns_int / ns_ker, setup, setup / t_int, t_model / t_int, t_crit / t_int,
+                t_integ / t_int, t_first / t_int, t_scene / t_int);
     std::fflush(stdout);
   }
   return 0;

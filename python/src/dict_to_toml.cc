@@ -2,8 +2,8 @@
 
 #include <sstream>
 
-#include <nlohmann/json.hpp>
 #include <toml++/toml.h>
+#include <nlohmann/json.hpp>
 
 #include <solver/util/InputError.hpp>
 
@@ -14,7 +14,9 @@ using nlohmann::json;
 
 toml::table to_table(const json& j, const std::string& label, const std::string& path);
 
-std::string join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+std::string join(const std::string& path, const std::string& key) {
+  return path.empty() ? key : path + "." + key;
+}
 
 template <typename T>
 void put(toml::array& a, const std::string&, T&& x) {
@@ -30,28 +32,19 @@ template <typename Container>
 void convert(Container& into, const std::string& key, const json& v, const std::string& label,
              const std::string& where) {
   switch (v.type()) {
-    case json::value_t::object:
-      put(into, key, to_table(v, label, where));
-      break;
+    case json::value_t::object: put(into, key, to_table(v, label, where)); break;
     case json::value_t::array: {
       toml::array a;
-      for (std::size_t i = 0; i < v.size(); ++i) convert(a, key, v[i], label, where + "[" + std::to_string(i) + "]");
+      for (std::size_t i = 0; i < v.size(); ++i)
+        convert(a, key, v[i], label, where + "[" + std::to_string(i) + "]");
       put(into, key, std::move(a));
       break;
     }
-    case json::value_t::string:
-      put(into, key, v.get<std::string>());
-      break;
-    case json::value_t::boolean:
-      put(into, key, v.get<bool>());
-      break;
+    case json::value_t::string: put(into, key, v.get<std::string>()); break;
+    case json::value_t::boolean: put(into, key, v.get<bool>()); break;
     case json::value_t::number_integer:
-    case json::value_t::number_unsigned:
-      put(into, key, v.get<std::int64_t>());
-      break;
-    case json::value_t::number_float:
-      put(into, key, v.get<double>());
-      break;
+    case json::value_t::number_unsigned: put(into, key, v.get<std::int64_t>()); break;
+    case json::value_t::number_float: put(into, key, v.get<double>()); break;
     default: throw InputError(label, where, "expected a number, string, boolean, list or dict, got None");
   }
 }

@@ -106,11 +106,13 @@ py::tuple run_scene(const Scene& scene, const std::string& method, std::optional
     r = beamimpact::run(scene, method, RunOptions{{}, out});
   }
   const auto names = history_columns(static_cast<int>(scene.contacts.size()));
-  py::array_t<double> rows({static_cast<py::ssize_t>(r.history.size()), static_cast<py::ssize_t>(names.size())});
+  py::array_t<double> rows(
+      {static_cast<py::ssize_t>(r.history.size()), static_cast<py::ssize_t>(names.size())});
   auto w = rows.mutable_unchecked<2>();
   for (std::size_t i = 0; i < r.history.size(); ++i) {
     const std::vector<double> v = history_values(r.history[i]);
-    for (std::size_t c = 0; c < v.size(); ++c) w(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(c)) = v[c];
+    for (std::size_t c = 0; c < v.size(); ++c)
+      w(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(c)) = v[c];
   }
   return py::make_tuple(to_python(summary_json(scene, r)), names, rows);
 }

@@ -54,7 +54,8 @@ std::size_t DelayMemory::lower_bound_near(const std::vector<double>& ts, double 
       lo = hi >= step ? hi - step : 0;
     }
   }
-  const std::size_t k = static_cast<std::size_t>(std::lower_bound(ts.begin() + lo, ts.begin() + hi, s) - ts.begin());
+  const std::size_t k =
+      static_cast<std::size_t>(std::lower_bound(ts.begin() + lo, ts.begin() + hi, s) - ts.begin());
   hint_piece_ = piece;
   hint_ = k;
   return k;

@@ -14,12 +14,12 @@ namespace beamimpact::exact {
 
 /// @brief The impulses and the rod's motion after the impact.
 struct RigidRodImpact {
-  double mu_star = 0.0;       ///< the stick threshold 3 s c / (1 + 3 s^2)
-  bool stick = false;         ///< mu >= mu_star
-  double p_n = 0.0;           ///< N s, normal impulse (on the rod, away from the surface)
-  double p_t = 0.0;           ///< N s, tangential impulse (on the rod, toward its centre's side)
+  double mu_star = 0.0;         ///< the stick threshold 3 s c / (1 + 3 s^2)
+  bool stick = false;           ///< mu >= mu_star
+  double p_n = 0.0;             ///< N s, normal impulse (on the rod, away from the surface)
+  double p_t = 0.0;             ///< N s, tangential impulse (on the rod, toward its centre's side)
   double v_n = 0.0, v_t = 0.0;  ///< m/s, centre velocity after: normal (away), tangential (centre's side)
-  double omega = 0.0;         ///< rad/s, spin after, positive turning the rod up off the surface
+  double omega = 0.0;           ///< rad/s, spin after, positive turning the rod up off the surface
 };
 
 /// @brief The closed form for mass m (kg), length l (m), angle theta (rad, 0 < theta < pi/2),

@@ -17,7 +17,8 @@ IdaOptions read_ida_options(const Scene& scene, double dt, double v_scale,
   // stops at t = 0 ("too much accuracy requested").
   o.rtol = r.number_or("rtol", o.rtol, "a relative tolerance in [1e-14, 0.1]");
   if (!(o.rtol >= 1e-14 && o.rtol <= 0.1))
-    r.fail("rtol", "expected a relative tolerance in [1e-14, 0.1] (below 1e-14 double precision cannot meet it)");
+    r.fail("rtol",
+           "expected a relative tolerance in [1e-14, 0.1] (below 1e-14 double precision cannot meet it)");
   // Displacements of the paper's scenes are O(0.01-1) m and speeds O(1) m/s: an absolute
   // tolerance 1e-3 x rtol keeps the relative test in charge except near zero crossings.
   o.atol = positive("atol", r.number_or("atol", 1e-3 * o.rtol, "a positive absolute tolerance"));

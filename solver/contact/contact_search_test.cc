@@ -30,7 +30,8 @@ double worst_real_gap_of_all_nodes(const Scene& s, int striker, int target, bool
   for (int i = 0; i < scene.bodies[striker].nodes(); ++i)
     surfaces.emplace_back(model, target, model.node_id(striker, i));
   if (target_ends)
-    for (int i : {0, scene.bodies[target].elements}) surfaces.emplace_back(model, striker, model.node_id(target, i));
+    for (int i : {0, scene.bodies[target].elements})
+      surfaces.emplace_back(model, striker, model.node_id(target, i));
   double worst = 0.0;
   const long N = static_cast<long>(scene.time.end / *scene.time.dt + 0.5);
   for (long p = 0; p < N; ++p) {
@@ -80,7 +81,8 @@ TEST(ContactSearch, ExtraPairsThatNeverTouchChangeNothing) {
   ASSERT_EQ(a.history.size(), b.history.size());
   EXPECT_EQ(a.contacts[0].impulse_normal, b.contacts[0].impulse_normal);
   EXPECT_EQ(a.contacts[0].intervals, b.contacts[0].intervals);
-  for (std::size_t i = 0; i < a.history.size(); ++i) ASSERT_EQ(a.history[i].contacts[0].R, b.history[i].contacts[0].R);
+  for (std::size_t i = 0; i < a.history.size(); ++i)
+    ASSERT_EQ(a.history[i].contacts[0].R, b.history[i].contacts[0].R);
   EXPECT_NE(b.contacts[0].extra.at("contact_search").get<std::string>().find("all nodes"), std::string::npos);
 }
 

@@ -149,8 +149,8 @@ class ExplicitContactIntegrator {
   std::vector<int> fc_dofs_;           ///< fused path: the equations where fc_ may be non-zero
   std::vector<double> vbar_saved_;     ///< fused path: Vbar^p at fc_dofs_ during the sweep
   double dissipated_ = 0.0;
-  bool hertz_ = false;            ///< some contact has the Hertz law
-  double hertz_energy_ = 0.0;     ///< J, in the Hertz springs (ContactSolver::hertz_energy)
+  bool hertz_ = false;         ///< some contact has the Hertz law
+  double hertz_energy_ = 0.0;  ///< J, in the Hertz springs (ContactSolver::hertz_energy)
   double initial_energy_ = 0.0;
   mutable bool v_stale_ = false;  ///< V_ is still to be formed from Vbar_ and fc_
 };

@@ -53,7 +53,8 @@ TEST(Allocation, LumpedSteppingAllocatesNothing) {
   EXPECT_EQ(allocations_while_stepping(paper_scene("s1_central"), {}, 30, 30), 0);
   EXPECT_EQ(allocations_while_stepping(paper_scene("s2_transverse"), {}, 40, 40), 0);
   EXPECT_EQ(allocations_while_stepping(paper_scene("s4_oblique_45"), {}, 160, 160), 0);
-  EXPECT_EQ(allocations_while_stepping(paper_scene("s4_oblique_45"), {"model.kinematics=linear"}, 160, 160), 0);
+  EXPECT_EQ(allocations_while_stepping(paper_scene("s4_oblique_45"), {"model.kinematics=linear"}, 160, 160),
+            0);
 }
 
 TEST(Allocation, TheLongestContactRowsFitTheirBuffersFromTheStart) {
@@ -62,12 +63,13 @@ TEST(Allocation, TheLongestContactRowsFitTheirBuffersFromTheStart) {
   // rigid target). Counted from the first step, so the first contact may not grow a buffer.
   // The rod falls 0.01 m at 1 m/s onto a tilted elastic cantilever (a tilted normal: both
   // translations count): contact from about 0.01 s (dt 5e-6 s, below its critical step).
-  const std::string scene = (testing::source_dir() / "verification/scenes/extra/rigid_rod_oblique.toml").string();
+  const std::string scene =
+      (testing::source_dir() / "verification/scenes/extra/rigid_rod_oblique.toml").string();
   for (const char* friction : {"0", "0.3"})
     EXPECT_EQ(allocations_while_stepping(scene,
-                                         {"bodies.B.rigid=false", "bodies.B.inertia=0.08", "bodies.B.start=[-2.0, -0.2]",
-                                          "bodies.B.end=[2.0, 0.2]", "time.dt=5e-6",
-                                          std::string("contacts[0].friction=") + friction},
+                                         {"bodies.B.rigid=false", "bodies.B.inertia=0.08",
+                                          "bodies.B.start=[-2.0, -0.2]", "bodies.B.end=[2.0, 0.2]",
+                                          "time.dt=5e-6", std::string("contacts[0].friction=") + friction},
                                          2400, 0, SurfaceInterpolation::kHermite),
               0)
         << "friction " << friction;

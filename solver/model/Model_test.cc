@@ -137,7 +137,8 @@ TEST(Model, StiffnessAndMassAreTheTripletAssemblyOfTheElementMatrices) {
   // global matrices are not exactly symmetric in floating point).
   Body a = soft_body("A", {0, 0}, {3, 4}, 7, {0.3, -0.7});
   a.supports = {Support{0, true, true, false}, Support{4, false, true, false}};
-  const Model models[] = {Model(single(a, MassKind::kLumped), true), Model(single(a, MassKind::kConsistent), true),
+  const Model models[] = {Model(single(a, MassKind::kLumped), true),
+                          Model(single(a, MassKind::kConsistent), true),
                           Model(load_scene(testing::paper_scene("s4_oblique_45")), true),
                           Model(load_scene(testing::paper_scene("s1_central")), false)};
   for (const Model& m : models) {

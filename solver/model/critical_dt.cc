@@ -27,7 +27,8 @@ double largest_generalized(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, b
     for (Eigen::Index j = 0; j < d; ++j)
       for (Eigen::Index i = 0; i < d; ++i) C(i, j) = (C(i, j) * r(i)) * r(j);
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(C, Eigen::EigenvaluesOnly);
-    return es.info() == Eigen::Success ? es.eigenvalues().maxCoeff() : std::numeric_limits<double>::infinity();
+    return es.info() == Eigen::Success ? es.eigenvalues().maxCoeff()
+                                       : std::numeric_limits<double>::infinity();
   }
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, M, Eigen::EigenvaluesOnly);
   return es.info() == Eigen::Success ? es.eigenvalues().maxCoeff() : std::numeric_limits<double>::infinity();

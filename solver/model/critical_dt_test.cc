@@ -62,8 +62,9 @@ TEST(CriticalStep, BodiesOfSeveralRunsGetAProvenLowerBound) {
   // solve's and the bracket's roundoff), and the bounds stay close to it.
   for (const char* mass : {"\"lumped\"", "\"consistent\""})
     for (const char* scene : {"s2_transverse", "s4_oblique_60"}) {
-      const Scene s = load_scene(paper_scene(scene), {std::string("model.mass=") + mass, "model.kinematics=\"linear\"",
-                                                      "bodies.A.elements=100", "bodies.B.elements=100"});
+      const Scene s =
+          load_scene(paper_scene(scene), {std::string("model.mass=") + mass, "model.kinematics=\"linear\"",
+                                          "bodies.A.elements=100", "bodies.B.elements=100"});
       const Model m(s, true);
       const CriticalStep c = critical_step(m);
       const double w = dense_omega_max(m);

@@ -32,7 +32,9 @@ double reciprocal(double a) { return 1.0 / a; }
 unsigned positive(double x) { return x > 0.0 ? 1u : 0u; }
 unsigned positive(const Jet& x) { return (x.v[0] > 0.0 ? 1u : 0u) | (x.v[1] > 0.0 ? 2u : 0u); }
 /// The entry (i, j) of sigma M - K.
-double entry(const EnvelopePencil& p, int i, int j, double sigma, double*) { return sigma * p.m(i, j) - p.k(i, j); }
+double entry(const EnvelopePencil& p, int i, int j, double sigma, double*) {
+  return sigma * p.m(i, j) - p.k(i, j);
+}
 Jet entry(const EnvelopePencil& p, int i, int j, const Pair& sigma, Jet*) {
   const Pair m{p.m(i, j), p.m(i, j)}, k{p.k(i, j), p.k(i, j)};
   return {sigma * m - k, m, Pair{}};
@@ -85,13 +87,14 @@ unsigned laguerre_sums(const EnvelopePencil& p, const Pair& sigma, unsigned lane
   return factor(p, sigma, lanes, f, [&](const Jet& piv, const Jet& inv) {
     const Pair r = piv.d1 * inv.v;  // (log D_i)'
     G += r;
-    H += r * r - piv.d2 * inv.v;    // -(log D_i)''
+    H += r * r - piv.d2 * inv.v;  // -(log D_i)''
   });
 }
 
 }  // namespace
 
-EnvelopePencil::EnvelopePencil(std::vector<int> first) : first_(std::move(first)), offset_(first_.size() + 1, 0) {
+EnvelopePencil::EnvelopePencil(std::vector<int> first)
+    : first_(std::move(first)), offset_(first_.size() + 1, 0) {
   for (std::size_t i = 0; i < first_.size(); ++i)
     offset_[i + 1] = offset_[i] + static_cast<int>(i) - first_[i] + 1;
   k_.assign(static_cast<std::size_t>(offset_.back()), 0.0);

@@ -17,7 +17,7 @@ struct Options {
   long merge_steps = 3;    ///< contact phases separated by fewer open steps than this are one interval
   double merge_gap = 0.0;  ///< s; when > 0, phases closer than this are merged instead (dt-independent)
   SurfaceInterpolation surface = SurfaceInterpolation::kLinear;  ///< "linear" (paper) or "hermite"
-  ClosureSlip closure_slip = ClosureSlip::kWholeStep;             ///< "step" (paper) or "from_closure"
+  ClosureSlip closure_slip = ClosureSlip::kWholeStep;            ///< "step" (paper) or "from_closure"
 
   /// @brief Reads [paper] of `scene`; defaults not given are recorded in `assumed`. Throws
   /// SceneError naming the file and key for a bad value or an unknown key.

@@ -189,7 +189,8 @@ ContactState closure_state(int angle, double f, double mu, const std::string& cl
   const Scene base = load_scene(paper_scene("s4_oblique_" + std::to_string(angle)), {"time.end=1e-6"});
   const double dt = paper::solve(base).dt;
   Scene s = load_scene(paper_scene("s4_oblique_" + std::to_string(angle)),
-                       {"paper.closure_slip=\"" + closure_slip + "\"", "time.end=0.02"});  // closes at 0.0115 s (60 deg), 0.0141 s (45 deg)
+                       {"paper.closure_slip=\"" + closure_slip + "\"",
+                        "time.end=0.02"});  // closes at 0.0115 s (60 deg), 0.0141 s (45 deg)
   Body& A = s.bodies[0];
   for (Vec2* x : {&A.start, &A.end})
     for (int c = 0; c < 2; ++c) (*x)[c] += f * dt * A.velocity[c];  // f |v| dt along v

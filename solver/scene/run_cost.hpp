@@ -43,7 +43,9 @@ double estimate_auto_dt(const Scene& scene);
 
 /// @brief The step (s) a run of `scene` is checked with before its model exists: time.dt, or
 /// estimate_auto_dt() for dt = "auto".
-inline double planned_dt(const Scene& scene) { return scene.time.dt ? *scene.time.dt : estimate_auto_dt(scene); }
+inline double planned_dt(const Scene& scene) {
+  return scene.time.dt ? *scene.time.dt : estimate_auto_dt(scene);
+}
 
 /// @brief Throws SceneError (key time.dt or time.allow_long_run) when `scene` at step `dt` (s)
 /// has more than kMostSteps steps, or exceeds kOrdinaryWork / kOrdinaryBytes without

@@ -136,7 +136,8 @@ TEST(SceneIo, BadInputNamesFileKeyAndExpectation) {
        "one of \"lumped\" \"consistent\""},
       {"syntax", replace(g, "[time]", "[time"), "", "TOML syntax error at line"},
       {"bad dt", replace(g, "dt = 0.01", "dt = \"fast\""), "time.dt", "\"auto\""},
-      {"fields not a boolean", g + "\n[output]\nfields = \"yes\"\n", "output.fields", "expected true or false"},
+      {"fields not a boolean", g + "\n[output]\nfields = \"yes\"\n", "output.fields",
+       "expected true or false"},
       {"unknown output key", g + "\n[output]\nvtk = true\n", "output.vtk", "unknown key"},
   };
   for (const BadCase& c : cases) {

@@ -45,9 +45,9 @@ std::vector<std::string> history_columns(int n_contacts) {
 }
 
 const nlohmann::json& summary_units() {
-  static const nlohmann::json u = {{"t", "s"},      {"R", "N"},   {"tau", "N"},          {"gap", "m"},
-                                   {"u", "m"},      {"v", "m/s"}, {"energy", "J"},       {"momentum", "N s"},
-                                   {"impulse", "N s"}};
+  static const nlohmann::json u = {{"t", "s"},      {"R", "N"},          {"tau", "N"},
+                                   {"gap", "m"},    {"u", "m"},          {"v", "m/s"},
+                                   {"energy", "J"}, {"momentum", "N s"}, {"impulse", "N s"}};
   return u;
 }
 

@@ -56,8 +56,8 @@ const nlohmann::json& summary_units();
 
 /// @brief Keys of summary.json's "critical_step" object (methods that step explicitly).
 namespace critical_step_key {
-inline constexpr const char* kMethod = "method";  ///< how omega_max was estimated
-inline constexpr const char* kBound = "bound";    ///< "element" | "subdomain" | "none"
+inline constexpr const char* kMethod = "method";                    ///< how omega_max was estimated
+inline constexpr const char* kBound = "bound";                      ///< "element" | "subdomain" | "none"
 inline constexpr const char* kOmegaMax = "omega_max";               ///< rad/s, the proven upper bound used
 inline constexpr const char* kElementBoundDt = "element_bound_dt";  ///< s, the proven step
 inline constexpr const char* kOmegaLower = "omega_lower";  ///< rad/s, a proven lower bound of omega_max

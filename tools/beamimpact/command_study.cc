@@ -5,8 +5,8 @@
 
 #include <fmt/format.h>
 
-#include <verification/study/run_study.hpp>
 #include <beamimpact/version.hpp>
+#include <verification/study/run_study.hpp>
 
 #include "methods_option.hpp"
 
@@ -27,10 +27,10 @@ void study_command(const StudyArgs& a) {
       fmt::format("beamimpact study {} --out {}{}", a.file, a.out, a.keep_runs ? " --keep-runs" : "");
   const study::StudyCounts n = study::write_study(s, *r, a.out, command, kVersion);
   const auto out = std::filesystem::path(a.out);
-  fmt::print("study {}: {} case(s) in {:.1f} s on {} rank(s) ({:.2f} cases/s), {} where the method broke\n", s.name,
-             n.cases, r->wall_seconds, r->ranks, n.cases_per_second, n.broken);
-  fmt::print("table: {} {}\nreport: {}\ntiming: {}\n", (out / "study.csv").string(), (out / "study.json").string(),
-             (out / "study.md").string(), (out / "timing.json").string());
+  fmt::print("study {}: {} case(s) in {:.1f} s on {} rank(s) ({:.2f} cases/s), {} where the method broke\n",
+             s.name, n.cases, r->wall_seconds, r->ranks, n.cases_per_second, n.broken);
+  fmt::print("table: {} {}\nreport: {}\ntiming: {}\n", (out / "study.csv").string(),
+             (out / "study.json").string(), (out / "study.md").string(), (out / "timing.json").string());
 }
 
 }  // namespace
@@ -38,8 +38,9 @@ void study_command(const StudyArgs& a) {
 void add_command_study(CLI::App& app) {
   auto a = std::make_shared<StudyArgs>();
   CLI::App* c = app.add_subcommand(
-      "study", "Parameter study: a scene over a grid or Latin hypercube of parameters, each point compared with its "
-               "reference (mpirun -n N spreads the points over N ranks)");
+      "study",
+      "Parameter study: a scene over a grid or Latin hypercube of parameters, each point compared with its "
+      "reference (mpirun -n N spreads the points over N ranks)");
   c->add_option("STUDY", a->file, "Study file (TOML, verification/studies/)")->required();
   c->add_option("--out", a->out, "Output directory (study.csv, study.json, study.md, timing.*)")->required();
   c->add_flag("--keep-runs", a->keep_runs, "Keep every run's history.csv and summary.json under OUT/runs");

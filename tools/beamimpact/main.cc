@@ -15,8 +15,8 @@
 
 #include "CommandExit.hpp"
 #include "command_methods.hpp"
-#include "command_protocol.hpp"
 #include "command_model.hpp"
+#include "command_protocol.hpp"
 #include "command_run.hpp"
 #include "command_study.hpp"
 #include "command_verification.hpp"

@@ -38,9 +38,9 @@ class MpiIdentity : public ::testing::Test {
     std::string a = args;
     a.replace(a.find("OUT"), 3, out.string());
     const fs::path log = out.string() + ".log";
-    const int rc = std::system(
-        fmt::format("cd '{}' && {} '{}' {} > '{}' 2>&1", BEAMIMPACT_SOURCE, prefix, BEAMIMPACT_EXE, a, log.string())
-            .c_str());
+    const int rc = std::system(fmt::format("cd '{}' && {} '{}' {} > '{}' 2>&1", BEAMIMPACT_SOURCE, prefix,
+                                           BEAMIMPACT_EXE, a, log.string())
+                                   .c_str());
     ASSERT_TRUE(WIFEXITED(rc) && WEXITSTATUS(rc) == 0) << read(log);
     if (mpi) {
       EXPECT_NE(read(log).find("rank 1"), std::string::npos) << "rank 1 did no work:\n" << read(log);
@@ -55,7 +55,8 @@ class MpiIdentity : public ::testing::Test {
   /// The document without timing fields, start time and command, output directory replaced.
   static nlohmann::json stripped(const fs::path& file, const fs::path& out) {
     std::string text = read(file);
-    for (std::size_t p; (p = text.find(out.string())) != std::string::npos;) text.replace(p, out.string().size(), "OUT");
+    for (std::size_t p; (p = text.find(out.string())) != std::string::npos;)
+      text.replace(p, out.string().size(), "OUT");
     nlohmann::json j = nlohmann::json::parse(text);
     strip(j);
     return j;
@@ -91,7 +92,8 @@ TEST_F(MpiIdentity, VerifyGivesTheSameVerdictsAndNorms) {
 }
 
 TEST_F(MpiIdentity, SweepGivesTheSameNorms) {
-  const std::string args = "sweep verification/scenes/paper/s1_central.toml --dt 0.01,0.005 --mesh 1,2 --out OUT";
+  const std::string args =
+      "sweep verification/scenes/paper/s1_central.toml --dt 0.01,0.005 --mesh 1,2 --out OUT";
   run(args, tmp_ / "serial", false);
   run(args, tmp_ / "mpi", true);
   const auto a = stripped(tmp_ / "serial/sweep.json", tmp_ / "serial");
@@ -101,14 +103,15 @@ TEST_F(MpiIdentity, SweepGivesTheSameNorms) {
 
 TEST_F(MpiIdentity, StudyTablesAreByteIdentical) {
   const fs::path study = tmp_ / "s.toml";
-  std::ofstream(study) << "name = \"mpi\"\nscene = \"" << BEAMIMPACT_SOURCE
-                       << "/verification/scenes/paper/s4_oblique_90.toml\"\nmethods = [\"paper\"]\n"
-                          "reference = { method = \"paper\", set = [\"time.fraction=0.125\"] }\n"
-                          "set = [\"model.kinematics=linear\", \"time.end=0.03\", \"bodies.A.end=[5.0, 0.001]\"]\n"
-                          "[design]\nkind = \"lhs\"\nsamples = 12\n"
-                          "[[parameter]]\nname = \"alpha0\"\nrake = \"A\"\nfrom = 5.0\nto = 90.0\n"
-                          "[[parameter]]\nname = \"mu\"\nkey = \"contacts[0].friction\"\nfrom = 0.0\nto = 1.0\n"
-                          "[[parameter]]\nname = \"mesh\"\nmesh = true\nvalues = [1, 2]\n";
+  std::ofstream(study)
+      << "name = \"mpi\"\nscene = \"" << BEAMIMPACT_SOURCE
+      << "/verification/scenes/paper/s4_oblique_90.toml\"\nmethods = [\"paper\"]\n"
+         "reference = { method = \"paper\", set = [\"time.fraction=0.125\"] }\n"
+         "set = [\"model.kinematics=linear\", \"time.end=0.03\", \"bodies.A.end=[5.0, 0.001]\"]\n"
+         "[design]\nkind = \"lhs\"\nsamples = 12\n"
+         "[[parameter]]\nname = \"alpha0\"\nrake = \"A\"\nfrom = 5.0\nto = 90.0\n"
+         "[[parameter]]\nname = \"mu\"\nkey = \"contacts[0].friction\"\nfrom = 0.0\nto = 1.0\n"
+         "[[parameter]]\nname = \"mesh\"\nmesh = true\nvalues = [1, 2]\n";
   run("study " + study.string() + " --out OUT", tmp_ / "serial", false);
   run("study " + study.string() + " --out OUT", tmp_ / "mpi", true);
   for (const char* f : {"study.csv", "study.json"}) {

@@ -103,7 +103,8 @@ class Loader {
     if (scenes_.count(s)) s = scenes_.at(s);
     const fs::path p = (root_ / s).lexically_normal();
     std::error_code unreadable;  // e.g. a name too long for the file system: not found either
-    if (!fs::exists(p, unreadable)) r.fail("scene", "expected an existing scene file, " + p.string() + " does not exist");
+    if (!fs::exists(p, unreadable))
+      r.fail("scene", "expected an existing scene file, " + p.string() + " does not exist");
     return p;
   }
 
@@ -113,7 +114,8 @@ class Loader {
     JobSpec s;
     s.scene = scene;
     s.method = r.string("method", "a method name: " + method_names());
-    if (!find_method(s.method)) r.fail("method", "expected a method name (" + method_names() + "), got '" + s.method + "'");
+    if (!find_method(s.method))
+      r.fail("method", "expected a method name (" + method_names() + "), got '" + s.method + "'");
     if (with_dt && r.has("dt")) {
       s.dt = r.number("dt", "a positive time step (s)");
       if (!(*s.dt > 0.0)) r.fail("dt", "expected a positive time step (s)");
@@ -124,8 +126,7 @@ class Loader {
         s.mesh = std::to_string(*i);
       } else if (auto str = n->value<std::string>()) {
         s.mesh = *str;
-      }
-      else
+      } else
         r.fail("mesh", "expected an element multiplier or a method's mesh preset name");
     }
     s.set = r.strings("set");
@@ -258,7 +259,10 @@ std::string Case::name() const {
 std::string Convergence::name() const {
   const JobSpec& first = runs.front();
   const bool by_mesh = runs.size() > 1 && runs[0].mesh != runs[1].mesh;
-  std::string s = first.scene_name() + " " + first.method + " " + (by_mesh ? "mesh=" : first.dt ? "dt=" : "fraction=");
+  std::string s = first.scene_name() + " " + first.method + " " +
+                  (by_mesh    ? "mesh="
+                   : first.dt ? "dt="
+                              : "fraction=");
   for (std::size_t i = 0; i < steps.size(); ++i)
     s += fmt::format("{}{:g}", i ? "/" : "", by_mesh ? 1.0 / steps[i] : steps[i]);
   if (!by_mesh && !first.mesh.empty()) s += " mesh=" + first.mesh;

@@ -40,7 +40,9 @@ bool runs_ok(ItemResult& r, const std::vector<const JobSpec*>& specs, const std:
     if (it->second.status != JobOutcome::Status::kOk) {
       const auto st = it->second.status;
       const bool skipped = st == JobOutcome::Status::kSkipped || st == JobOutcome::Status::kNotApplicable;
-      const char* how = st == JobOutcome::Status::kNotApplicable ? " not applicable: " : skipped ? ": " : " failed: ";
+      const char* how = st == JobOutcome::Status::kNotApplicable ? " not applicable: "
+                        : skipped                                ? ": "
+                                                                 : " failed: ";
       not_evaluated(r, gates, s->label() + how + it->second.message, skipped);
       return false;
     }
@@ -235,7 +237,8 @@ void add_orders(const Convergence& v, ItemResult& r) {
     if (!n1 || !n2 || !n3 || !n1->a || !n2->a || !n3->a || !n3->b || *n3->b == 0.0) continue;
     const double ratio = v.steps[k - 2] / v.steps[k - 1];
     if (const auto lim = richardson_limit(*n1->a, *n2->a, *n3->a, ratio))
-      r.richardson[n.name] = {lim->second, lim->first, *n3->b, std::abs(lim->first - *n3->b) / std::abs(*n3->b),
+      r.richardson[n.name] = {lim->second, lim->first, *n3->b,
+                              std::abs(lim->first - *n3->b) / std::abs(*n3->b),
                               std::abs(lim->first - *n3->a) / std::abs(*n3->b)};
   }
 }

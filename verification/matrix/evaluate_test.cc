@@ -30,8 +30,9 @@ TEST(Evaluate, GatePassesAtOrBelowTolerance) {
 }
 
 TEST(Evaluate, UnavailableOrMissingNormFails) {
-  EXPECT_EQ(check_gate({"impulse", 1.0, std::nullopt, "test", std::nullopt}, with_impulse(std::nullopt)).status,
-            GateStatus::kFail);
+  EXPECT_EQ(
+      check_gate({"impulse", 1.0, std::nullopt, "test", std::nullopt}, with_impulse(std::nullopt)).status,
+      GateStatus::kFail);
   const GateResult m = check_gate({"impulse_2", 1.0, std::nullopt, "test", std::nullopt}, with_impulse(0.0));
   EXPECT_EQ(m.status, GateStatus::kFail);
   EXPECT_NE(m.message.find("not produced"), std::string::npos);

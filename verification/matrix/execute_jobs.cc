@@ -9,9 +9,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <api/registry.hpp>
 #include <api/child_process.hpp>
 #include <api/external_method.hpp>
+#include <api/registry.hpp>
 #include <verification/matrix/interruption.hpp>
 
 namespace beamimpact::verification {
@@ -25,7 +25,7 @@ JobOutcome execute_job(const JobSpec& spec, const std::filesystem::path& dir, co
     return o;
   }
   std::error_code ec;
-  std::filesystem::remove_all(dir, ec);  // never mistake an old result for this run's
+  std::filesystem::remove_all(dir, ec);                    // never mistake an old result for this run's
   if (std::filesystem::create_directories(dir, ec); ec) {  // in a worker thread: never throw
     o.message = fmt::format("cannot create {}: {}", dir.string(), ec.message());
     return o;

@@ -94,7 +94,8 @@ std::optional<SweepResult> execute_sweep(const SweepOptions& o, const Launcher& 
   if (ref) {
     const JobOutcome& ro = outcomes.at(ref->key());
     if (ro.status == JobOutcome::Status::kNotApplicable)
-      throw InputError(o.scene.string(), "--reference", "the reference run " + ref->label() + " was refused: " + ro.message);
+      throw InputError(o.scene.string(), "--reference",
+                       "the reference run " + ref->label() + " was refused: " + ro.message);
     if (ro.status != JobOutcome::Status::kOk)
       throw std::runtime_error("reference run " + ref->label() + " " + status_name(ro.status) + ": " +
                                ro.message);
@@ -171,9 +172,10 @@ void write_sweep(const SweepOptions& o, const SweepResult& r, const std::string&
     for (const auto& n : names) {
       csv_row.push_back(cell(c, n));
       // A run without a comparison says why once, in its first norm's cell: "not applicable: reason".
-      md_row.push_back(c                 ? cell(c, n)
-                       : n == names[0] ? fmt::format("{}: {}", status_name(p.outcome.status), p.outcome.message)
-                                       : "-");
+      md_row.push_back(c ? cell(c, n)
+                       : n == names[0]
+                           ? fmt::format("{}: {}", status_name(p.outcome.status), p.outcome.message)
+                           : "-");
     }
     csv.add(csv_row);
     md.add(md_row);

@@ -49,11 +49,13 @@ Parameter parameter(const toml::table& t, const std::string& file, std::size_t i
     p.from = r.number("from", "the first value");
     p.to = r.number("to", "the last value");
     if (!(*p.to > *p.from)) r.fail("to", "expected to > from");
-    const long count = design == Study::Design::kGrid ? r.integer("count", "the number of grid levels (>= 2)")
-                                                      : r.integer_or("count", 2, "the number of levels (>= 2)");
+    const long count = design == Study::Design::kGrid
+                           ? r.integer("count", "the number of grid levels (>= 2)")
+                           : r.integer_or("count", 2, "the number of levels (>= 2)");
     if (count < 2 || count > 100000) r.fail("count", "expected 2 to 100000 levels");
     for (long k = 0; k < count; ++k)
-      p.values.push_back(*p.from + (*p.to - *p.from) * static_cast<double>(k) / static_cast<double>(count - 1));
+      p.values.push_back(*p.from +
+                         (*p.to - *p.from) * static_cast<double>(k) / static_cast<double>(count - 1));
   }
   if (p.values.empty()) r.fail("values", "expected values = [...] or from, to, count");
   if (p.kind == Parameter::Kind::kMesh)
@@ -143,7 +145,8 @@ Study Study::load(const fs::path& file_in) {
   TableReader r(doc, file, "", nullptr);
   s.name = r.string("name", "the study's name");
   if (r.has("description")) s.description = r.string("description", "one line");
-  s.scene = (s.file.parent_path() / r.string("scene", "a scene file relative to the study file")).lexically_normal();
+  s.scene = (s.file.parent_path() / r.string("scene", "a scene file relative to the study file"))
+                .lexically_normal();
   if (!fs::exists(s.scene)) r.fail("scene", "scene file " + s.scene.string() + " not found");
   s.methods = r.strings("methods", true);
   if (s.methods.empty()) r.fail("methods", "expected at least one method (" + method_names() + ")");
@@ -219,7 +222,8 @@ std::vector<Point> design_points(const Study& s) {
       if (p.from)
         out[i].values[k] = *p.from + (*p.to - *p.from) * u;
       else
-        out[i].values[k] = p.values[std::min(p.values.size() - 1, static_cast<std::size_t>(u * static_cast<double>(p.values.size())))];
+        out[i].values[k] = p.values[std::min(
+            p.values.size() - 1, static_cast<std::size_t>(u * static_cast<double>(p.values.size())))];
     }
   }
   return out;
@@ -250,7 +254,8 @@ std::vector<std::string> overrides(const Study& s, const Point& pt) {
           const double c = std::cos(a), sn = std::sin(a);
           out.push_back(fmt::format("bodies.{}.start=[{}, {}]", p.target, number(body.end[0] + len * c),
                                     number(body.end[1] + len * sn)));
-          out.push_back(fmt::format("bodies.{}.velocity=[{}, {}]", p.target, number(-speed * c), number(-speed * sn)));
+          out.push_back(
+              fmt::format("bodies.{}.velocity=[{}, {}]", p.target, number(-speed * c), number(-speed * sn)));
           break;
         }
       }

@@ -21,8 +21,8 @@ struct Parameter {
   enum class Kind { kKey, kMesh, kRake };
   std::string name;  ///< column name ("alpha0", "mu", "mesh")
   Kind kind = Kind::kKey;
-  std::string target;          ///< the scene key (kKey) or the body name (kRake)
-  std::vector<double> values;  ///< the levels (grid: every one; Latin hypercube: strata of from..to)
+  std::string target;              ///< the scene key (kKey) or the body name (kRake)
+  std::vector<double> values;      ///< the levels (grid: every one; Latin hypercube: strata of from..to)
   std::optional<double> from, to;  ///< continuous range (Latin hypercube), also the source of values
 };
 
@@ -42,7 +42,7 @@ struct BreakRule {
 /// @brief A whole study file, validated.
 struct Study {
   enum class Design { kGrid, kLatinHypercube };
-  std::filesystem::path file;   ///< the study file (absolute)
+  std::filesystem::path file;  ///< the study file (absolute)
   std::string name, description;
   std::filesystem::path scene;  ///< absolute
   std::vector<std::string> methods;
@@ -50,12 +50,12 @@ struct Study {
   std::vector<std::string> set;  ///< fixed overrides of every run
   std::vector<Parameter> parameters;
   Design design = Design::kGrid;
-  long samples = 0;          ///< Latin hypercube points
-  std::uint64_t seed = 1;    ///< Latin hypercube seed
-  double energy_growth = 0.05;  ///< stability bound: energy created / E0 above this is "energy"
+  long samples = 0;                ///< Latin hypercube points
+  std::uint64_t seed = 1;          ///< Latin hypercube seed
+  double energy_growth = 0.05;     ///< stability bound: energy created / E0 above this is "energy"
   std::vector<std::string> norms;  ///< table columns (comparison norms)
   std::vector<BreakRule> breaks{BreakRule{}};  ///< `breaks = [{ metric, above }, ...]`
-  bool keep_runs = false;  ///< keep each run's history.csv / summary.json under DIR/runs
+  bool keep_runs = false;                      ///< keep each run's history.csv / summary.json under DIR/runs
 
   /// @brief Reads and checks a study file. Throws InputError (file, key, what was expected) for a
   /// missing scene, an unknown method or norm, a parameter without values, a bad design.

@@ -19,8 +19,9 @@ const fs::path kRoot = BEAMIMPACT_SOURCE_DIR_DEFAULT;
 
 fs::path write_study(const std::string& name, const std::string& text) {
   const fs::path p = fs::temp_directory_path() / ("beamimpact_study_test_" + name + ".toml");
-  std::ofstream(p) << "name = \"" << name << "\"\nscene = \"" << (kRoot / "verification/scenes/paper/s4_oblique_90.toml").string()
-                   << "\"\n" << text;
+  std::ofstream(p) << "name = \"" << name << "\"\nscene = \""
+                   << (kRoot / "verification/scenes/paper/s4_oblique_90.toml").string() << "\"\n"
+                   << text;
   return p;
 }
 
@@ -94,7 +95,7 @@ values = [45, 60]
   for (int k = 0; k < 2; ++k) {
     const Scene got = load_scene(s.scene, overrides(s, pts[static_cast<std::size_t>(k)]));
     const Scene want = load_scene(kRoot / (k == 0 ? "verification/scenes/paper/s4_oblique_45.toml"
-                                                    : "verification/scenes/paper/s4_oblique_60.toml"));
+                                                  : "verification/scenes/paper/s4_oblique_60.toml"));
     for (int c = 0; c < 2; ++c) {
       // the scene files carry 16 digits: agreement to 1e-12 m (m/s)
       EXPECT_NEAR(got.bodies[0].start[c], want.bodies[0].start[c], 1e-12);
@@ -114,15 +115,17 @@ TEST(Study, BadInputNamesTheFileAndTheKey) {
     return "no error";
   };
   const std::string mu = "[[parameter]]\nname = \"mu\"\nkey = \"contacts[0].friction\"\nvalues = [0.1]\n";
-  EXPECT_NE(message("nomethod", "methods = [\"nope\"]\nreference = { method = \"ida\" }\n" + mu).find("methods"),
-            std::string::npos);
+  EXPECT_NE(
+      message("nomethod", "methods = [\"nope\"]\nreference = { method = \"ida\" }\n" + mu).find("methods"),
+      std::string::npos);
   EXPECT_NE(message("noparam", kMethods).find("parameter"), std::string::npos);
   EXPECT_NE(message("novalues", kMethods + "[[parameter]]\nname = \"mu\"\nkey = \"contacts[0].friction\"\n")
                 .find("parameter[0].values"),
             std::string::npos);
-  EXPECT_NE(message("badkey", kMethods + "[[parameter]]\nname = \"x\"\nkey = \"bodies.Z.area\"\nvalues = [1]\n")
-                .find("bodies.Z.area"),
-            std::string::npos);
+  EXPECT_NE(
+      message("badkey", kMethods + "[[parameter]]\nname = \"x\"\nkey = \"bodies.Z.area\"\nvalues = [1]\n")
+          .find("bodies.Z.area"),
+      std::string::npos);
   EXPECT_NE(message("badnorm", kMethods + "norms = [\"nonorm\"]\n" + mu).find("nonorm"), std::string::npos);
 }
 

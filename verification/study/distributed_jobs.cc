@@ -5,17 +5,16 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <verification/study/task_farm.hpp>
 #include <verification/matrix/interruption.hpp>
+#include <verification/study/task_farm.hpp>
 
 namespace beamimpact::study {
 
 using verification::JobOutcome;
 
-std::optional<std::map<std::string, JobOutcome>> distributed_jobs(const std::vector<verification::JobSpec>& specs,
-                                                                  const std::filesystem::path& out_dir,
-                                                                  const verification::Launcher& launcher, int jobs,
-                                                                  double timeout_seconds) {
+std::optional<std::map<std::string, JobOutcome>> distributed_jobs(
+    const std::vector<verification::JobSpec>& specs, const std::filesystem::path& out_dir,
+    const verification::Launcher& launcher, int jobs, double timeout_seconds) {
   if (World::size() == 1) return verification::execute_jobs(specs, out_dir, launcher, jobs, timeout_seconds);
   const std::vector<verification::JobSpec> order = verification::schedule_order(specs);
   std::vector<double> cost(order.size());
@@ -26,11 +25,15 @@ std::optional<std::map<std::string, JobOutcome>> distributed_jobs(const std::vec
       cost,
       [&](std::size_t i) {
         const auto& s = order[i];
-        const std::string why = verification::interruption() ? "not started: interrupted" : launcher.unavailable(s);
+        const std::string why =
+            verification::interruption() ? "not started: interrupted" : launcher.unavailable(s);
         const JobOutcome o = verification::execute_job(s, out_dir / s.key(), launcher, why, timeout_seconds);
-        return nlohmann::json{{"status", static_cast<int>(o.status)}, {"message", o.message},
-                              {"process_seconds", o.process_seconds}, {"solver_seconds", o.solver_seconds},
-                              {"steps", o.steps}, {"dt", o.dt}}
+        return nlohmann::json{{"status", static_cast<int>(o.status)},
+                              {"message", o.message},
+                              {"process_seconds", o.process_seconds},
+                              {"solver_seconds", o.solver_seconds},
+                              {"steps", o.steps},
+                              {"dt", o.dt}}
             .dump();
       },
       [&](std::size_t i, const std::string& payload, int rank) {

@@ -89,7 +89,8 @@ PointResult run_point(const Study& s, const Point& p, std::size_t index, const f
       if (const auto* g = health.find("energy_growth")) c.energy_growth = g->value;
       if (c.energy_growth && *c.energy_growth > s.energy_growth) {
         c.status = "energy";
-        c.message = fmt::format("energy created {:.3g} of E0 > bound {:g}", *c.energy_growth, s.energy_growth);
+        c.message =
+            fmt::format("energy created {:.3g} of E0 > bound {:g}", *c.energy_growth, s.energy_growth);
       }
       if (reference) {
         try {
@@ -131,8 +132,14 @@ nlohmann::json PointResult::to_json() const {
   for (const auto& c : cases) {
     nlohmann::json n = nlohmann::json::array();
     for (const auto& v : c.norms) n.push_back(json_or_null(v));
-    cs.push_back({{"method", c.method}, {"status", c.status}, {"message", c.message}, {"steps", c.steps},
-                  {"dt", c.dt}, {"norms", n}, {"energy_growth", json_or_null(c.energy_growth)}, {"seconds", c.seconds}});
+    cs.push_back({{"method", c.method},
+                  {"status", c.status},
+                  {"message", c.message},
+                  {"steps", c.steps},
+                  {"dt", c.dt},
+                  {"norms", n},
+                  {"energy_growth", json_or_null(c.energy_growth)},
+                  {"seconds", c.seconds}});
   }
   return {{"reference_status", reference_status},
           {"reference_message", reference_message},

@@ -25,10 +25,10 @@ struct CaseResult {
   std::string status = "error";
   std::string message;
   long steps = 0;
-  double dt = 0.0;                                 ///< s, the step used
-  std::vector<std::optional<double>> norms;        ///< one per Study::norms, in order; empty: n/a
-  std::optional<double> energy_growth;             ///< check_run's energy_growth
-  double seconds = 0.0;                            ///< s, wall time of this run (timing field)
+  double dt = 0.0;                           ///< s, the step used
+  std::vector<std::optional<double>> norms;  ///< one per Study::norms, in order; empty: n/a
+  std::optional<double> energy_growth;       ///< check_run's energy_growth
+  double seconds = 0.0;                      ///< s, wall time of this run (timing field)
 };
 
 /// @brief A value that may be missing as JSON: the number, or null.
@@ -56,7 +56,8 @@ struct PointResult {
 /// @param p the point's parameter values
 /// @param index the point's index in the design (names its run directories)
 /// @param runs_dir where the run directories go
-PointResult run_point(const Study& s, const Point& p, std::size_t index, const std::filesystem::path& runs_dir);
+PointResult run_point(const Study& s, const Point& p, std::size_t index,
+                      const std::filesystem::path& runs_dir);
 
 /// @brief Work estimate of a point for scheduling (longest first): estimate_run_cost()'s work
 /// (max(steps, wave steps) x degrees of freedom), summed over the reference and the methods. 0

@@ -7,10 +7,10 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <verification/study/task_farm.hpp>
 #include <solver/util/Progress.hpp>
 #include <solver/util/write_file_atomic.hpp>
 #include <verification/matrix/Table.hpp>
+#include <verification/study/task_farm.hpp>
 
 namespace beamimpact::study {
 namespace {
@@ -63,10 +63,7 @@ std::optional<StudyResult> execute_study(const Study& s, const fs::path& out) {
   const Progress::Silence quiet;
   std::size_t finished = 0;
   const bool root = farm(
-      cost,
-      [&](std::size_t i) {
-        return run_point(s, r.points[i], i, runs).to_json().dump();
-      },
+      cost, [&](std::size_t i) { return run_point(s, r.points[i], i, runs).to_json().dump(); },
       [&](std::size_t i, const std::string& payload, int rank) {
         PointResult p = PointResult::from_json(nlohmann::json::parse(payload));
         p.rank = rank;
@@ -159,7 +156,9 @@ void add_case(const Study& s, std::size_t i, const Point& pt, const PointResult&
 nlohmann::json study_json(const Study& s, const std::string& version, const nlohmann::json& cases) {
   nlohmann::json params = nlohmann::json::array();
   for (const auto& p : s.parameters) {
-    const char* kind = p.kind == Parameter::Kind::kKey ? "key" : p.kind == Parameter::Kind::kMesh ? "mesh" : "rake";
+    const char* kind = p.kind == Parameter::Kind::kKey    ? "key"
+                       : p.kind == Parameter::Kind::kMesh ? "mesh"
+                                                          : "rake";
     params.push_back({{"name", p.name}, {"kind", kind}, {"target", p.target}, {"values", p.values}});
   }
   nlohmann::json rules = nlohmann::json::array();

@@ -32,8 +32,8 @@ std::optional<StudyResult> execute_study(const Study& s, const std::filesystem::
 
 /// @brief What the written tables count.
 struct StudyCounts {
-  std::size_t cases = 0;   ///< points x methods
-  std::size_t broken = 0;  ///< cases where the method broke (study.md)
+  std::size_t cases = 0;          ///< points x methods
+  std::size_t broken = 0;         ///< cases where the method broke (study.md)
   double cases_per_second = 0.0;  ///< cases / wall_seconds (timing.json)
 };
 
@@ -45,6 +45,6 @@ struct StudyCounts {
 /// @param version `beamimpact --version`
 /// @return the counts the tables state
 StudyCounts write_study(const Study& s, const StudyResult& r, const std::filesystem::path& out,
-                 const std::string& command, const std::string& version);
+                        const std::string& command, const std::string& version);
 
 }  // namespace beamimpact::study

@@ -73,12 +73,23 @@ class Continuum:
         sigma = Eb / (1 + nu) * eps(u) + Eb * nu / (1 - nu ** 2) * ufl.tr(eps(u)) * ufl.Identity(2)
         self.K = dolfinx.fem.petsc.assemble_matrix(fem.form(ufl.inner(sigma, eps(v)) * ufl.dx))
         self.K.assemble()
-        # Row-sum lumped mass: sum_j M_ij = int rho b N_i dx (positive for Lagrange Q2 quads).
-        one = ufl.as_vector((1.0, 1.0))
-        mv = dolfinx.fem.petsc.assemble_vector(fem.form(ufl.inner(rhob * one, v) * ufl.dx))
-        mv.ghostUpdate(addv=PETSc.InsertMode.ADD, mode=PETSc.ScatterMode.REVERSE)
-        self.mass = mv.getArray(readonly=True)[: 2 * self.n_own].copy()
+        # int rho b a . v dx for a constant vector a: with a = (1, 1) the row-sum lumped mass
+        # sum_j M_ij = int rho b N_i dx (positive for Lagrange Q2 quads); with a = g the weak form's
+        # body force of gravity (body_force). One compiled form serves both.
+        self._accel = fem.Constant(msh, PETSc.ScalarType((1.0, 1.0)))
+        self._rho_a = fem.form(ufl.inner(rhob * self._accel, v) * ufl.dx)
+        self.mass = self._assemble_rho_a((1.0, 1.0))
         assert np.all(self.mass > 0), "row-sum lumping gave a non-positive mass"
+
+    def _assemble_rho_a(self, a):
+        self._accel.value[:] = a
+        vec = dolfinx.fem.petsc.assemble_vector(self._rho_a)
+        vec.ghostUpdate(addv=PETSc.InsertMode.ADD, mode=PETSc.ScatterMode.REVERSE)
+        return vec.getArray(readonly=True)[: 2 * self.n_own].copy()
+
+    def body_force(self, g):
+        """Nodal forces (N) of gravity g (m/s^2) on every body: int rho b g . v dx, owned DOFs."""
+        return self._assemble_rho_a(g)
 
     # -- node lookup ------------------------------------------------------------------------
     def find_nodes(self, body, predicate, key):

@@ -1,15 +1,20 @@
 """Explicit central difference with row-sum lumped mass and Lagrange-multiplier contact.
 
-Per step n (u_n, v_{n-1/2} known):
-  v* = v_{n-1/2} - dt M^-1 K u_n,  u* = u_n + dt v*                  (prediction)
+Per step n (u_n, v_{n-1/2} known; F the constant external loads, loads.py, zero without them):
+  v* = v_{n-1/2} + dt M^-1 (F - K u_n),  u* = u_n + dt v*           (prediction)
   contact forces f_n from the predicted gaps (contact.py)           (correction)
   v_{n+1/2} = v* + dt M^-1 f_n,  u_{n+1} = u_n + dt v_{n+1/2}
+The start is v_{-1/2} = v_0 - dt/2 M^-1 (F - K u_0) (u_0 = 0), so that the scheme's
+u_{n+1} - 2 u_n + u_{n-1} = dt^2 a reproduces u = v_0 t + a t^2 / 2 exactly for a constant
+acceleration a (free fall: exact up to roundoff at every step).
 Reported velocities are v_n = (v_{n-1/2} + v_{n+1/2}) / 2; energies use them.
 Energy bookkeeping: the central-difference quantity
   E_{n+1/2} = 1/2 v_{n+1/2}' M v_{n+1/2} + 1/2 u_n' K u_{n+1}
-changes by exactly W_n = f_n . (u_{n+1} - u_{n-1}) / 2 per step, so the contact losses are
-dissipated = -sum W_n, and |E_{n-1/2} - E_0 - sum_{k<n} W_k| is a roundoff-level self-check
-(summary: fenicsx.shadow_energy_error_max).
+changes by exactly (f_n + F) . (u_{n+1} - u_{n-1}) / 2 per step. The contact part
+W_n = f_n . (u_{n+1} - u_{n-1}) / 2 gives dissipated = -sum W_n; the load part sums to
+F . (u_{n+1} + u_n - u_0 - u_{-1}) / 2. |E_{n-1/2} - E_{-1/2} - sum_{k<n} W_k - that load part|
+is a roundoff-level self-check (summary: fenicsx.shadow_energy_error_max). The history's
+load_work is F . u_n (J), the loads' work since t = 0, as the beam methods write it.
 """
 
 import math
@@ -20,6 +25,7 @@ import numpy as np
 from mpi4py import MPI
 
 from contact import Surface, gaps, solve_contact
+from loads import load_vector
 from output import STATE_CODES
 from scene import SceneError
 
@@ -61,6 +67,7 @@ def setup(scene, opts, cont, contacts):
                     minv[2 * loc + comp] = 0.0
                     v0[2 * loc + comp] = 0.0
 
+    F = load_vector(scene, cont, scene.loads)
     dt_crit = cont.critical_dt(minv)
     dt_max = opts.fraction * dt_crit
     if opts.output_interval:
@@ -94,8 +101,10 @@ def setup(scene, opts, cont, contacts):
                            pos[int(ce)], np.array([pos[int(g)] for g in tg]), tw,
                            Surface(range(len(ma)), cg.n_out, 1e-12 * cont.scale))
              for cg, sl, ma, ce, tg, tw in sets]
-    return dict(minv=minv, v0=v0, dt=dt, dt_crit=dt_crit, out_every=out_every, nsteps=nsteps,
-                end=nsteps * dt, cn=cn, csets=csets)
+    # v_{-1/2} from v_0 and the initial acceleration M^-1 F (u_0 = 0: no elastic force).
+    vh0 = v0 if F is None else v0 - 0.5 * dt * minv * F
+    return dict(minv=minv, v0=v0, vh0=vh0, F=F, dt=dt, dt_crit=dt_crit, out_every=out_every,
+                nsteps=nsteps, end=nsteps * dt, cn=cn, csets=csets)
 
 
 def run(cont, st, stats, progress=True, fields=None):
@@ -115,7 +124,8 @@ def run(cont, st, stats, progress=True, fields=None):
     comm.Allreduce(MPI.IN_PLACE, both, op=MPI.SUM)
     ref, mi = both[: len(cn)], both[len(cn):]
 
-    u, vh, ku, u_prev = np.zeros(n2), st["v0"].copy(), np.zeros(n2), np.zeros(n2)
+    F = st["F"]
+    u, vh, ku, u_prev = np.zeros(n2), st["vh0"].copy(), np.zeros(n2), np.zeros(n2)
     u_prev[:] = -dt * vh
     uv, kuv = cont.vec(u), cont.vec(ku)
     comp = np.tile([1.0, 0.0], cont.n_own), np.tile([0.0, 1.0], cont.n_own)
@@ -127,7 +137,7 @@ def run(cont, st, stats, progress=True, fields=None):
     for n in range(st["nsteps"] + 1):
         t = n * dt
         cont.K.mult(uv, kuv)
-        v_pred = vh - dt * minv * ku
+        v_pred = vh - dt * minv * ku if F is None else vh + dt * minv * (F - ku)
         g = np.zeros((3, len(cn), 2))
         g[0, own_mask], g[1, own_mask], g[2, own_mask] = u[own_dofs], vh[own_dofs], v_pred[own_dofs]
         if comm.size > 1:
@@ -152,13 +162,16 @@ def run(cont, st, stats, progress=True, fields=None):
         w_n = float(np.sum(fc * (unc - u_prevc)) / 2)
         vn = 0.5 * (vh + v_new)
         loc = np.array([0.5 * np.sum(mass * vn * vn), 0.5 * (u @ ku), np.sum(mass * vn * comp[0]),
-                        np.sum(mass * vn * comp[1]), 0.5 * np.sum(mass * vh * vh) + 0.5 * (u_prev @ ku)])
+                        np.sum(mass * vn * comp[1]), 0.5 * np.sum(mass * vh * vh) + 0.5 * (u_prev @ ku),
+                        0.0 if F is None else F @ u, 0.0 if F is None else F @ u_prev])
         if comm.size > 1:
             comm.Allreduce(MPI.IN_PLACE, loc, op=MPI.SUM)
-        kin, strain, px, py, shadow = loc
+        kin, strain, px, py, shadow, load_work, load_work_prev = loc
+        load_part = 0.5 * (load_work + load_work_prev)   # F . (u_n + u_{n-1}) / 2
         if n == 0:
             E0, p0 = kin + strain, np.array([px, py])
-        shadow_err = max(shadow_err, abs(shadow - work_sum - E0))
+            shadow0 = shadow - load_part
+        shadow_err = max(shadow_err, abs(shadow - work_sum - load_part - shadow0))
         drift = max(drift, float(np.hypot(px - p0[0], py - p0[1])))
         # Row n: forces of step n, gap after the step, fields at t_n.
         diss_row = 0.0 - (work_sum + float(np.sum(fc * (uc - u_prevc)) / 2))
@@ -176,7 +189,7 @@ def run(cont, st, stats, progress=True, fields=None):
                 ub, vb = c.tgt_w @ uc[c.tgt], c.tgt_w @ vnc_mid[c.tgt]
                 row += [infos[k]["R"], infos[k]["tau"], gap, *uc[c.centre], *vnc_mid[c.centre], *ub, *vb,
                         STATE_CODES[infos[k]["state"]]]
-            rows.append(row + [kin, strain, diss_row, 0.0, px, py])
+            rows.append(row + [kin, strain, diss_row, load_work, px, py])
             if fields is not None:
                 fields.write(t, u)
         work_sum += w_n
@@ -194,7 +207,7 @@ def run(cont, st, stats, progress=True, fields=None):
                      np.sum((mass * comp[0])[d])] for d in body_dofs])
     if comm.size > 1:
         comm.Allreduce(MPI.IN_PLACE, loc, op=MPI.SUM)
-    return dict(rows=rows, E0=E0, E_final=rows[-1][-5] + rows[-1][-4], drift=drift,
+    return dict(rows=rows, E0=E0, E_final=kin + strain, load_work=load_work, drift=drift,
                 shadow_err=shadow_err, friction_power_max=fric_max if nc and fric_max > -math.inf else 0.0,
                 final_velocity={r.name: [loc[i, 0] / loc[i, 2], loc[i, 1] / loc[i, 2]]
                                 for i, r in enumerate(cont.rects)})

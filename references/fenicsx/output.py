@@ -14,7 +14,8 @@ CONTACT_COLUMNS = ["R", "tau", "gap", "ua_x", "ua_y", "va_x", "va_y",
                    "ub_x", "ub_y", "vb_x", "vb_y", "state"]
 # The integer of column `state` (interface.md): 0 open, 1 stick, 2 slip, 3 closed without friction.
 STATE_CODES = {"open": 0, "stick": 1, "slip": 2, "frictionless": 3}
-TOTAL_COLUMNS = ["kinetic", "strain", "dissipated", "load_work", "px", "py"]  # no loads: load_work 0
+# load_work: F . u (J), the constant loads' work since t = 0 (0 without [loads]).
+TOTAL_COLUMNS = ["kinetic", "strain", "dissipated", "load_work", "px", "py"]
 
 
 def history_columns(n_contacts):

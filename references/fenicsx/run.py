@@ -142,6 +142,8 @@ def main(argv):
     effects = ["axial", "bending", "plane_stress"]
     if any(c.friction > 0 for c in contacts):
         effects.append("friction")
+    if scene.loads.any():
+        effects.append("loads")
     csum = []
     ncol = len(CONTACT_COLUMNS)
     for k, (c, s) in enumerate(zip(contacts, stats)):
@@ -183,6 +185,8 @@ def main(argv):
             "friction_power_max": res["friction_power_max"],
         },
     }
+    if scene.loads.any():
+        summary["loads"] = scene.loads.summary(scene.bodies, res["load_work"])
     if comm.rank == 0:
         try:
             write_run(args.out, history_columns(len(contacts)), res["rows"], summary)

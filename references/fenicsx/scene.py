@@ -78,10 +78,11 @@ class Scene:
     fenicsx: dict
     assumed: dict
     fields: bool = False  # [output] fields: VTK fields (fields.py)
+    loads: object = None  # loads.Loads: the [loads] table (gravity, point forces)
 
 
 _TOP = {"name", "description", "time", "model", "bodies", "contacts", "effects", "output",
-        "fenicsx", "paper", "ida", "exact"}
+        "fenicsx", "paper", "ida", "exact", "loads"}
 
 
 class _Table:
@@ -178,10 +179,6 @@ def load_scene(path, overrides=None):
         table, _, key = k.partition(".")
         doc.setdefault(table, {})[key] = v
     assumed = {}
-    if "loads" in doc:
-        raise SceneError(file, "loads", "the FEniCSx reference does not apply external loads (gravity, "
-                         "point forces); expected no [loads] table, or run a method that applies them "
-                         "(paper, ida)")
     for k in doc:
         if k not in _TOP:
             raise SceneError(file, k, "unknown key (a typo must not fall back to a default)")
@@ -276,6 +273,9 @@ def load_scene(path, overrides=None):
             b.fail("name", f"expected a unique body name, {body.name!r} is used twice")
         bodies.append(body)
 
+    from loads import read_loads   # here: loads.py builds on this module's table reader
+    loads = read_loads(doc, file, bodies)
+
     contacts_raw = doc.get("contacts")
     if not isinstance(contacts_raw, list) or not contacts_raw:
         raise SceneError(file, "contacts", "expected an array of at least one [[contacts]] table")
@@ -343,7 +343,7 @@ def load_scene(path, overrides=None):
     return Scene(file=file, sha256=hashlib.sha256(data).hexdigest(), name=name,
                  description=description, dt=dt, fraction=fraction, end=end,
                  output_every=output_every, model=model, bodies=bodies, contacts=contacts,
-                 effects=effects, fenicsx=fen, assumed=assumed, fields=fields)
+                 effects=effects, fenicsx=fen, assumed=assumed, fields=fields, loads=loads)
 
 
 def _default_vec(b, key):

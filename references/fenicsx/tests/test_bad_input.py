@@ -37,6 +37,17 @@ cases = [
     ("bad mesh option", os.path.join(common.SCENES, "s2_transverse.toml"), ["--elements-depth", "0"],
      "--elements-depth"),
     ("missing file", os.path.join(work, "nope.toml"), [], "cannot read"),
+    ("loads not a table", variant("loads_scalar", "[time]", "loads = 1\n[time]"), [], "'loads'"),
+    ("gravity not two numbers", variant("gravity", "[time]", "[loads]\ngravity = [0.0]\n\n[time]"), [],
+     "loads.gravity"),
+    ("typo in [loads]", variant("loads_key", "[time]", "[loads]\ngravty = [0.0, -1.0]\n\n[time]"), [],
+     "loads.gravty"),
+    ("point force on an unknown body", variant("point_body", "[time]", '[[loads.point]]\nbody = "C"\n'
+     'node = "end"\nforce = [0.0, 1.0]\n\n[time]'), [], "loads.point[0].body"),
+    ("point force node out of range", variant("point_node", "[time]", '[[loads.point]]\nbody = "B"\n'
+     'node = 11\nforce = [0.0, 1.0]\n\n[time]'), [], "loads.point[0].node"),
+    ("point force without force", variant("point_force", "[time]", '[[loads.point]]\nbody = "B"\n'
+     'node = 5\n\n[time]'), [], "loads.point[0].force"),
 ]
 for what, scene, args, key in cases:
     out = os.path.join(work, "out_" + what.replace(" ", "_"))
@@ -55,4 +66,14 @@ rc, err = common.run(scene, out, "--elements-length", "A=25,B=32", expect=2)
 lines = [l for l in err.strip().splitlines() if l.strip() and not l.startswith("INFO")]
 check(rc == 2 and "bodies[1].supports[1].at" in err and not os.path.exists(os.path.join(out, "summary.json")),
       f"support off the mesh nodes: exit {rc}, message: {lines[-1] if lines else ''}")
+
+# A point force at a beam node that is not on a line of continuum nodes (B's node 3 at 3 m with
+# 32 Q2 elements of 0.3125 m: 3 m is not a multiple of half an element).
+scene = variant("point_off_node", "[time]", '[[loads.point]]\nbody = "B"\nnode = 3\nforce = [0.0, -1.0]\n\n[time]')
+out = os.path.join(work, "out_point")
+rc, err = common.run(scene, out, "--elements-length", "A=25,B=32", expect=2)
+lines = [l for l in err.strip().splitlines() if l.strip() and not l.startswith("INFO")]
+check(rc == 2 and len(lines) == 1 and "loads.point[0].node" in err
+      and not os.path.exists(os.path.join(out, "summary.json")),
+      f"point force off the mesh nodes: exit {rc}, message: {lines[-1] if lines else ''}")
 common.finish()

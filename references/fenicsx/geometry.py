@@ -1,7 +1,9 @@
 """Continuum geometry derived from a beam scene (pure numpy, no dolfinx).
 
 Each beam becomes a rectangle along its axis, of depth h = sqrt(12 I / A) and thickness
-b = A / h: the one rectangle whose area and second moment match the beam's section.
+b = A / h: the one rectangle whose area and second moment match the beam's section. A rod (a
+body without I, in a scene of rods on one line, scene.py) and an immovable rigid body without I
+get the square section h = b = sqrt(A).
 
 Where the striker meets the target's side (S2-S4), the beam scene's gap is measured from the
 striker node to the target's axis; the continuum's gap is measured between surfaces. The striker
@@ -73,7 +75,7 @@ def build_geometry(scene, opts):
     """Rectangles (with striker translations) and contact geometries; raises SceneError."""
     rects = []
     for b in scene.bodies:
-        h = math.sqrt(12.0 * b.inertia / b.area)
+        h = math.sqrt(12.0 * b.inertia / b.area) if b.inertia > 0 else math.sqrt(b.area)
         p0, p1 = np.array(b.start), np.array(b.end)
         e = (p1 - p0) / b.length
         ny = opts.elements_depth

@@ -54,6 +54,9 @@ def setup(scene, opts, cont, contacts):
         own = np.flatnonzero(cont.body == i)
         v0[2 * own], v0[2 * own + 1] = r.velocity[0], r.velocity[1]
     for bi, body in enumerate(scene.bodies):
+        if body.rigid:   # immovable: every node held
+            own = np.flatnonzero(cont.body == bi)
+            minv[2 * own] = minv[2 * own + 1] = v0[2 * own] = v0[2 * own + 1] = 0.0
         for sup in body.supports:
             nodes, _ = cont.find_nodes(bi, lambda s, q, s0=sup.s: (abs(s - s0) < tol) & (abs(q) < tol),
                                        lambda s, q: s)

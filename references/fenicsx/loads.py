@@ -76,6 +76,9 @@ def read_loads(doc, file, bodies):
         if name not in names:
             p.fail("body", f"expected one of the bodies ({', '.join(names)}), found {name!r}")
         body = names[name]
+        if body.rigid:
+            p.fail("body", f"body {name!r} is immovable (a rigid body with a support): a load on it "
+                   "does nothing; expected a deformable body")
         node = p.raw("node")
         expected = f'"start", "end" or a node index 0..{body.elements} of body {name!r}'
         if node == "start":

@@ -43,6 +43,7 @@ class Body:
     velocity: tuple   # m/s
     supports: list = field(default_factory=list)
     index: int = 0
+    rigid: bool = False  # an immovable rigid body: every continuum node held (no free rigid body)
 
     @property
     def length(self):
@@ -240,8 +241,7 @@ def load_scene(path, overrides=None):
             index=i)
         if body.length <= 0:
             b.fail("end", "expected a point different from start (a body of positive length)")
-        if body.inertia <= 0:
-            b.fail("inertia", "expected > 0: the continuum's depth is sqrt(12 I / A)")
+        body.rigid = _rigid(b)
         if b.raw("theory", "euler-bernoulli") != "euler-bernoulli":
             b.fail("theory", "the plane-stress continuum is compared with Euler-Bernoulli beams only "
                    "(theory = \"timoshenko\" is run by the paper method and ida); expected "
@@ -249,6 +249,9 @@ def load_scene(path, overrides=None):
         sup_raw = b.raw("supports", [])
         if not isinstance(sup_raw, list):
             b.fail("supports", "expected an array of { at = ..., fix = [...] } tables")
+        if body.rigid:
+            _immovable(b, sup_raw, assumed)
+            sup_raw = []   # held as a whole: no support nodes of its own
         for j, sraw in enumerate(sup_raw):
             s = _Table(sraw, file, f"bodies[{i}].supports[{j}]", assumed)
             at = s.raw("at")
@@ -319,6 +322,11 @@ def load_scene(path, overrides=None):
     e = _Table(doc.get("effects", {}), file, "effects", {})
     effects = {k: e.boolean(k, None) for k in ("bending", "friction", "damping")}
     e.finish()
+    _check_rods(file, bodies, effects, assumed)
+    for c in contacts:
+        if bodies[c.striker].rigid:
+            raise SceneError(file, c.key + ".striker", "the striker is an immovable rigid body and "
+                             "cannot strike; expected a deformable striker (the rigid body as the target)")
     if effects["damping"]:
         raise SceneError(file, "effects.damping", "damping cannot be modelled by the FEniCSx reference")
     if effects["friction"] is False:
@@ -344,6 +352,55 @@ def load_scene(path, overrides=None):
                  description=description, dt=dt, fraction=fraction, end=end,
                  output_every=output_every, model=model, bodies=bodies, contacts=contacts,
                  effects=effects, fenicsx=fen, assumed=assumed, fields=fields, loads=loads)
+
+
+def _rigid(b):
+    """The body's `rigid` flag (false when absent; not listed in assumed, as the C++ reader)."""
+    rigid = b.raw("rigid", False)
+    if not isinstance(rigid, bool):
+        b.fail("rigid", f"expected true or false, found {rigid!r}")
+    return rigid
+
+
+def _immovable(b, sup_raw, assumed):
+    """A rigid body must be immovable: one support fixing x, y and theta (the continuum holds
+    every node of it); a free rigid body is refused."""
+    fix = None
+    if len(sup_raw) == 1 and isinstance(sup_raw[0], dict):
+        s = _Table(sup_raw[0], b.file, b.path("supports[0]"), assumed)
+        s.raw("at")
+        fix = s.raw("fix")
+        s.finish()
+    if not isinstance(fix, list) or sorted(fix) != ["theta", "x", "y"]:
+        b.fail("supports", "the continuum models an immovable rigid body only (every node held); "
+               "a free rigid body is run by the beam methods: expected one support fixing "
+               "\"x\", \"y\" and \"theta\"")
+
+
+def _check_rods(file, bodies, effects, assumed):
+    """A deformable body without `inertia` is a rod: accepted when the scene is one of rods (all
+    bodies on one line, bending not forced on), with the continuum depth sqrt(A) (a square
+    section; with Poisson 0 the axial response does not depend on it). Rigid bodies need no I."""
+    rods = [bd for bd in bodies if bd.inertia <= 0]
+    if not rods:
+        return
+    p0 = bodies[0].start
+    e = ((bodies[0].end[0] - p0[0]) / bodies[0].length, (bodies[0].end[1] - p0[1]) / bodies[0].length)
+    scale = max(bd.length for bd in bodies)
+    on_line = all(abs((q[0] - p0[0]) * e[1] - (q[1] - p0[1]) * e[0]) <= 1e-9 * scale
+                  for bd in bodies for q in (bd.start, bd.end))
+    for bd in rods:
+        if bd.rigid:
+            continue
+        if not on_line or effects["bending"]:
+            raise SceneError(file, f"bodies[{bd.index}].inertia", "missing; expected a positive second "
+                             "moment of area (m^4): this scene bends, and the continuum's depth is "
+                             "sqrt(12 I / A)")
+    for bd in rods:
+        assumed[f"fenicsx.depth.{bd.name}"] = (
+            "sqrt(area) (no inertia: a square section; " +
+            ("an immovable rigid body, held at every node)" if bd.rigid else
+             "rods on one line, so the axial response does not depend on it)"))
 
 
 def _default_vec(b, key):

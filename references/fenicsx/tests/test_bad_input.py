@@ -11,11 +11,15 @@ with open(os.path.join(common.SCENES, "s2_transverse.toml")) as f:
     S2 = f.read()
 
 
-def variant(name, old, new):
-    assert old in S2, old
+def variant(name, old, new, *more):
+    """S2 with `old` replaced by `new` (and further old, new pairs), written as NAME.toml."""
+    text = S2
+    for o, n in zip((old,) + more[0::2], (new,) + more[1::2]):
+        assert o in text, o
+        text = text.replace(o, n, 1)
     path = os.path.join(work, name + ".toml")
     with open(path, "w") as f:
-        f.write(S2.replace(old, new, 1))
+        f.write(text)
     return path
 
 
@@ -37,6 +41,17 @@ cases = [
     ("bad mesh option", os.path.join(common.SCENES, "s2_transverse.toml"), ["--elements-depth", "0"],
      "--elements-depth"),
     ("missing file", os.path.join(work, "nope.toml"), [], "cannot read"),
+    ("bending body without inertia", variant("no_inertia", "inertia = 0.0053333333333333 # m^4 (assumed: 1 m x 0.4 m rectangle)", ""), [],
+     "bodies[0].inertia"),
+    ("free rigid body", variant("free_rigid", 'supports = [{ at = "start", fix = ["x", "y"] }, { at = "end", fix = ["y"] }]',
+                                'rigid = true\nsupports = []'), [], "bodies[1].supports"),
+    ("rigid striker", variant("rigid_striker", "velocity = [0.0, -1.0]       # m/s\nsupports = []",
+                              'velocity = [0.0, 0.0]\nrigid = true\nsupports = [{ at = "start", fix = ["x", "y", "theta"] }]'),
+     [], "contacts[0].striker"),
+    ("point force on an immovable body", variant("point_rigid", "[time]", '[[loads.point]]\nbody = "B"\n'
+     'node = 5\nforce = [0.0, 1.0]\n\n[time]', 'supports = [{ at = "start", fix = ["x", "y"] }, '
+     '{ at = "end", fix = ["y"] }]', 'rigid = true\nsupports = [{ at = "start", fix = ["x", "y", "theta"] }]'),
+     [], "loads.point[0].body"),
     ("loads not a table", variant("loads_scalar", "[time]", "loads = 1\n[time]"), [], "'loads'"),
     ("gravity not two numbers", variant("gravity", "[time]", "[loads]\ngravity = [0.0]\n\n[time]"), [],
      "loads.gravity"),

@@ -323,6 +323,7 @@ def load_scene(path, overrides=None):
     effects = {k: e.boolean(k, None) for k in ("bending", "friction", "damping")}
     e.finish()
     _check_rods(file, bodies, effects, assumed)
+    _check_rod_loads(file, bodies, loads)
     for c in contacts:
         if bodies[c.striker].rigid:
             raise SceneError(file, c.key + ".striker", "the striker is an immovable rigid body and "
@@ -401,6 +402,22 @@ def _check_rods(file, bodies, effects, assumed):
             "sqrt(area) (no inertia: a square section; " +
             ("an immovable rigid body, held at every node)" if bd.rigid else
              "rods on one line, so the axial response does not depend on it)"))
+
+
+def _check_rod_loads(file, bodies, loads):
+    """In a scene of rods (a deformable body without I) a load across the axis would bend the
+    continuum's square section, a stiffness the scene does not give: refused, as the beam
+    methods' rod model refuses it."""
+    if not any(bd.inertia <= 0 and not bd.rigid for bd in bodies):
+        return
+    b0 = bodies[0]
+    e = ((b0.end[0] - b0.start[0]) / b0.length, (b0.end[1] - b0.start[1]) / b0.length)
+    for key, a in [("loads.gravity", loads.gravity)] + [(p.key + ".force", p.force) for p in loads.point]:
+        if abs(a[0] * e[1] - a[1] * e[0]) > 1e-12 * math.hypot(*a):
+            raise SceneError(file, key, f"this scene is of rods along ({e[0]:.6g}, {e[1]:.6g}) (a body "
+                             f"without inertia), and the load ({a[0]:.6g}, {a[1]:.6g}) has a component "
+                             "across that axis; expected a load along the axis, or give every body "
+                             "its inertia")
 
 
 def _default_vec(b, key):

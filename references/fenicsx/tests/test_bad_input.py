@@ -52,6 +52,12 @@ cases = [
      'node = 5\nforce = [0.0, 1.0]\n\n[time]', 'supports = [{ at = "start", fix = ["x", "y"] }, '
      '{ at = "end", fix = ["y"] }]', 'rigid = true\nsupports = [{ at = "start", fix = ["x", "y", "theta"] }]'),
      [], "loads.point[0].body"),
+    ("load across a rod scene's axis", variant("rod_across", "[time]", "[loads]\ngravity = [1.0, -10.0]\n\n[time]",
+     "inertia = 0.0053333333333333 # m^4 (assumed: 1 m x 0.4 m rectangle)", "",
+     "inertia = 0.0053333333333333 # m^4 (assumed)", "", "[[contacts]]", "[effects]\nbending = false\n\n[[contacts]]",
+     "start = [5.0, 5.1]            # m, upper end\nend = [5.0, 0.1]", "start = [-6.0, 0.0]\nend = [-1.0, 0.0]",
+     'supports = [{ at = "start", fix = ["x", "y"] }, { at = "end", fix = ["y"] }]', "supports = []"),
+     [], "loads.gravity"),
     ("loads not a table", variant("loads_scalar", "[time]", "loads = 1\n[time]"), [], "'loads'"),
     ("gravity not two numbers", variant("gravity", "[time]", "[loads]\ngravity = [0.0]\n\n[time]"), [],
      "loads.gravity"),

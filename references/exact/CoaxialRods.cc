@@ -7,13 +7,20 @@
 
 namespace beamimpact::exact {
 
-CoaxialRods::CoaxialRods(const Rod& a, const Rod& b, double v0, double gap, double t_end)
+// Waves in rod X, xi = distance from its contact end, compressive force positive: f(t - xi/c)
+// runs away from the contact end, g(t + xi/c) back towards it; the force is f + g and the
+// particle velocity away from the contact (f - g) / Z. At the contact end f = P - g. A free far
+// end (zero force) returns g(t) = -f(t - T), a fixed one (zero velocity) g(t) = +f(t - T): with
+// eps = +1 (free) or -1 (fixed), f = P + eps S and S(t) = f(t - T) = sum_{k>=1} eps^(k-1) P(t - k T),
+// so the contact end moves at (f - g) / Z = (P + 2 eps S) / Z, away from the contact.
+CoaxialRods::CoaxialRods(const Rod& a, const Rod& b, double v0, double gap, double t_end, FarEnd far)
     : a_(a),
       b_(b),
       v0_(v0),
       gap0_(gap),
       t_end_(t_end),
-      t0_(v0 > 0.0 ? gap / v0 : std::numeric_limits<double>::infinity()) {
+      t0_(v0 > 0.0 ? gap / v0 : std::numeric_limits<double>::infinity()),
+      eb_(far == FarEnd::kFixed ? -1.0 : 1.0) {
   solve();
 }
 
@@ -24,15 +31,17 @@ double CoaxialRods::force_at(double s) const {
   return std::prev(it)->P;
 }
 
-// S_X(s) = sum_{k>=1} P(s - k T_X): the force reflected back to the contact end.
-double CoaxialRods::memory(double s, double T) const {
-  double S = 0.0;
-  for (double x = s - T; x >= t0_; x -= T) S += force_at(x);
+// S_X(s) = sum_{k>=1} sign^(k-1) P(s - k T_X): the force reflected back to the contact end.
+double CoaxialRods::memory(double s, double T, double sign) const {
+  double S = 0.0, w = 1.0;
+  for (double x = s - T; x >= t0_; x -= T, w *= sign) S += w * force_at(x);
   return S;
 }
 
-// R_X(s) = P(s) + S_X(s): the force wave leaving the contact end at time s.
-double CoaxialRods::outgoing(double s, double T) const { return force_at(s) + memory(s, T); }
+// R_X(s) = P(s) + sign S_X(s): the force wave leaving the contact end at time s.
+double CoaxialRods::outgoing(double s, double T, double sign) const {
+  return force_at(s) + sign * memory(s, T, sign);
+}
 
 void CoaxialRods::solve() {
   const double ZA = a_.impedance(), ZB = b_.impedance();
@@ -52,10 +61,10 @@ void CoaxialRods::solve() {
     const double nb = *pending.begin();
     // P is constant on (s, nb): evaluate the memories at the midpoint, away from any jump.
     const double mid = 0.5 * (s + nb);
-    const double SA = memory(mid, TA), SB = memory(mid, TB);
-    double P = 0.0, va = v0_ - 2.0 * SA / ZA, vb = 2.0 * SB / ZB;
+    const double SA = memory(mid, TA, 1.0), SB = memory(mid, TB, eb_);
+    double P = 0.0, va = v0_ - 2.0 * SA / ZA, vb = 2.0 * eb_ * SB / ZB;
     if (closed) {
-      const double trial = (v0_ - 2.0 * SA / ZA - 2.0 * SB / ZB) / (1.0 / ZA + 1.0 / ZB);
+      const double trial = (v0_ - 2.0 * SA / ZA - 2.0 * eb_ * SB / ZB) / (1.0 / ZA + 1.0 / ZB);
       if (trial > tolP) {
         P = trial;
         va = vb = v0_ - (P + 2.0 * SA) / ZA;
@@ -138,10 +147,11 @@ std::vector<std::array<double, 2>> CoaxialRods::force_intervals() const {
 }
 
 // The field in a rod at time t is two piecewise-constant force waves: f(xi) = R(t - xi/c)
-// leaving the contact end and g(xi) = -R(t - T + xi/c) coming back after the free-end
+// leaving the contact end and g(xi) = -eps R(t - T + xi/c) coming back after the far-end
 // reflection (xi = distance from the contact end). Their pieces are integrated exactly.
 RodField CoaxialRods::field(const Rod& rod, double t, bool striker) const {
   const double c = rod.wave_speed(), T = rod.round_trip(), L = rod.length, Z = rod.impedance();
+  const double eps = striker ? 1.0 : eb_;
   std::vector<double> xs = {0.0, L};
   for (std::size_t j = 1; j < segs_.size(); ++j) {
     // R jumps at s_j + k T; keep those inside the window [t - T, t].
@@ -159,7 +169,7 @@ RodField CoaxialRods::field(const Rod& rod, double t, bool striker) const {
     const double dx = xs[i + 1] - xs[i];
     if (dx <= 0.0) continue;
     const double xm = 0.5 * (xs[i] + xs[i + 1]);
-    const double f = outgoing(t - xm / c, T), g = -outgoing(t - T + xm / c, T);
+    const double f = outgoing(t - xm / c, T, eps), g = -eps * outgoing(t - T + xm / c, T, eps);
     // Compressive waves: one moving away from the contact end carries particle velocity -f/Z
     // in the striker (+f/Z in the target); one moving back carries +g/Z (-g/Z).
     const double v = striker ? v0_ + (g - f) / Z : (f - g) / Z;

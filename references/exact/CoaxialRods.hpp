@@ -1,7 +1,8 @@
 #pragma once
 /// @file CoaxialRods.hpp
-/// @brief Exact d'Alembert solution of two free coaxial elastic rods in impact
-/// (references.md section 1), in the frame where the target B is initially at rest.
+/// @brief Exact d'Alembert solution of two coaxial elastic rods in impact (references.md
+/// section 1), in the frame where the target B is initially at rest: a free striker, and a
+/// target whose far end is free or fixed (clamped against axial motion).
 
 #include <array>
 #include <vector>
@@ -43,7 +44,8 @@ struct RodField {
 class CoaxialRods {
  public:
   /// @brief Striker a approaches target b (at rest) at v0 (m/s) across gap (m); solved to t_end (s).
-  CoaxialRods(const Rod& a, const Rod& b, double v0, double gap, double t_end);
+  /// @param far how the target's far end reflects (free by default).
+  CoaxialRods(const Rod& a, const Rod& b, double v0, double gap, double t_end, FarEnd far = FarEnd::kFree);
 
   /// @brief End state at time t (s), 0 <= t <= t_end; right-continuous at breakpoints.
   RodsEndState state(double t) const;
@@ -65,13 +67,14 @@ class CoaxialRods {
 
  private:
   double force_at(double s) const;
-  double memory(double s, double T) const;
-  double outgoing(double s, double T) const;
+  double memory(double s, double T, double sign) const;
+  double outgoing(double s, double T, double sign) const;
   RodField field(const Rod& rod, double t, bool striker) const;
   void solve();
 
   Rod a_, b_;
   double v0_, gap0_, t_end_, t0_;
+  double eb_;  ///< reflection sign of the target's far end: +1 free, -1 fixed
   std::vector<RodsSegment> segs_;
 };
 

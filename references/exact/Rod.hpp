@@ -23,4 +23,10 @@ struct Rod {
   double mass() const { return rho * area * length; }
 };
 
+/// @brief How the target's far end (the one away from the contact) reflects a wave.
+enum class FarEnd {
+  kFree,   ///< stress-free: a compressive wave returns as tension (the free rods of references.md 1)
+  kFixed,  ///< displacement held: a compressive wave returns as compression
+};
+
 }  // namespace beamimpact::exact

@@ -34,6 +34,13 @@ bool holds_normal(const Support& s, Vec2 n) {
   return s.fix_x && s.fix_y;
 }
 
+// True when the support holds the displacement along the unit axis d (rotation may be held too).
+bool holds_along(const Support& s, Vec2 d) {
+  if (std::abs(d[0]) < kTol) return s.fix_y;
+  if (std::abs(d[1]) < kTol) return s.fix_x;
+  return s.fix_x && s.fix_y;
+}
+
 /// @brief Throws SceneError(scene.file, key, "the exact method cannot solve this scene: " + msg).
 [[noreturn]] void refuse(const Scene& scene, const std::string& key, const std::string& msg) {
   throw SceneError(scene.file, key, "the exact method cannot solve this scene: " + msg);
@@ -66,7 +73,24 @@ struct Frame {
   double va_norm, vb_norm;  ///< m/s, speeds of striker and target
 };
 
-/// @brief Two free rods: coaxial, end to end, both moving along the common axis.
+/// @brief A target with supports is a rod clamped at its far end when its only support is at the
+/// node away from the striker, holding the displacement along the axis (other components do not
+/// enter the axial problem), and it starts at rest.
+void recognise_fixed_far_end(const Scene& scene, const Frame& f, ExactProblem& p, double s_start,
+                             double s_end) {
+  const Body& B = f.B;
+  const int far = s_end > s_start ? B.elements : 0;
+  if (B.supports.size() != 1 || B.supports[0].node != far || !holds_along(B.supports[0], p.dir))
+    refuse(scene, f.kb + ".supports",
+           "the coaxial target's supports are not one support at its far end holding the axial "
+           "displacement (the coaxial rod solution has a free or a clamped far end only)");
+  if (f.vb_norm != 0.0)
+    refuse(scene, f.kb + ".velocity", "the target is fixed at its far end but not at rest");
+  p.target_far_end = FarEnd::kFixed;
+}
+
+/// @brief Two coaxial rods, end to end, both moving along the common axis; the target's far end
+/// free, or fixed (recognise_fixed_far_end).
 void recognise_coaxial_rods(const Scene& scene, const Frame& f, ExactProblem& p) {
   const Body& B = f.B;
   if (std::abs(cross(f.eb, p.dir)) > kTol || std::abs(cross(sub(B.start, f.pc), p.dir)) > kTol * f.scale)
@@ -78,6 +102,7 @@ void recognise_coaxial_rods(const Scene& scene, const Frame& f, ExactProblem& p)
     refuse(scene, f.kb + ".start", "the target is not ahead of the striker's contact end");
   if (std::abs(cross(B.velocity, p.dir)) > kTol * (f.va_norm + f.vb_norm + 1e-300))
     refuse(scene, f.kb + ".velocity", "the target's velocity is not along the common axis");
+  if (!B.supports.empty()) recognise_fixed_far_end(scene, f, p, s1, s2);
   p.kind = ExactKind::kCoaxialRods;
   p.gap = std::max(0.0, std::min(s1, s2));
   p.target_speed = dot(B.velocity, p.dir);
@@ -260,7 +285,7 @@ ExactProblem recognise_scene(const Scene& scene) {
     refuse(scene, ka + ".velocity", "the striker's velocity is not along its own axis");
   p.striker_rod = as_rod(A);
   const Frame f{A, B, ka, kb, pc, unit(sub(B.end, B.start)), scale, va_norm, vb_norm};
-  if (B.supports.empty())
+  if (B.supports.empty() || std::abs(cross(f.eb, p.dir)) <= kTol)  // free, or on the striker's axis
     recognise_coaxial_rods(scene, f, p);
   else
     recognise_rod_on_beam(scene, f, p);

@@ -14,7 +14,8 @@ namespace beamimpact::exact {
 
 /// @brief The two problems the exact method solves.
 enum class ExactKind {
-  kCoaxialRods,  ///< two free coaxial rods, end to end (references.md section 1)
+  kCoaxialRods,  ///< two coaxial rods end to end, the target's far end free or fixed (references.md section
+                 ///< 1)
   kRodOnBeam,    ///< a free rod end-on onto a simply supported beam (references.md section 2)
   kRigidRod,     ///< a rigid rod onto an immovable rigid surface, with friction (references.md section 3)
   kRodOnWall,    ///< a free elastic rod end-on onto an immovable rigid body, gravity along it (RodOnWall.hpp)
@@ -23,15 +24,16 @@ enum class ExactKind {
 /// @brief The 1D problem a scene describes, in the frame of its contact.
 struct ExactProblem {
   ExactKind kind = ExactKind::kCoaxialRods;
-  int striker = 0, target = 0;  ///< body indices in the scene
-  Vec2 dir{};                   ///< unit vector: striker contact end towards the target
-  double v0 = 0.0;              ///< m/s, approach speed along dir (relative to the target)
-  double target_speed = 0.0;    ///< m/s, target's initial speed along dir (rods only; 0 for beams)
-  double gap = 0.0;             ///< m, initial gap along dir
-  Rod striker_rod;              ///< the striker as a rod
-  Rod target_rod;               ///< the target as a rod (kCoaxialRods)
-  SimpleBeam beam;              ///< the target as a beam (kRodOnBeam)
-  double x_c = 0.0;             ///< m, struck point from the target's start node (kRodOnBeam)
+  int striker = 0, target = 0;            ///< body indices in the scene
+  Vec2 dir{};                             ///< unit vector: striker contact end towards the target
+  double v0 = 0.0;                        ///< m/s, approach speed along dir (relative to the target)
+  double target_speed = 0.0;              ///< m/s, target's initial speed along dir (rods only; 0 for beams)
+  double gap = 0.0;                       ///< m, initial gap along dir
+  Rod striker_rod;                        ///< the striker as a rod
+  Rod target_rod;                         ///< the target as a rod (kCoaxialRods)
+  FarEnd target_far_end = FarEnd::kFree;  ///< kCoaxialRods: the target's far end free or fixed
+  SimpleBeam beam;                        ///< the target as a beam (kRodOnBeam)
+  double x_c = 0.0;                       ///< m, struck point from the target's start node (kRodOnBeam)
   ContactKind contact_kind = ContactKind::kEndToEnd;  ///< string forms in schema/output_schema.hpp
   Vec2 normal{};       ///< kRigidRod: unit normal of the surface, toward the rod
   double theta = 0.0;  ///< kRigidRod: rad, angle between the rod and the surface

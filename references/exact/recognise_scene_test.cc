@@ -10,6 +10,7 @@
 namespace beamimpact::exact {
 namespace {
 
+using beamimpact::testing::benchmark_scene;
 using beamimpact::testing::paper_scene;
 
 // Expects a SceneError whose key is `key` and whose message contains `text`.
@@ -86,6 +87,29 @@ TEST(RecogniseScene, RefusesWhatItCannotSolve) {
   s = s1;
   s.bodies[1].velocity = {0.0, 0.2};
   expect_refused(s, "bodies[1].velocity", "not along the common axis");
+}
+
+// A coaxial target with one support at its far end holding the axial displacement is a rod
+// clamped there; any other support on a coaxial target is refused, naming the supports.
+TEST(RecogniseScene, CoaxialTargetClampedAtItsFarEnd) {
+  Scene s = load_scene(benchmark_scene("two_rods_second_contact"));
+  const ExactProblem p = recognise_scene(s);
+  EXPECT_EQ(p.kind, ExactKind::kCoaxialRods);
+  EXPECT_EQ(p.target_far_end, FarEnd::kFixed);
+  EXPECT_DOUBLE_EQ(p.gap, 0.5);
+  EXPECT_EQ(recognise_scene(load_scene(paper_scene("s1_central"))).target_far_end, FarEnd::kFree);
+  const Scene clamped = s;
+  s.bodies[1].supports[0] = Support{0, true, true, true};  // at the struck end instead
+  expect_refused(s, "bodies[1].supports", "one support at its far end");
+  s = clamped;
+  s.bodies[1].supports[0].fix_x = false;  // holds y and theta only: axially free
+  expect_refused(s, "bodies[1].supports", "holding the axial");
+  s = clamped;
+  s.bodies[1].supports.push_back(Support{3, false, true, false});
+  expect_refused(s, "bodies[1].supports", "one support at its far end");
+  s = clamped;
+  s.bodies[1].velocity = {0.3, 0.0};
+  expect_refused(s, "bodies[1].velocity", "fixed at its far end but not at rest");
 }
 
 }  // namespace

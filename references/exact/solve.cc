@@ -55,7 +55,7 @@ SimulationResult solve_rods(const Scene& scene, const ExactProblem& p, ResultRec
   std::vector<HistoryRow> rows;
   const Rod& A = p.striker_rod;
   const Rod& B = p.target_rod;
-  const CoaxialRods sol(A, B, p.v0, p.gap, scene.time.end);
+  const CoaxialRods sol(A, B, p.v0, p.gap, scene.time.end, p.target_far_end);
   const double vt = p.target_speed;  // the solution lives in the target's initial rest frame
   const Vec2 d = p.dir;
   for (double t : output_times(r.dt, scene.time.end)) {
@@ -89,16 +89,20 @@ SimulationResult solve_rods(const Scene& scene, const ExactProblem& p, ResultRec
                          along(d, sol.striker_field(te).momentum / A.mass() + vt));
   rec.set_final_velocity(scene.bodies[p.target].name,
                          along(d, sol.target_field(te).momentum / B.mass() + vt));
-  r.extra["exact"] = {{"solution", "coaxial free rods, d'Alembert with reflection memory (references.md 1)"},
-                      {"pieces", sol.segments().size()},
-                      {"note",
-                       "P is piecewise constant between breakpoints (contact start, re-contacts and their "
-                       "shifts by multiples of T_A, T_B); every output is exact to roundoff; energies are "
-                       "integrated exactly over the piecewise-constant wave fields"},
-                      {"round_trip_striker", A.round_trip()},
-                      {"round_trip_target", B.round_trip()},
-                      {"impedance_striker", A.impedance()},
-                      {"impedance_target", B.impedance()}};
+  const bool fixed = p.target_far_end == FarEnd::kFixed;
+  r.extra["exact"] = {
+      {"solution", fixed ? "coaxial rods, the target clamped at its far end, d'Alembert with "
+                           "reflection memory (references.md 1, CoaxialRods.hpp)"
+                         : "coaxial free rods, d'Alembert with reflection memory (references.md 1)"},
+      {"pieces", sol.segments().size()},
+      {"note",
+       "P is piecewise constant between breakpoints (contact start, re-contacts and their "
+       "shifts by multiples of T_A, T_B); every output is exact to roundoff; energies are "
+       "integrated exactly over the piecewise-constant wave fields"},
+      {"round_trip_striker", A.round_trip()},
+      {"round_trip_target", B.round_trip()},
+      {"impedance_striker", A.impedance()},
+      {"impedance_target", B.impedance()}};
   SimulationResult out = finish_summary(rec, std::move(rows), sol.force_intervals(), sol.impulse(te),
                                         sol.peak_force(), first, p.contact_kind, extra);
   out.contacts[0].interval_impulses.clear();

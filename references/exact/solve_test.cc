@@ -129,9 +129,7 @@ TEST(RunExact, ExactTableIsChecked) {
 namespace beamimpact {
 namespace {
 
-std::string benchmark_scene(const std::string& name) {
-  return (testing::source_dir() / "verification/scenes/benchmarks" / (name + ".toml")).string();
-}
+using testing::benchmark_scene;
 
 // The rod on a wall end to end through the recogniser: touch at gap / v0 = 0.5 s, contact for
 // 2 L / c = 2 s at Z v0 = 4 N, impulse 8 N s, rebound at -1 m/s, 2 J kept (RodOnWall_test.cc).
@@ -145,6 +143,23 @@ TEST(RunExact, RodOnWallScene) {
   ASSERT_EQ(c.interval_impulses.size(), 1u);
   EXPECT_NEAR(c.interval_impulses[0], 8.0, 1e-12);
   EXPECT_NEAR(r.final_velocity.at("rod")[0], -1.0, 1e-12);
+  for (const HistoryRow& row : r.history) EXPECT_NEAR(row.kinetic + row.strain, 2.0, 1e-12) << row.t;
+}
+
+// Two rods with a second contact period (CoaxialRodsRecontact_test.cc derives the times): the
+// scene file through the recogniser gives the two intervals, their impulses and 2 J kept.
+TEST(RunExact, TwoRodsSecondContactScene) {
+  const SimulationResult r = exact::solve(load_scene(benchmark_scene("two_rods_second_contact")));
+  const ContactSummary& c = r.contacts.at(0);
+  ASSERT_EQ(c.intervals.size(), 2u);
+  ASSERT_EQ(c.interval_impulses.size(), 2u);
+  const double want[2][2] = {{0.5, 2.5}, {4.1, 5.3}}, J[2] = {16.0 / 3.0, 16.0 / 15.0};
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_NEAR(c.intervals[k][0], want[k][0], 1e-12);
+    EXPECT_NEAR(c.intervals[k][1], want[k][1], 1e-12);
+    EXPECT_NEAR(c.interval_impulses[k], J[k], 1e-12);
+  }
+  EXPECT_NEAR(r.final_velocity.at("A")[0], -0.6, 1e-12);
   for (const HistoryRow& row : r.history) EXPECT_NEAR(row.kinetic + row.strain, 2.0, 1e-12) << row.t;
 }
 

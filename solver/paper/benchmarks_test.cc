@@ -9,9 +9,7 @@
 namespace beamimpact::paper {
 namespace {
 
-std::string benchmark_scene(const std::string& name) {
-  return (testing::source_dir() / "verification/scenes/benchmarks" / (name + ".toml")).string();
-}
+using testing::benchmark_scene;
 
 // The rod on a wall at the critical step (Courant number c dt / le = 1, lumped mass): central
 // differences then move a wave exactly one element per step, so during contact every step's

@@ -43,6 +43,11 @@ inline std::string paper_scene(const std::string& name) {
   return (source_dir() / "verification/scenes/paper" / (name + ".toml")).string();
 }
 
+/// @brief Path of a benchmark scene, e.g. benchmark_scene("rod_on_wall").
+inline std::string benchmark_scene(const std::string& name) {
+  return (source_dir() / "verification/scenes/benchmarks" / (name + ".toml")).string();
+}
+
 /// @brief Path of a hard-case scene, e.g. hard_scene("slide_off_roller").
 inline std::string hard_scene(const std::string& name) {
   return (source_dir() / "verification/scenes/hard" / (name + ".toml")).string();

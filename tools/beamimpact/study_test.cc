@@ -162,7 +162,8 @@ TEST_F(StudyCommand, BadStudyExitsTwoNamingFileAndKey) {
 // Every norm `beamimpact compare` gives for a run with one contact.
 const char* kAllNorms =
     R"("R.rel_l2", "R.rel_linf", "I.rel_linf", "Rw.rel_l2", "Rw.rel_linf", "impulse", "impacts", )"
-    R"("contact_start", "contact_end", "peak_R", "contact_starts", "impulse_per_impact", "R_variation", )"
+    R"("contact_start", "contact_end", "peak_R", "contact_starts", "contact_ends", "impulse_per_impact", )"
+    R"("R_variation", )"
     R"("ua.rel_l2", "ua.rel_linf", "ub.rel_l2", "ub.rel_linf", "va.rel_l2", "va.rel_linf", "vb.rel_l2", )"
     R"("vb.rel_linf", "final_velocity", "energy_final", "energy_drift_per_impact")";
 

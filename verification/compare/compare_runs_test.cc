@@ -193,5 +193,21 @@ TEST(CompareRuns, SummaryScalarsTakePrecedence) {
   EXPECT_EQ(*c.find("R.rel_l2")->value, 0.0);  // time series still from the rows
 }
 
+// Sequence norms pair each reference interval with the run's interval starting nearest to it:
+// reference [0.5, 1.0], [1.2, 1.5]; run [0.51, 0.98], [1.17, 1.56], and a spurious [1.8, 1.85]
+// that pairs with nothing. Starts differ by 0.01 and 0.03 s, ends by 0.02 and 0.06 s.
+TEST(CompareRuns, SequenceNormsPairIntervalsByStart) {
+  auto f = [](double t) { return (t > 0.5 && t < 1.0) || (t > 1.2 && t < 1.5) ? 1.0 : 0.0; };
+  auto a = testing::synthetic(0.01, 2.0, f);
+  auto b = testing::synthetic(0.01, 2.0, f);
+  const nlohmann::json sb = {{"contacts", {{{"intervals", {{0.5, 1.0}, {1.2, 1.5}}}}}}};
+  const nlohmann::json sa = {{"contacts", {{{"intervals", {{0.51, 0.98}, {1.17, 1.56}, {1.8, 1.85}}}}}}};
+  const Comparison c =
+      compare_runs(StoredRun::from_columns(a.columns(), sa), StoredRun::from_columns(b.columns(), sb));
+  EXPECT_NEAR(*c.find("contact_starts")->value, 0.03, 1e-12);
+  EXPECT_NEAR(*c.find("contact_ends")->value, 0.06, 1e-12);
+  EXPECT_EQ(*c.find("impacts")->value, 1.0);
+}
+
 }  // namespace
 }  // namespace beamimpact::verification

@@ -80,18 +80,19 @@ void add_impact_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, c
                       const std::vector<Interval>& ivb, int k, double threshold) {
   const std::string sfx = k <= 1 ? "" : "_" + std::to_string(k);
   const std::vector<std::size_t> pair = iva.empty() ? std::vector<std::size_t>{} : nearest(iva, ivb);
-  {
-    const std::string def =
-        "max_i |t_a - t_b,i| (s), t_b,i = start of the reference's contact interval i, "
-        "t_a = the run's interval start nearest to it";
+  for (const bool start : {true, false}) {
+    const std::string name = (start ? "contact_starts" : "contact_ends") + sfx;
+    const std::string def = std::string("max_i |t_a - t_b,i| (s), t_b,i = ") + (start ? "start" : "end") +
+                            " of the reference's contact interval i, t_a = that of the run's interval "
+                            "starting nearest to it";
     if (pair.empty() || ivb.empty()) {
-      cmp.norms.push_back(
-          missing("contact_starts" + sfx, "s", def, "no interval in the run or the reference"));
+      cmp.norms.push_back(missing(name, "s", def, "no interval in the run or the reference"));
     } else {
       double worst = 0.0;
       for (std::size_t i = 0; i < ivb.size(); ++i)
-        worst = std::max(worst, std::abs(iva[pair[i]].start - ivb[i].start));
-      cmp.norms.push_back({"contact_starts" + sfx, worst, "s", def, {}, {}, {}});
+        worst = std::max(worst, start ? std::abs(iva[pair[i]].start - ivb[i].start)
+                                      : std::abs(iva[pair[i]].end - ivb[i].end));
+      cmp.norms.push_back({name, worst, "s", def, {}, {}, {}});
     }
   }
   {
@@ -157,7 +158,8 @@ void add_energy_drift(Comparison& cmp, const StoredRun& a, const StoredRun& b) {
 }
 
 bool known_impact_norm(const std::string& base) {
-  return base == "contact_starts" || base == "impulse_per_impact" || base == "R_variation";
+  return base == "contact_starts" || base == "contact_ends" || base == "impulse_per_impact" ||
+         base == "R_variation";
 }
 
 }  // namespace beamimpact::verification

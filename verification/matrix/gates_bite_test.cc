@@ -1,6 +1,7 @@
 // The gates bite: a run perturbed by a 2% force scaling, a one-step delay of contact, or a lost
 // impact fails the corresponding row of verification/matrix.toml; the unperturbed run passes.
-// The runs are real (`beamimpact run` of the rows' scenes); only the copies are perturbed.
+// The runs are real (`beamimpact run` of the rows' scenes); only the copies are perturbed, or,
+// for two contact periods merged into one, the mesh is made too coarse to part them.
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -151,6 +152,25 @@ TEST_F(GatesBite, LostImpactFails) {
   write_run_dir(h, s, tmp_ / "lost");
   std::string msg;
   EXPECT_EQ(gate_status(c, runs, tmp_ / "lost", "impacts", &msg), GateStatus::kFail) << msg;
+}
+
+// Two contact periods merged into one: with one element per rod the rods are two lumped masses
+// each (the target's clamped) and their contact lasts from 0.5 to 5.5 s without a break where the
+// exact solution parts them from 2.5 to 4.1 s. The row of the two-rod benchmark fails on the count
+// and on the impulse per impact, while the scene's own mesh passes.
+TEST_F(GatesBite, MergedContactPeriodsFail) {
+  const Case& c = row("two_rods_second_contact", "paper", "impacts");
+  JobSpec coarse = c.run;
+  coarse.set = {"bodies[0].elements=1", "bodies[1].elements=1"};
+  const auto runs = execute_jobs({c.run, coarse, c.reference}, tmp_ / "runs", launcher_, 2, 600.0);
+  for (const auto& [k, o] : runs) ASSERT_EQ(o.status, JobOutcome::Status::kOk) << k << ": " << o.message;
+  const StoredRun merged = StoredRun::read(runs.at(coarse.key()).dir);
+  ASSERT_EQ(merged.summary()["contacts"][0]["intervals"].size(), 1u) << "the coarse mesh no longer merges";
+  std::string msg;
+  EXPECT_EQ(gate_status(c, runs, runs.at(coarse.key()).dir, "impacts", &msg), GateStatus::kFail) << msg;
+  EXPECT_EQ(gate_status(c, runs, runs.at(coarse.key()).dir, "impulse_per_impact", &msg), GateStatus::kFail)
+      << msg;
+  EXPECT_EQ(gate_status(c, runs, runs.at(c.run.key()).dir, "impacts"), GateStatus::kPass);
 }
 
 }  // namespace

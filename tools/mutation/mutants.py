@@ -146,6 +146,13 @@ MUTANTS = [
          what="the exact rigid-rod impact: the tangential impulse's moment about the centre with the wrong sign",
          edits=[("references/exact/RigidRodImpact.cc", "(c * r.p_n - s * r.p_t)", "(c * r.p_n + s * r.p_t)")],
          verify=False, tests=[r"RigidRodImpact\..*", r"RunExact\..*"], targets=["exact_test"]),
+    dict(name="exact_recontact_at_breakpoint", layer="exact", ci=False,
+         what="the exact coaxial rods: a gap that closes inside a piece re-contacts at the piece's end (the next "
+              "wave arrival) instead of at the crossing time",
+         edits=[("references/exact/CoaxialRods.cc",
+                 "      if (te < nb - eps) {\n        end = te;\n        recontact = true;",
+                 "      if (te < nb - eps) {\n        recontact = true;")],
+         verify=False, tests=[r"CoaxialRods.*\..*", r"RunExact\..*"], targets=["exact_test"]),
     dict(name="ida_struck_point_sign", layer="IDA", ci=False,
          what="IDA's struck point follows the target's axial displacement with the wrong sign",
          edits=[("references/ida/ContactKinematics.cc", "s = sa - dot(t_, ub);", "s = sa + dot(t_, ub);")],

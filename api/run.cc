@@ -14,6 +14,12 @@
 namespace beamimpact {
 namespace {
 
+/// The scene's warnings (legal input likely not meant) join the method's in r.extra["warnings"]:
+/// summary.json lists them and `beamimpact run` prints them.
+void add_scene_warnings(const Scene& scene, SimulationResult& r) {
+  for (const std::string& w : scene.warnings) r.extra["warnings"].push_back(w);
+}
+
 /// Every run passes here: the method's acceptance, then the in-process solver or the program.
 SimulationResult run_method(const Scene& scene, const Method& m,
                             const std::optional<std::filesystem::path>& out, const std::string& mesh) {
@@ -27,7 +33,9 @@ SimulationResult run_method(const Scene& scene, const Method& m,
       throw SceneError(
           scene.file, "--out",
           "expected an output directory: the external method '" + m.name + "' writes its run there");
-    return run_external(m, scene, *out, mesh);
+    SimulationResult r = run_external(m, scene, *out, mesh);
+    add_scene_warnings(scene, r);
+    return r;
   }
   // Before anything is allocated: refuse a run far beyond the ordinary (the estimate is printed).
   check_run_cost(scene, planned_dt(scene));
@@ -43,6 +51,7 @@ SimulationResult run_method(const Scene& scene, const Method& m,
   } else {
     r = m.solve(scene);
   }
+  add_scene_warnings(scene, r);
   if (out) write_outputs(scene, r, *out);
   return r;
 }

@@ -2,18 +2,43 @@
 
 #include <set>
 
+#include <solver/scene/SceneError.hpp>
 #include <solver/scene/collinear.hpp>
+#include <solver/scene/support_axes.hpp>
 
 namespace beamimpact {
 
 bool body_can_rotate(const Body& body) {
   std::set<int> held;
-  for (const Support& s : body.supports)
-    if (s.fix_x || s.fix_y) held.insert(s.node);
   bool clamped = false;
-  for (const Support& s : body.supports) clamped |= s.fix_theta && (s.fix_x && s.fix_y);
+  for (const Support& s : body.supports) {
+    const NodeHold h = node_hold(body, s.node);
+    if (h.held > 0) held.insert(s.node);
+    clamped |= h.theta && h.held == 2;
+  }
   return held.size() < 2 && !clamped;
 }
+
+namespace {
+
+/// Refuses a body-axis roller on an inclined body that the corotational kinematics rebuilds:
+/// its element forces are formed in global axes and have no node axes.
+void refuse_rotating_body_axes(const Scene& scene, int b) {
+  const Body& body = scene.bodies[b];
+  for (std::size_t j = 0; j < body.supports.size(); ++j) {
+    const Support& s = body.supports[j];
+    if (!(s.fix_axial || s.fix_normal)) continue;
+    // As Model: a held direction not exactly along x or y puts the node in the body's axes.
+    if (const NodeHold h = node_hold(body, s.node);
+        h.held == 1 && h.direction[0] != 0.0 && h.direction[1] != 0.0)
+      throw SceneError(scene.file,
+                       "bodies[" + std::to_string(b) + "].supports[" + std::to_string(j) + "].fix",
+                       "a roller in the axes of an inclined body is modelled with linear kinematics only; "
+                       "expected model.kinematics = \"linear\" (or a pin, or supports in global x, y)");
+  }
+}
+
+}  // namespace
 
 Effects derive_effects(const Scene& scene) {
   Effects e;
@@ -27,7 +52,10 @@ Effects derive_effects(const Scene& scene) {
   e.rotating.assign(scene.bodies.size(), false);
   if (e.bending && scene.model.kinematics == Kinematics::kCorotational)
     for (std::size_t b = 0; b < scene.bodies.size(); ++b)
-      e.corotational |= e.rotating[b] = body_can_rotate(scene.bodies[b]) && !scene.bodies[b].rigid;
+      if ((e.rotating[b] = body_can_rotate(scene.bodies[b]) && !scene.bodies[b].rigid)) {
+        e.corotational = true;
+        refuse_rotating_body_axes(scene, static_cast<int>(b));
+      }
   return e;
 }
 

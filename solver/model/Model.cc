@@ -8,6 +8,7 @@
 #include <solver/model/timoshenko_element.hpp>
 #include <solver/scene/SceneError.hpp>
 #include <solver/scene/collinear.hpp>
+#include <solver/scene/support_axes.hpp>
 
 namespace beamimpact {
 namespace {
@@ -132,18 +133,7 @@ Model::Model(const Scene& scene, bool bending)
     }
     fixed.resize(node_pos_.size() * dpn, 0);
     if (body.rigid) std::fill(fixed.end() - body.nodes() * dpn, fixed.end(), 1);
-    for (const Support& s : body.supports) {
-      if (body.rigid) break;  // a rigid body's support fixes its centre (below)
-      const int n = body_first_node_[b] + s.node;
-      if (dpn == 3) {
-        fixed[3 * n] |= s.fix_x;
-        fixed[3 * n + 1] |= s.fix_y;
-        fixed[3 * n + 2] |= s.fix_theta;
-      } else {
-        // A rod only moves along its axis: a support fixing a component with an axial part fixes it.
-        fixed[n] |= (s.fix_x && std::abs(axis_[0]) > 1e-12) || (s.fix_y && std::abs(axis_[1]) > 1e-12);
-      }
-    }
+    hold_supported(body, b, fixed);
     const Vec2 d = unit_axis(body);
     const bool timoshenko = body.theory == BeamTheory::kTimoshenko && !body.rigid && dpn == 3;
     const double le = body.length() / body.elements;
@@ -153,6 +143,7 @@ Model::Model(const Scene& scene, bool bending)
       elements_.push_back({b, body_first_node_[b] + i, body_first_node_[b] + i + 1, body.E, body.area,
                            body.inertia, body.rho, le, d[0], d[1], body.rigid, timoshenko, phi});
   }
+  if (!frame_.empty()) frame_.resize(node_pos_.size(), -1);
   // Rigid bodies' centre DOFs: immovable when supported (the scene allows only a full fix).
   const std::size_t node_dofs = fixed.size();
   std::vector<int> rigid_first(scene.bodies.size(), -1);
@@ -185,17 +176,23 @@ Model::Model(const Scene& scene, bool bending)
   const int ne = 2 * dpn;
   // Consecutive elements with equal matrices form a group; each group's matrices are formed once.
   group_.assign(elements_.size(), -1);
+  std::vector<int> group_first;  // the first element of each group
   for (int e = 0, last = -1; e < static_cast<int>(elements_.size()); ++e) {
     const Element& el = elements_[e];
     if (el.rigid) continue;  // geometry only
     if (last < 0 || !same_element_matrices(e, last)) {
-      groups_.push_back({element_stiffness(e, el.c, el.s), element_mass(e, el.c, el.s)});
+      ElementGroup& grp =
+          groups_.emplace_back(ElementGroup{element_stiffness(e, el.c, el.s), element_mass(e, el.c, el.s)});
+      to_node_axes(e, grp.K);
+      if (!lumped_) to_node_axes(e, grp.M);  // a lumped mass is the same in every frame
+      group_first.push_back(e);
       last = e;
     }
     group_[e] = static_cast<int>(groups_.size()) - 1;
   }
   std::vector<GroupEntries> entries;
-  for (const ElementGroup& grp : groups_) {
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    const ElementGroup& grp = groups_[g];
     GroupEntries& ge = entries.emplace_back();
     for (int i = 0; i < ne; ++i)
       for (int j = 0; j < ne; ++j) {
@@ -210,6 +207,7 @@ Model::Model(const Scene& scene, bool bending)
         else
           r(k) = axis_[c];
       }
+      to_node_axes(group_first[g], r);
       const Eigen::VectorXd m_r = grp.M * r;
       for (int i = 0; i < ne; ++i) ge.mr(i, c) = m_r(i);
     }
@@ -270,7 +268,59 @@ Model::Model(const Scene& scene, bool bending)
 bool Model::same_element_matrices(int a, int b) const {
   const Element &x = elements_[a], &y = elements_[b];
   return x.E == y.E && x.area == y.area && x.inertia == y.inertia && x.rho == y.rho && x.length == y.length &&
-         x.c == y.c && x.s == y.s && x.rigid == y.rigid && x.timoshenko == y.timoshenko && x.phi == y.phi;
+         x.c == y.c && x.s == y.s && x.rigid == y.rigid && x.timoshenko == y.timoshenko && x.phi == y.phi &&
+         !rotated(x.n1) && !rotated(x.n2) && !rotated(y.n1) && !rotated(y.n2);
+}
+
+void Model::hold_supported(const Body& body, int b, std::vector<char>& fixed) {
+  if (body.rigid) return;  // a rigid body's support fixes its centre (in the constructor)
+  for (const Support& s : body.supports) {
+    const int n = body_first_node_[b] + s.node;
+    const NodeHold h = node_hold(body, s.node);
+    if (dofs_per_node_ == 1) {  // a rod only moves along its axis: holding an axial part fixes it
+      fixed[n] |= h.held == 2 || (h.held == 1 && std::abs(dot(h.direction, axis_)) > 1e-12);
+      continue;
+    }
+    fixed[3 * n + 2] |= h.theta;
+    if (h.held == 0) continue;
+    const Vec2& d = h.direction;
+    if (h.held == 2 || d[1] == 0.0) fixed[3 * n] = 1;  // a pin, or exactly along x
+    if (h.held == 2 || d[0] == 0.0) fixed[3 * n + 1] = 1;
+    if (h.held == 2 || d[0] == 0.0 || d[1] == 0.0) continue;
+    // One direction of an inclined body's own axes: the node's translations go into those axes,
+    // component 0 axial, 1 normal, and the held one is fixed.
+    if (frame_.size() < node_pos_.size()) frame_.resize(node_pos_.size(), -1);
+    if (frame_[n] < 0) {
+      frame_[n] = static_cast<int>(frames_.size());
+      frames_.push_back(body.axis());
+    }
+    fixed[3 * n + (h.normal ? 1 : 0)] = 1;
+  }
+}
+
+void Model::to_node_axes(int e, Eigen::MatrixXd& A) const {
+  const Element& el = elements_[e];
+  const int nodes[2] = {el.n1, el.n2};
+  for (int k = 0; k < 2; ++k) {
+    if (!rotated(nodes[k])) continue;
+    const Vec2 a = node_axis(nodes[k]);
+    Eigen::Matrix2d R;  // columns: the node's axes in global components
+    R << a[0], -a[1], a[1], a[0];
+    A.middleRows(3 * k, 2) = (R.transpose() * A.middleRows(3 * k, 2)).eval();
+    A.middleCols(3 * k, 2) = (A.middleCols(3 * k, 2) * R).eval();
+  }
+}
+
+void Model::to_node_axes(int e, Eigen::VectorXd& v) const {
+  const Element& el = elements_[e];
+  const int nodes[2] = {el.n1, el.n2};
+  for (int k = 0; k < 2; ++k) {
+    if (!rotated(nodes[k])) continue;
+    const Vec2 a = node_axis(nodes[k]);
+    const double x = v(3 * k), y = v(3 * k + 1);
+    v(3 * k) = a[0] * x + a[1] * y;
+    v(3 * k + 1) = -a[1] * x + a[0] * y;
+  }
 }
 
 Eigen::MatrixXd Model::element_stiffness(int e, double c, double s) const {
@@ -324,8 +374,9 @@ void Model::append_projection(int n, const Vec2& d, double scale, std::vector<Do
     return;
   }
   if (dofs_per_node_ == 3) {
+    const Vec2 dn = rotated(n) ? to_node(n, d) : d;
     for (int c = 0; c < 2; ++c)
-      if (const int e = equation(n, c); e >= 0 && d[c] != 0.0) out.push_back({e, scale * d[c]});
+      if (const int e = equation(n, c); e >= 0 && dn[c] != 0.0) out.push_back({e, scale * dn[c]});
   } else if (const int e = equation(n, 0); e >= 0) {
     const double a = dot(axis_, d);
     if (a != 0.0) out.push_back({e, scale * a});
@@ -343,7 +394,10 @@ Vec2 Model::node_vector(const Eigen::VectorXd& U, int n) const {
   }
   if (dofs_per_node_ == 3) {
     const int ex = equation(n, 0), ey = equation(n, 1);
-    return {ex >= 0 ? U(ex) : 0.0, ey >= 0 ? U(ey) : 0.0};
+    const Vec2 u = {ex >= 0 ? U(ex) : 0.0, ey >= 0 ? U(ey) : 0.0};
+    if (!rotated(n)) return u;
+    const Vec2 a = node_axis(n);  // u = a u0 + (a turned +90 deg) u1
+    return {a[0] * u[0] - a[1] * u[1], a[1] * u[0] + a[0] * u[1]};
   }
   const int e = equation(n, 0);
   const double u = e >= 0 ? U(e) : 0.0;
@@ -362,8 +416,9 @@ Eigen::VectorXd Model::translation(const std::vector<Vec2>& d) const {
   for (int n = 0; n < num_nodes(); ++n) {
     const Vec2& bv = d[node_body_[n]];
     if (dofs_per_node_ == 3) {
-      if (const int e = equation(n, 0); e >= 0) v(e) = bv[0];
-      if (const int e = equation(n, 1); e >= 0) v(e) = bv[1];
+      const Vec2 bn = rotated(n) ? to_node(n, bv) : bv;
+      if (const int e = equation(n, 0); e >= 0) v(e) = bn[0];
+      if (const int e = equation(n, 1); e >= 0) v(e) = bn[1];
     } else if (const int e = equation(n, 0); e >= 0) {
       v(e) = dot(bv, axis_);
     }

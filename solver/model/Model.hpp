@@ -7,6 +7,13 @@
 /// Two layouts: "frame" (3 DOF per node: u_x, u_y, theta) and "rod" (1 DOF per node: the
 /// displacement along the common axis of an all-collinear scene). Supported DOFs are removed from
 /// the equations; equation(node, component) returns -1 for them.
+///
+/// A frame node's translations are in its own axes: a node whose supports hold one direction of
+/// an inclined body's own axes (a roller across or along it: fix = ["normal"] or ["axial"]) has
+/// components 0 and 1 along the body's axial and normal directions (node_axis()), and its
+/// elements' matrices are T^T K_e T with T the rotation from those axes to global ones. Every
+/// other node uses global x, y. project(), node_vector() and translation() give global vectors
+/// for both; code that reads components 0 and 1 of equation() directly must use node_axis().
 
 #include <array>
 #include <string>
@@ -50,8 +57,26 @@ class Model {
   /// @brief Reference position of global node `n` (m).
   const Vec2& node_position(int n) const { return node_pos_[n]; }
   /// @brief Equation of component c (0 = x, 1 = y, 2 = theta; rod layout: 0 = axial) of node n,
-  /// or -1 when that DOF is fixed or absent.
+  /// or -1 when that DOF is fixed or absent. On a rotated node (rotated()) components 0 and 1 are
+  /// along node_axis(n) and that turned +90 degrees.
   int equation(int n, int c) const;
+  /// @brief True when node n's translations are in the axes of its body (see the file comment).
+  bool rotated(int n) const { return !frame_.empty() && frame_[n] >= 0; }
+  /// @brief Global unit direction of translational component 0 of node n: (1, 0) unless rotated();
+  /// component 1 is this turned +90 degrees (frame layout).
+  Vec2 node_axis(int n) const { return rotated(n) ? frames_[frame_[n]] : Vec2{1.0, 0.0}; }
+  /// @brief True when some node is rotated().
+  bool any_rotated() const { return !frame_.empty(); }
+  /// @brief The components of a global vector d in node n's axes (d itself unless rotated()).
+  Vec2 to_node(int n, const Vec2& d) const {
+    const Vec2 a = node_axis(n);
+    return {a[0] * d[0] + a[1] * d[1], -a[1] * d[0] + a[0] * d[1]};
+  }
+  /// @brief A = T^T A T for an element matrix (6 x 6, global axes) of element e: its rotated
+  /// nodes' translations into their node axes; unchanged when neither node is rotated.
+  void to_node_axes(int e, Eigen::MatrixXd& A) const;
+  /// @brief v = T^T v for an element vector (6, global axes) of element e (see to_node_axes).
+  void to_node_axes(int e, Eigen::VectorXd& v) const;
   /// @brief Terms of d . u(node n) for a direction d in global axes (handles both layouts).
   std::vector<DofTerm> project(int n, const Vec2& d) const;
   /// @brief Appends scale * (terms of d . u(node n)) to out (no allocation once out has capacity).
@@ -122,8 +147,11 @@ class Model {
   struct ElementGroup {
     Eigen::MatrixXd K, M;
   };
-  /// True when elements a and b have the same section, material, length and direction.
+  /// True when elements a and b have the same section, material, length and direction (and
+  /// neither has a rotated node).
   bool same_element_matrices(int a, int b) const;
+  /// Fixes the DOFs that the supports of body b hold, setting the node axes of its rotated nodes.
+  void hold_supported(const Body& body, int b, std::vector<char>& fixed);
   /// Per body: equations of its centre (x, y, theta; rods: axial), -1 when fixed, kNotRigid for
   /// an elastic body.
   std::vector<std::array<int, 3>> rigid_eq_;
@@ -135,6 +163,8 @@ class Model {
   double a0_ = 0.0, a1_ = 0.0;
   std::vector<int> body_first_node_, node_body_;
   std::vector<Vec2> node_pos_;
+  std::vector<int> frame_;      ///< node -> index into frames_, -1 global axes; empty: none rotated
+  std::vector<Vec2> frames_;    ///< unit axis of component 0 of each rotated node
   std::vector<int> dof_to_eq_;  ///< node * dofs_per_node + c -> equation or -1
   std::vector<int> free_;       ///< equation -> node * dofs_per_node + c
   std::vector<Element> elements_;

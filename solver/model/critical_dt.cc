@@ -115,6 +115,8 @@ void run_key(const Model& model, int e, int f, const std::vector<Eigen::Matrix<i
   for (int k = e; k < f; ++k) {
     const Model::Element& el = els[k];
     key.insert(key.end(), {el.E, el.area, el.inertia, el.rho, el.length, el.c, el.s});
+    if (model.any_rotated())  // a node in its body's axes changes the element's matrices
+      for (int n : {el.n1, el.n2}) key.insert(key.end(), {model.node_axis(n)[0], model.node_axis(n)[1]});
     const Eigen::Matrix<int, 6, 1>& eq = eqk[k - e];
     for (int i = 0; i < ne; ++i) key.push_back(eq(i) >= 0 ? eq(i) - first_eq : -1e9);
   }

@@ -8,6 +8,16 @@ namespace beamimpact {
 
 double Body::length() const { return std::hypot(end[0] - start[0], end[1] - start[1]); }
 
+Vec2 Body::axis() const {
+  const double L = length();
+  return {(end[0] - start[0]) / L, (end[1] - start[1]) / L};
+}
+
+Vec2 Body::normal() const {
+  const Vec2 a = axis();
+  return {-a[1], a[0]};
+}
+
 Vec2 Body::node_position(int i) const {
   const double s = static_cast<double>(i) / elements;
   return {start[0] + s * (end[0] - start[0]), start[1] + s * (end[1] - start[1])};

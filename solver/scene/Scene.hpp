@@ -68,10 +68,13 @@ struct ModelSettings {
   double rayleigh_stiffness = 0.0;  ///< s
 };
 
-/// @brief A support at one node of a body: the listed global DOFs are held at zero.
+/// @brief A support at one node of a body: the listed displacement components are held at zero,
+/// in global axes (x, y, theta) or in the body's own axes (axial: along start -> end; normal: the
+/// axial direction turned +90 degrees, counter-clockwise). support_axes.hpp combines them.
 struct Support {
   int node = 0;  ///< node index in the body (0 = start)
   bool fix_x = false, fix_y = false, fix_theta = false;
+  bool fix_axial = false, fix_normal = false;
 };
 
 /// @brief One straight beam, uniformly meshed from start to end.
@@ -97,6 +100,10 @@ struct Body {
 
   /// @brief Length (m).
   double length() const;
+  /// @brief Unit vector from start to end (the body's axial direction).
+  Vec2 axis() const;
+  /// @brief The axial direction turned +90 degrees (counter-clockwise): the body's normal.
+  Vec2 normal() const;
   /// @brief Number of nodes (elements + 1).
   int nodes() const { return elements + 1; }
   /// @brief Reference position of node i (m).
@@ -162,6 +169,9 @@ struct Scene {
   std::map<std::string, std::string> assumed;
   /// @brief --set overrides applied, as given ("time.dt" -> "0.005").
   std::map<std::string, std::string> overrides;
+  /// @brief Legal input that is likely not what was meant, one sentence each naming the file and
+  /// the key (a run lists them in summary.json "warnings" and on stderr).
+  std::vector<std::string> warnings;
   /// @brief Method tables ("ida", "exact", "paper", "fenicsx") serialised back to TOML.
   std::map<std::string, std::string> method_tables;
 

@@ -13,6 +13,7 @@
 #include <solver/scene/collinear.hpp>
 #include <solver/scene/contact_law.hpp>
 #include <solver/scene/loads_io.hpp>
+#include <solver/scene/support_axes.hpp>
 #include <solver/util/sha256.hpp>
 
 namespace beamimpact {
@@ -240,6 +241,9 @@ void read_model(TableReader& r, ModelSettings& m) {
   bounded(r, "rayleigh_stiffness", m.rayleigh_stiffness, "a number >= 0 (s)");
 }
 
+/// The entries of a support's fix array, as a message lists them.
+const std::string kFixNames = "\"x\", \"y\", \"theta\", \"axial\", \"normal\"";
+
 void read_supports(TableReader& r, Body& b, std::map<std::string, std::string>* assumed) {
   const toml::node* n = r.raw("supports");
   if (!n) {
@@ -248,8 +252,7 @@ void read_supports(TableReader& r, Body& b, std::map<std::string, std::string>* 
   }
   const toml::array* arr = n->as_array();
   if (!arr)
-    r.fail("supports",
-           "expected an array of { at = \"start\"|\"end\"|index, fix = [\"x\", \"y\", \"theta\"] }");
+    r.fail("supports", "expected an array of { at = \"start\"|\"end\"|index, fix = [" + kFixNames + "] }");
   for (std::size_t i = 0; i < arr->size(); ++i) {
     const toml::table* st = arr->get(i)->as_table();
     const std::string key = "supports[" + std::to_string(i) + "]";
@@ -259,17 +262,21 @@ void read_supports(TableReader& r, Body& b, std::map<std::string, std::string>* 
     s.node = node_ref(sr, "at", b);
     const toml::node* fx = sr.raw("fix");
     if (!fx || !fx->as_array() || fx->as_array()->empty())
-      sr.fail("fix", "expected a non-empty array of \"x\", \"y\", \"theta\"");
+      sr.fail("fix", "expected a non-empty array of " + kFixNames);
     for (const toml::node& c : *fx->as_array()) {
       const std::string v = c.value<std::string>().value_or("?");
-      if (v == "x")
-        s.fix_x = true;
-      else if (v == "y")
-        s.fix_y = true;
-      else if (v == "theta")
-        s.fix_theta = true;
-      else
-        sr.fail("fix", "expected \"x\", \"y\" or \"theta\", got " + v);
+      bool* const flag = v == "x"        ? &s.fix_x
+                         : v == "y"      ? &s.fix_y
+                         : v == "theta"  ? &s.fix_theta
+                         : v == "axial"  ? &s.fix_axial
+                         : v == "normal" ? &s.fix_normal
+                                         : nullptr;
+      if (!flag)
+        sr.fail("fix", "expected some of " + kFixNames +
+                           " (global x, y, rotation; axial: along the body from start to end, normal: "
+                           "across it, the axial direction turned +90 deg), got " +
+                           v);
+      *flag = true;
     }
     sr.finish();
     b.supports.push_back(s);
@@ -372,8 +379,16 @@ Body read_body(TableReader& r, Scene& sc) {
   read_supports(r, b, assumed);
   b.rigid = r.boolean_or("rigid", false);
   read_beam_theory(r, b);
-  if (b.rigid && !b.supports.empty() &&
-      !(b.supports.size() == 1 && b.supports[0].fix_x && b.supports[0].fix_y && b.supports[0].fix_theta))
+  for (std::size_t j = 0; j < b.supports.size(); ++j)
+    if (std::string w =
+            global_roller_warning(b, b.supports[j], sc.file, r.path("supports[" + std::to_string(j) + "]"));
+        !w.empty())
+      sc.warnings.push_back(std::move(w));
+  const auto immovable = [&] {
+    const NodeHold h = node_hold(b, b.supports[0].node);
+    return b.supports.size() == 1 && h.held == 2 && h.theta;
+  };
+  if (b.rigid && !b.supports.empty() && !immovable())
     r.fail("supports",
            "a rigid body is free (supports = []) or immovable (one support fixing \"x\", \"y\" and "
            "\"theta\"); expected one of those");

@@ -139,6 +139,11 @@ TEST(SceneIo, BadInputNamesFileKeyAndExpectation) {
       {"fields not a boolean", g + "\n[output]\nfields = \"yes\"\n", "output.fields",
        "expected true or false"},
       {"unknown output key", g + "\n[output]\nvtk = true\n", "output.vtk", "unknown key"},
+      {"unknown fix", replace(g, "fix = [\"y\"]", "fix = [\"transverse\"]"), "bodies[1].supports[1].fix",
+       "\"x\", \"y\", \"theta\", \"axial\", \"normal\""},
+      {"fix not a string", replace(g, "fix = [\"y\"]", "fix = [1]"), "bodies[1].supports[1].fix",
+       "\"normal\""},
+      {"empty fix", replace(g, "fix = [\"y\"]", "fix = []"), "bodies[1].supports[1].fix", "non-empty array"},
   };
   for (const BadCase& c : cases) {
     const SceneError e = error_of(c.text);
@@ -146,6 +151,36 @@ TEST(SceneIo, BadInputNamesFileKeyAndExpectation) {
     EXPECT_NE(std::string(e.what()).find(c.says), std::string::npos) << c.what << ": " << e.what();
     EXPECT_NE(std::string(e.what()).find("bad_scene.toml"), std::string::npos) << c.what;
   }
+}
+
+// Supports in the body's own axes: "axial" along start -> end, "normal" across it. A roller in
+// global axes on an inclined body is legal but another problem than the roller across it: the
+// scene carries a warning naming the file and the key and pointing at fix = ["normal"].
+TEST(SceneIo, BodyAxisSupportsAndTheGlobalRollerWarning) {
+  const std::string g = good();
+  const std::string path = testing::temp_path("axes_scene.toml").string();
+  const auto load_text = [&](const std::string& text) {
+    std::ofstream(path) << text;
+    return load_scene(path);
+  };
+  const Scene s2 = load_text(replace(g, "fix = [\"y\"]", "fix = [\"normal\", \"axial\"]"));
+  const Support& r = s2.bodies[1].supports[1];
+  EXPECT_TRUE(r.fix_normal && r.fix_axial && !r.fix_x && !r.fix_y && !r.fix_theta);
+  EXPECT_TRUE(s2.warnings.empty());
+  EXPECT_TRUE(load_scene(paper_scene("s2_transverse")).warnings.empty());  // a y roller on a beam along x
+  // B inclined (end at (8, -6): atan(-0.75) = -36.8699 deg): its y roller is named in a warning; its pin is
+  // not.
+  const std::string inclined = replace(g, "end = [10.0, 0.0]", "end = [8.0, -6.0]");
+  const Scene w = load_text(inclined);
+  ASSERT_EQ(w.warnings.size(), 1u);
+  for (const char* says :
+       {"axes_scene.toml", "bodies[1].supports[1].fix", "36.8699 deg", "fix = [\"normal\"]"})
+    EXPECT_NE(w.warnings[0].find(says), std::string::npos) << says << " in: " << w.warnings[0];
+  EXPECT_TRUE(load_text(replace(inclined, "fix = [\"y\"]", "fix = [\"normal\"]")).warnings.empty());
+  // A second support at the same node that completes a pin: no roller, no warning.
+  EXPECT_TRUE(load_text(replace(inclined, "{ at = \"end\", fix = [\"y\"] }",
+                                "{ at = \"end\", fix = [\"y\"] }, { at = \"end\", fix = [\"x\"] }"))
+                  .warnings.empty());
 }
 
 TEST(SceneIo, BadOverrideIsAnError) {

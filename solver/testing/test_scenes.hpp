@@ -2,6 +2,7 @@
 /// @file test_scenes.hpp
 /// @brief Helpers for tests: paths of the shipped scenes and small scenes built in code.
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -71,6 +72,34 @@ inline Body soft_body(const std::string& name, Vec2 a, Vec2 b, int elements, Vec
   body.inertia = 0.4 * 0.4 * 0.4 / 12.0;
   body.velocity = v;
   return body;
+}
+
+/// @brief The scene rotated by `degrees` about the origin: every body's start, end and velocity
+/// (90 degrees exactly: cos 0, sin 1). Supports are left as they are: a caller whose scene has a
+/// roller in global axes gives it in body axes for the same problem (Support::fix_normal).
+inline Scene rotated_scene(Scene s, double degrees) {
+  const double c = degrees == 90.0 ? 0.0 : std::cos(degrees * M_PI / 180.0);
+  const double sn = degrees == 90.0 ? 1.0 : std::sin(degrees * M_PI / 180.0);
+  const auto turn = [&](Vec2& p) { p = {c * p[0] - sn * p[1], sn * p[0] + c * p[1]}; };
+  for (Body& b : s.bodies) {
+    turn(b.start);
+    turn(b.end);
+    turn(b.velocity);
+  }
+  return s;
+}
+
+/// @brief S2 (the paper's transverse impact on a simply supported beam) rotated by `degrees`, its
+/// target's roller across the target (fix = ["normal"]; global_roller: S2's ["y"] kept, which on
+/// an inclined target is another problem).
+inline Scene rotated_s2(double degrees, bool global_roller = false) {
+  Scene s = rotated_scene(load_paper_scene("s2_transverse"), degrees);
+  Support& roller = s.bodies[1].supports[1];
+  if (!global_roller) {
+    roller.fix_y = false;
+    roller.fix_normal = true;
+  }
+  return s;
 }
 
 }  // namespace beamimpact::testing

@@ -91,6 +91,8 @@ TEST(Cli, BadInputExitsTwoWithOneMessageAndNoResult) {
       {"dt above critical", "run " + paper_scene("s2_transverse") + " --set time.dt=0.1",
        "key 'time.dt': expected at most the critical step"},
       {"unknown method", "run " + paper_scene("s1_central") + " --method magic", "key '--method'"},
+      {"unknown support direction", "run " + bad_scene("fix = [\"y\"]", "fix = [\"across\"]"),
+       "key 'bodies[1].supports[1].fix': expected some of \"x\", \"y\", \"theta\", \"axial\", \"normal\""},
       {"bad --set", "run " + paper_scene("s1_central") + " --set nonsense", "--set expects key=value"},
       // Non-physical magnitudes (issue 16): each ended in a zero mass or an infinite energy, exit 3.
       {"denormal rho", "run " + paper_scene("s1_central") + " --set bodies[0].rho=5e-324",
@@ -138,6 +140,25 @@ TEST(Cli, BadInputExitsTwoWithOneMessageAndNoResult) {
     EXPECT_FALSE(fs::exists(out / "summary.json")) << c.what;
     EXPECT_FALSE(fs::exists(out / "history.csv")) << c.what;
   }
+}
+
+// A roller in global axes under an inclined target runs (legal) with one warning on stderr that
+// names the file and the key and points at the body-axis roller; in body axes there is none.
+TEST(Cli, GlobalRollerOnAnInclinedBodyWarns) {
+  const std::string inclined = bad_scene("end = [10.0, 0.0]", "end = [8.0, -6.0]");
+  const Result r = run("run " + inclined + " --quiet --out " + fresh_dir("roller").string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("warning: " + inclined + ": key 'bodies[1].supports[1].fix'"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("fix = [\"normal\"] is the body-axis roller"), std::string::npos) << r.output;
+  std::ifstream in(inclined);
+  std::string text(std::istreambuf_iterator<char>(in), {});
+  text.replace(text.find("fix = [\"y\"]"), 11, "fix = [\"normal\"]");
+  const std::string across = beamimpact::testing::temp_path("cli_roller_across.toml").string();
+  std::ofstream(across) << text;
+  const Result body = run("run " + across + " --quiet --out " + fresh_dir("roller_across").string());
+  ASSERT_EQ(body.code, 0) << body.output;
+  EXPECT_EQ(body.output.find("warning"), std::string::npos) << body.output;
 }
 
 TEST(Cli, LongValuesAreCutInTheMessage) {

@@ -52,19 +52,23 @@ Vec2 centre(const Body& body) {
 /// One row per node (rigid bodies: one row for the centre, node -1): which equation holds each
 /// of its components, -1 when fixed or absent.
 std::string dofs_csv(const Scene& scene, const Model& model) {
-  std::string s = "body,node,x,y,eq_x,eq_y,eq_theta\n";
+  std::string s = "body,node,x,y,eq_x,eq_y,eq_theta,axis_x,axis_y\n";
+  const Vec2 global_x = model.dofs_per_node() == 1 ? model.rod_axis() : Vec2{1.0, 0.0};
   for (int b = 0; b < model.num_bodies(); ++b) {
     if (model.rigid(b)) {
       const std::array<int, 3> r = rigid_equations(model, b);
       const Vec2 c = centre(scene.bodies[b]);
-      s += fmt::format("{},-1,{:.17g},{:.17g},{},{},{}\n", b, c[0], c[1], r[0], r[1], r[2]);
+      s += fmt::format("{},-1,{:.17g},{:.17g},{},{},{},{:.17g},{:.17g}\n", b, c[0], c[1], r[0], r[1], r[2],
+                       global_x[0], global_x[1]);
       continue;
     }
     const int first = model.node_id(b, 0);
     for (int i = 0; i < scene.bodies[b].nodes(); ++i) {
-      const Vec2& x = model.node_position(first + i);
-      s += fmt::format("{},{},{:.17g},{:.17g},{},{},{}\n", b, i, x[0], x[1], model.equation(first + i, 0),
-                       model.equation(first + i, 1), model.equation(first + i, 2));
+      const int n = first + i;
+      const Vec2& x = model.node_position(n);
+      const Vec2 a = model.dofs_per_node() == 1 ? global_x : model.node_axis(n);
+      s += fmt::format("{},{},{:.17g},{:.17g},{},{},{},{:.17g},{:.17g}\n", b, i, x[0], x[1],
+                       model.equation(n, 0), model.equation(n, 1), model.equation(n, 2), a[0], a[1]);
     }
   }
   return s;
@@ -198,12 +202,17 @@ json files_json(const Model& model) {
             {"what", "Rayleigh damping rayleigh_mass M + rayleigh_stiffness K (no entries when undamped)"}}},
           {"dofs",
            {{"path", "dofs.csv"},
-            {"format", "CSV: body,node,x,y,eq_x,eq_y,eq_theta"},
-            {"units", "x, y in m (reference position); eq_* 0-based equation, -1 fixed or absent"},
+            {"format", "CSV: body,node,x,y,eq_x,eq_y,eq_theta,axis_x,axis_y"},
+            {"units",
+             "x, y in m (reference position); eq_* 0-based equation, -1 fixed or absent; axis_* a unit "
+             "vector (global axes)"},
             {"what",
-             "one row per node; a rigid body has one row for its centre (node -1) and its nodes move as "
+             "one row per node; eq_x is the displacement along (axis_x, axis_y) and eq_y along that turned "
+             "+90 deg: (1, 0), global x and y, except at a node whose supports hold one direction of its "
+             "inclined body's own axes (fix = [\"normal\"] or [\"axial\"]), whose axis is its body's "
+             "axial direction; a rigid body has one row for its centre (node -1) and its nodes move as "
              "u = u_c + theta (-(Y - Y_c), X - X_c); rod layout: eq_x is the equation of the "
-             "displacement along rod_axis"}}},
+             "displacement along rod_axis (= axis)"}}},
           {"initial_state",
            {{"path", "initial_state.csv"},
             {"format", "CSV: equation,u0,v0"},

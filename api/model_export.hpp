@@ -22,7 +22,7 @@
 namespace beamimpact {
 
 /// @brief Format version of model.json (raised when a file or key changes meaning).
-inline constexpr int kModelFormatVersion = 1;
+inline constexpr int kModelFormatVersion = 2;
 
 /// @brief The constant external load vector F (N on translations, N m on rotations) of the
 /// scene on the model's equations. Loads of the scene (gravity, point forces) join here; a scene

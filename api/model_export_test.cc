@@ -304,5 +304,39 @@ TEST(ModelExport, RefusesWhatItCannotWriteOnceAndLeavesNoModelJson) {
                SceneError);
 }
 
+// S2 rotated by 37 degrees with the target's roller across it exports a rotation of S2's model:
+// the same frequencies (a rigid rotation strains nothing), the roller node's translations along
+// and across the target (dofs.csv axis_x, axis_y: the target's axis; eq_y, across, held), and a
+// gap row that lowering A by 0.1 m along its velocity closes. Tolerances: roundoff of the rotated
+// coordinates and of the dense eigen-solve (1e-9 of the largest omega^2), 1e-12 m on the gap.
+TEST(ModelExport, RotatedCopyWithABodyAxisRollerIsARotationOfS2) {
+  const Exported s2 = export_scene("s2_transverse", {}, "s2_frequencies");
+  Exported e;
+  e.dir = testing::temp_path("s2_rotated");
+  e.doc =
+      export_model(load_scene(testing::source_dir() / "verification/scenes/extra/s2_rotated_37.toml"), e.dir);
+  e.M = read_mtx(e.dir / "M.mtx");
+  e.K = read_mtx(e.dir / "K.mtx");
+  e.dofs = read_csv(e.dir / "dofs.csv");
+  ASSERT_EQ(e.M.rows(), s2.M.rows());
+  const Eigen::VectorXd w2 =
+      Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd>(s2.K, s2.M).eigenvalues();
+  const Eigen::VectorXd w = Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd>(e.K, e.M).eigenvalues();
+  EXPECT_LT((w - w2).cwiseAbs().maxCoeff(), 1e-9 * w2.maxCoeff());
+  const double c = std::cos(37.0 * M_PI / 180.0), s = std::sin(37.0 * M_PI / 180.0);
+  for (const auto& r : e.dofs) {
+    const bool roller = r[0] == 1 && r[1] == 10;
+    EXPECT_NEAR(r[7], roller ? c : 1.0, 1e-15) << r[0] << " " << r[1];
+    EXPECT_NEAR(r[8], roller ? s : 0.0, 1e-15) << r[0] << " " << r[1];
+    if (roller) {
+      EXPECT_TRUE(r[4] >= 0 && r[5] == -1 && r[6] >= 0);
+    }
+  }
+  const Eigen::VectorXd lower = e.mode(0, 0, 0.1 * s) + e.mode(0, 1, -0.1 * c);  // 0.1 m along (s, -c)
+  EXPECT_NEAR(e.gap(0, Eigen::VectorXd::Zero(e.M.rows())), 0.1, 1e-12);
+  EXPECT_NEAR(e.gap(0, lower), 0.0, 1e-12);
+  EXPECT_EQ(e.doc["format_version"], 2);
+}
+
 }  // namespace
 }  // namespace beamimpact

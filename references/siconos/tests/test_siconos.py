@@ -117,3 +117,21 @@ def test_gravity_work_is_the_free_fall_of_the_bouncing_bar(tmp_path):
     for row in rows:
         assert row["load_work"] == pytest.approx(10.0 * 100.0 * row["t"] ** 2 / 2, rel=1e-9, abs=1e-9)
         assert row["kinetic"] == pytest.approx(row["load_work"], rel=1e-9, abs=1e-9)  # no strain in free fall
+
+
+def test_rotated_copy_with_a_roller_across_the_target_is_s2(tmp_path):
+    # S2 rotated by 37 deg with the target's roller across it (fix = ["normal"]): the export puts
+    # that node's translations in the target's axes (dofs.csv axis_x, axis_y) and its matrices are
+    # T^T K T, a rotation of S2's model. One problem, one answer: Siconos's fixed steps give S2's
+    # intervals and impulse to the roundoff of the rotated coordinates (1e-12 relative allows the
+    # LCP's few products per step over 300 steps; measured 1e-15).
+    r, out = siconos(tmp_path, "s2_transverse.toml", name="s2")
+    assert r.returncode == 0, r.stderr
+    rotated = os.path.join(ROOT, "verification", "scenes", "extra", "s2_rotated_37.toml")
+    r37, out37 = siconos(tmp_path, rotated, name="s2_37")
+    assert r37.returncode == 0, r37.stderr
+    a, b = summary(out)["contacts"][0], summary(out37)["contacts"][0]
+    assert len(a["intervals"]) == 2 and len(b["intervals"]) == 2
+    assert sum(b["intervals"], []) == pytest.approx(sum(a["intervals"], []), abs=1e-12)
+    assert b["impulse_normal"] == pytest.approx(a["impulse_normal"], rel=1e-12)
+    assert b["peak_R"] == pytest.approx(a["peak_R"], rel=1e-12)

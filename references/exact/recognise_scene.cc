@@ -6,6 +6,7 @@
 
 #include <solver/scene/SceneError.hpp>
 #include <solver/scene/contact_law.hpp>
+#include <solver/scene/support_axes.hpp>
 
 namespace beamimpact::exact {
 namespace {
@@ -25,13 +26,14 @@ Vec2 unit(Vec2 a) {
 
 Rod as_rod(const Body& b) { return Rod{b.length(), b.E, b.rho, b.area}; }
 
-// True when the support holds the displacement along the unit normal n (and nothing else
-// than translations): pin or roller for transverse bending.
-bool holds_normal(const Support& s, Vec2 n) {
-  if (s.fix_theta) return false;
-  if (std::abs(n[0]) < kTol) return s.fix_y;
-  if (std::abs(n[1]) < kTol) return s.fix_x;
-  return s.fix_x && s.fix_y;
+// True when the supports of body b at `node` hold the displacement along the unit normal n (and
+// nothing else than translations): a pin, or a roller across the body (fix = ["normal"], or a
+// global one when the body lies along x or y). A global roller on an inclined body holds another
+// direction: not a simple support.
+bool holds_normal(const Body& b, int node, Vec2 n) {
+  const NodeHold h = node_hold(b, node);
+  if (h.theta) return false;
+  return h.held == 2 || (h.held == 1 && std::abs(cross(h.direction, n)) < kTol);
 }
 
 // True when the support holds the displacement along the unit axis d (rotation may be held too).
@@ -123,9 +125,9 @@ void recognise_rod_on_beam(const Scene& scene, const Frame& f, ExactProblem& p) 
   bool start_held = false, end_held = false;
   for (const Support& s : B.supports) {
     if (s.node == 0)
-      start_held = holds_normal(s, n);
+      start_held = holds_normal(B, s.node, n);
     else if (s.node == B.elements)
-      end_held = holds_normal(s, n);
+      end_held = holds_normal(B, s.node, n);
     else
       simple = false;
   }

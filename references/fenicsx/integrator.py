@@ -27,7 +27,7 @@ from mpi4py import MPI
 from contact import Surface, gaps, solve_contact
 from loads import load_vector
 from output import STATE_CODES
-from scene import SceneError
+import supports
 
 
 class _ContactSetup:
@@ -57,18 +57,7 @@ def setup(scene, opts, cont, contacts):
         if body.rigid:   # immovable: every node held
             own = np.flatnonzero(cont.body == bi)
             minv[2 * own] = minv[2 * own + 1] = v0[2 * own] = v0[2 * own + 1] = 0.0
-        for sup in body.supports:
-            nodes, _ = cont.find_nodes(bi, lambda s, q, s0=sup.s: (abs(s - s0) < tol) & (abs(q) < tol),
-                                       lambda s, q: s)
-            if len(nodes) != 1:
-                raise SceneError(scene.file, sup.key + ".at", f"the support at {sup.s:.6g} m along "
-                                 f"{body.name} is not a node of the continuum mesh; expected a position "
-                                 "at a multiple of half a Q2 element (change fenicsx.elements_length)")
-            mask, loc = cont.owned_local(nodes)
-            for comp, fixed in ((0, sup.fix_x), (1, sup.fix_y)):
-                if fixed:
-                    minv[2 * loc + comp] = 0.0
-                    v0[2 * loc + comp] = 0.0
+    rollers = supports.hold(scene, cont, tol, minv, v0)
 
     F = load_vector(scene, cont, scene.loads)
     dt_crit = cont.critical_dt(minv)
@@ -99,6 +88,7 @@ def setup(scene, opts, cont, contacts):
         sets.append((cg, slave, master, slave[centre], axis[j:j + 2], np.array([1 - w, w])))
         all_nodes += [slave, master, axis[j:j + 2]]
     cn = np.unique(np.concatenate(all_nodes))
+    supports.refuse_roller_in_contact(scene, rollers, cn)
     pos = {int(g): k for k, g in enumerate(cn)}
     csets = [_ContactSetup(cg, np.array([pos[int(g)] for g in sl]), np.array([pos[int(g)] for g in ma]),
                            pos[int(ce)], np.array([pos[int(g)] for g in tg]), tw,
@@ -106,8 +96,9 @@ def setup(scene, opts, cont, contacts):
              for cg, sl, ma, ce, tg, tw in sets]
     # v_{-1/2} from v_0 and the initial acceleration M^-1 F (u_0 = 0: no elastic force).
     vh0 = v0 if F is None else v0 - 0.5 * dt * minv * F
+    supports.project(vh0, rollers)
     return dict(minv=minv, v0=v0, vh0=vh0, F=F, dt=dt, dt_crit=dt_crit, out_every=out_every,
-                nsteps=nsteps, end=nsteps * dt, cn=cn, csets=csets)
+                nsteps=nsteps, end=nsteps * dt, cn=cn, csets=csets, rollers=rollers)
 
 
 def run(cont, st, stats, progress=True, fields=None):
@@ -159,6 +150,7 @@ def run(cont, st, stats, progress=True, fields=None):
             fric_max = max(fric_max, info["friction_power"]) if info["R"] > 0 else fric_max
         v_new = v_pred
         v_new[own_dofs] += dt * minv[own_dofs] * fc[own_mask]
+        supports.project(v_new, st["rollers"])
         vnc = vpc + dt * mi * fc
         unc = uc + dt * vnc                      # u_{n+1} at the contact nodes
         u_prevc = g_prev if n > 0 else uc - dt * vhc

@@ -20,13 +20,19 @@ class SceneError(Exception):
         super().__init__(f"{file}" + (f": key '{key}'" if key else "") + f": {message}")
 
 
+FIX_ENTRIES = ("x", "y", "theta", "axial", "normal")
+
+
 @dataclass
 class Support:
-    """A support on the body's axis: `s` (m) along the axis from the start; fixed global components."""
+    """A support on the body's axis: `s` (m) along the axis from the start; fixed components: global
+    x, y, and the body's own axial (start -> end) and normal (axial turned +90 deg) directions."""
     s: float
     fix_x: bool
     fix_y: bool
     key: str
+    fix_axial: bool = False
+    fix_normal: bool = False
 
 
 @dataclass
@@ -264,13 +270,13 @@ def load_scene(path, overrides=None):
             else:
                 s.fail("at", f'expected "start", "end" or a node index 0..{body.elements}, found {at!r}')
             fix = s.raw("fix")
-            if not isinstance(fix, list) or not fix or any(f not in ("x", "y", "theta") for f in fix):
-                s.fail("fix", f'expected a non-empty array of "x", "y", "theta", found {fix!r}')
+            if not isinstance(fix, list) or not fix or any(f not in FIX_ENTRIES for f in fix):
+                s.fail("fix", f'expected a non-empty array of "x", "y", "theta", "axial", "normal", found {fix!r}')
             if "theta" in fix:
                 s.fail("fix", "a rotation support cannot be modelled by the plane-stress continuum "
-                       "(supports act on the axis node); expected only \"x\" and \"y\"")
+                       "(supports act on the axis node); expected only \"x\", \"y\", \"axial\", \"normal\"")
             s.finish()
-            body.supports.append(Support(pos, "x" in fix, "y" in fix, s.prefix))
+            body.supports.append(Support(pos, "x" in fix, "y" in fix, s.prefix, "axial" in fix, "normal" in fix))
         b.finish()
         if any(o.name == body.name for o in bodies):
             b.fail("name", f"expected a unique body name, {body.name!r} is used twice")

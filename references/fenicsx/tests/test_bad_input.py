@@ -30,6 +30,8 @@ cases = [
     ("typo in a body key", variant("body_key", "elements = 10", "elemnts = 10"), [], "'elemnts'"),
     ("rotation support", variant("theta", 'fix = ["x", "y"] }', 'fix = ["x", "y", "theta"] }'), [],
      "bodies[1].supports[0].fix"),
+    ("unknown support direction", variant("fix_entry", 'fix = ["y"] }', 'fix = ["across"] }'), [],
+     "bodies[1].supports[1].fix"),
     ("Timoshenko body", variant("timoshenko", "elements = 10", 'elements = 10\ntheory = "timoshenko"'), [],
      "bodies[1].theory"),
     ("Hertz contact", variant("hertz", 'node = "end"', 'node = "end"\nlaw = "hertz"\nstiffness = 50.0'), [],

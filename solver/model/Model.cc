@@ -15,11 +15,6 @@ namespace {
 
 double dot(const Vec2& a, const Vec2& b) { return a[0] * b[0] + a[1] * b[1]; }
 
-Vec2 unit_axis(const Body& b) {
-  const double L = b.length();
-  return {(b.end[0] - b.start[0]) / L, (b.end[1] - b.start[1]) / L};
-}
-
 /// A nonzero entry (i, j) of an element matrix.
 struct Nonzero {
   int i, j;
@@ -134,7 +129,7 @@ Model::Model(const Scene& scene, bool bending)
     fixed.resize(node_pos_.size() * dpn, 0);
     if (body.rigid) std::fill(fixed.end() - body.nodes() * dpn, fixed.end(), 1);
     hold_supported(body, b, fixed);
-    const Vec2 d = unit_axis(body);
+    const Vec2 d = body.axis();
     const bool timoshenko = body.theory == BeamTheory::kTimoshenko && !body.rigid && dpn == 3;
     const double le = body.length() / body.elements;
     const double phi =

@@ -9,16 +9,11 @@ namespace {
 double cross(const Vec2& a, const Vec2& b) { return a[0] * b[1] - a[1] * b[0]; }
 double norm(const Vec2& a) { return std::hypot(a[0], a[1]); }
 
-Vec2 unit_axis(const Body& b) {
-  const double L = b.length();
-  return {(b.end[0] - b.start[0]) / L, (b.end[1] - b.start[1]) / L};
-}
-
 }  // namespace
 
 bool scene_is_collinear(const Scene& scene, Vec2* axis_out) {
   if (scene.bodies.empty()) return false;
-  const Vec2 axis = unit_axis(scene.bodies[0]);
+  const Vec2 axis = scene.bodies[0].axis();
   const Vec2 origin = scene.bodies[0].start;
   double scale = 0.0, vscale = 0.0;
   for (const Body& b : scene.bodies) {
@@ -27,7 +22,7 @@ bool scene_is_collinear(const Scene& scene, Vec2* axis_out) {
   }
   const double tol = 1e-9 * scale;
   for (const Body& b : scene.bodies) {
-    const Vec2 d = unit_axis(b);
+    const Vec2 d = b.axis();
     if (std::abs(cross(d, axis)) > 1e-9) return false;
     const Vec2 off{b.start[0] - origin[0], b.start[1] - origin[1]};
     if (std::abs(cross(off, axis)) > tol) return false;

@@ -27,12 +27,6 @@ std::vector<Held> held(const Body& body, const Support& s) {
 
 }  // namespace
 
-std::vector<Vec2> held_directions(const Body& body, const Support& s) {
-  std::vector<Vec2> d;
-  for (const Held& h : held(body, s)) d.push_back(h.d);
-  return d;
-}
-
 NodeHold node_hold(const Body& body, int node) {
   NodeHold n;
   for (const Support& s : body.supports) {

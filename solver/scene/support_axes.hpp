@@ -23,10 +23,6 @@ struct NodeHold {
   bool theta = false;      ///< the rotation is held
 };
 
-/// @brief The unit directions (global axes) along which one support holds its node: x (1, 0),
-/// y (0, 1), axial body.axis(), normal body.normal().
-std::vector<Vec2> held_directions(const Body& body, const Support& s);
-
 /// @brief Combines every support of `body` at `node`. When a held global direction and a held
 /// body direction are parallel (kParallelTolerance), the body's direction is the one kept.
 NodeHold node_hold(const Body& body, int node);

@@ -2,7 +2,10 @@
 /// @file scorecard.hpp
 /// @brief A method's scorecard on the benchmark set (docs/protocol.md): the paper's scenes, the
 /// hard scenes and every scene with an exact answer, each run compared with the best reference
-/// (exact where the matrix has one, else IDA) under the matrix's own tolerances.
+/// (exact where the matrix has one, else IDA) under the matrix's own tolerances. A scene the matrix
+/// gives no reference for, and IDA's own scorecard, take IDA converged beyond its defaults (time
+/// tolerances 100 times and penalty stiffness 10 times the defaults), so that no method is scored
+/// against itself.
 
 #include <filesystem>
 #include <map>
@@ -18,7 +21,7 @@ namespace beamimpact::verification {
 /// @brief One benchmark scene: the method's run, its reference and the quantities compared.
 struct ScoreItem {
   JobSpec run, reference;
-  std::string reference_kind;  ///< "exact" or "ida"
+  std::string reference_kind;  ///< "exact" or "ida" (its settings in reference.set)
   std::vector<Gate> gates;     ///< the matrix case's gates (tol and why); none: errors reported only
   std::string source;          ///< the matrix case the reference and tolerances come from ("" none)
 };

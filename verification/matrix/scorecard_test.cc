@@ -2,6 +2,7 @@
 // the matrix compares a scene with it, else IDA; the method's own case first, then the paper's.
 #include <verification/matrix/scorecard.hpp>
 
+#include <algorithm>
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -41,12 +42,34 @@ TEST(Scorecard, PicksTheBestReferenceAndTheMatrixTolerances) {
   EXPECT_EQ(s4.run.method, "standin");
   EXPECT_FALSE(s4.run.dt);
   EXPECT_FALSE(s4.gates.empty());
-  // A hard scene the matrix has no case for: IDA at the scene's settings, errors without a verdict.
+  // A hard scene the matrix has no case for: IDA converged beyond its defaults, errors without a
+  // verdict.
   const ScoreItem& grazing = item(standin, "grazing_1deg");
   EXPECT_EQ(grazing.reference.method, "ida");
+  EXPECT_EQ(grazing.reference.set,
+            (std::vector<std::string>{"ida.rtol=1e-10", "ida.atol=1e-13", "ida.kn_factor=1e4"}));
   EXPECT_TRUE(grazing.gates.empty());
   EXPECT_TRUE(grazing.source.empty());
   EXPECT_EQ(item(standin, "rigid_rod_oblique").reference_kind, "exact");
+}
+
+TEST(Scorecard, IdaIsNeverItsOwnReference) {
+  const fs::path root = BEAMIMPACT_SOURCE;
+  const VerificationMatrix m = VerificationMatrix::load(root / "verification/matrix.toml");
+  // Against itself every error would be 0 and every gate a pass that means nothing: IDA is scored
+  // against a converged IDA run (or exact), whatever case of the matrix gives the tolerances.
+  for (const ScoreItem& it : score_items(m, "ida", root)) {
+    EXPECT_NE(it.run.key(), it.reference.key()) << it.run.label();
+    if (it.reference_kind == "ida") {
+      EXPECT_NE(std::find(it.reference.set.begin(), it.reference.set.end(), "ida.rtol=1e-10"),
+                it.reference.set.end())
+          << it.reference.label();
+    }
+  }
+  // A case's own reference settings stay (S4-60: IDA's converged friction regularisation).
+  const auto ida = score_items(m, "ida", root);
+  const auto& s60 = item(ida, "s4_oblique_60").reference.set;
+  EXPECT_NE(std::find(s60.begin(), s60.end(), "ida.friction_velocity=1e-5"), s60.end());
 }
 
 }  // namespace

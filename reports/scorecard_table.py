@@ -26,8 +26,9 @@ above the tolerance the matrix holds for that scene's reference (the tolerances 
 integrator's unless the method has its own case: a 2D continuum or a penalty code is judged by
 the beam model's bounds, which is the point of a common scorecard); `no tolerance`: the matrix
 has no case for the scene, the error is reported; `not applicable`: the method refused the
-scene (exit 2 with its reason). Where the reference is IDA at the scene's own settings, IDA's
-own row compares it with itself (0). Made with:
+scene (exit 2 with its reason). In IDA's own row the reference is IDA converged beyond its
+defaults (rtol 1e-10, atol 1e-13, penalty 1e4 EA/le): it shows how far the default IDA that the
+other rows meet is from converged. Made with:
 
 ```sh
 for m in paper ida fenicsx siconos example; do

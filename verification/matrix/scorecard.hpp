@@ -2,10 +2,10 @@
 /// @file scorecard.hpp
 /// @brief A method's scorecard on the benchmark set (docs/protocol.md): the paper's scenes, the
 /// hard scenes and every scene with an exact answer, each run compared with the best reference
-/// (exact where the matrix has one, else IDA) under the matrix's own tolerances. A scene the matrix
-/// gives no reference for, and IDA's own scorecard, take IDA converged beyond its defaults (time
-/// tolerances 100 times and penalty stiffness 10 times the defaults), so that no method is scored
-/// against itself.
+/// (exact where the matrix has one, else IDA) under the matrix's own tolerances. IDA's own
+/// scorecard takes IDA converged beyond its defaults (time tolerances 100 times tighter, penalty
+/// 10 times stiffer) wherever its reference would be IDA, so that it is never scored against its
+/// own run.
 
 #include <filesystem>
 #include <map>

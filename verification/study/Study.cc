@@ -9,6 +9,7 @@
 
 #include <api/registry.hpp>
 #include <solver/scene/TableReader.hpp>
+#include <solver/scene/run_cost.hpp>
 #include <solver/scene/scene_io.hpp>
 #include <solver/util/InputError.hpp>
 #include <verification/compare/compare_runs.hpp>
@@ -130,6 +131,46 @@ void read_breaks(TableReader& r, const std::string& file, Study& s) {
   }
 }
 
+/// The number of design points (a double: a grid's product may exceed any integer type).
+double point_count(const Study& s) {
+  if (s.design == Study::Design::kLatinHypercube) return static_cast<double>(s.samples);
+  double n = 1.0;
+  for (const auto& p : s.parameters) n *= static_cast<double>(p.values.size());
+  return n;
+}
+
+/// Refuses, before any point is made, a design beyond memory (kMostStudyPoints points) and, unless
+/// allow_long_run = true, a study whose runs add up to more than an ordinary run's work (run_cost.hpp):
+/// each point runs once per method and once for its reference; a mesh parameter multiplies a run's
+/// DOFs by its largest factor m and its steps by up to m (the wave or "auto" step), so m^2.
+void check_cost(TableReader& r, const Study& s) {
+  const double points = point_count(s);
+  if (points > kMostStudyPoints)
+    r.fail("parameter",
+           fmt::format("the design has {:.3g} points: expected at most {:g} (the points are held "
+                       "in memory); use fewer levels or design = {{ kind = \"lhs\", samples = N }}",
+                       points, kMostStudyPoints));
+  double mesh = 1.0;
+  for (const auto& p : s.parameters)
+    if (p.kind == Parameter::Kind::kMesh)
+      mesh = std::max(mesh, *std::max_element(p.values.begin(), p.values.end()));
+  Scene base;
+  try {
+    base = load_scene(s.scene, s.set);
+  } catch (const InputError& e) {
+    r.fail("set", std::string("the overrides do not apply to the scene: ") + e.what());
+  }
+  const double runs = points * static_cast<double>(s.methods.size() + 1);
+  const double per_run = estimate_run_cost(base, planned_dt(base)).work * mesh * mesh;
+  if (runs * per_run > kOrdinaryWork && !s.allow_long_run)
+    r.fail("allow_long_run",
+           fmt::format(
+               "this study is far beyond an ordinary run: {:.3g} points x {} runs (the methods and the "
+               "reference) x {:.3g} DOF-steps = {:.3g} DOF-steps (ordinary: at most {:g}, 8-18 min of one "
+               "core); set allow_long_run = true in the study file to run it",
+               points, s.methods.size() + 1, per_run, runs * per_run, kOrdinaryWork));
+}
+
 }  // namespace
 
 Study Study::load(const fs::path& file_in) {
@@ -163,6 +204,7 @@ Study Study::load(const fs::path& file_in) {
     if (!verification::known_norm(n)) r.fail("norms", "unknown norm '" + n + "' (see `beamimpact compare`)");
   read_breaks(r, file, s);
   s.keep_runs = r.boolean_or("keep_runs", false);
+  s.allow_long_run = r.boolean_or("allow_long_run", false);
   const toml::node* ps = r.raw("parameter");
   const toml::array* pa = ps ? ps->as_array() : nullptr;
   if (!pa || pa->empty()) r.fail("parameter", "expected at least one [[parameter]] table");
@@ -175,6 +217,7 @@ Study Study::load(const fs::path& file_in) {
         r.fail("parameter", "two parameters named '" + s.parameters.back().name + "'");
   }
   r.finish();
+  check_cost(r, s);
   // Every override must apply to the scene: check the first point now, before any run.
   try {
     std::vector<std::string> first = overrides(s, design_points(s).front());

@@ -39,6 +39,10 @@ struct BreakRule {
   double above = 0.1;              ///< the norm value above which a case is listed
 };
 
+/// @brief The most points a design may have: each is held in memory (a grid of 1e7 points of a few
+/// parameters is about 1 GB with its results).
+inline constexpr double kMostStudyPoints = 1e7;
+
 /// @brief A whole study file, validated.
 struct Study {
   enum class Design { kGrid, kLatinHypercube };
@@ -56,9 +60,12 @@ struct Study {
   std::vector<std::string> norms;  ///< table columns (comparison norms)
   std::vector<BreakRule> breaks{BreakRule{}};  ///< `breaks = [{ metric, above }, ...]`
   bool keep_runs = false;                      ///< keep each run's history.csv / summary.json under DIR/runs
+  bool allow_long_run = false;                 ///< run a study beyond kOrdinaryWork DOF-steps in total
 
   /// @brief Reads and checks a study file. Throws InputError (file, key, what was expected) for a
-  /// missing scene, an unknown method or norm, a parameter without values, a bad design.
+  /// missing scene, an unknown method or norm, a parameter without values, a bad design, a design
+  /// of more than kMostStudyPoints points, or runs adding up to more than kOrdinaryWork DOF-steps
+  /// (run_cost.hpp) without allow_long_run = true; the message states the estimate.
   /// @param file the study file (TOML)
   static Study load(const std::filesystem::path& file);
 };

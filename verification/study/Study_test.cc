@@ -129,5 +129,37 @@ TEST(Study, BadInputNamesTheFileAndTheKey) {
   EXPECT_NE(message("badnorm", kMethods + "norms = [\"nonorm\"]\n" + mu).find("nonorm"), std::string::npos);
 }
 
+// Cost before any run: a grid of 1e10 points is refused before a point is made (it held 2 GB in
+// 20 s), and a study whose runs add up beyond an ordinary run's work needs allow_long_run.
+TEST(Study, CostBeyondMemoryOrOrdinaryWorkIsRefusedWithTheEstimate) {
+  auto message = [](const std::string& name, const std::string& text) -> std::string {
+    try {
+      (void)Study::load(write_study(name, text));
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  std::string grid;  // ten parameters of ten levels: 10^10 points
+  for (int i = 0; i < 10; ++i)
+    grid += "[[parameter]]\nname = \"p" + std::to_string(i) +
+            "\"\nkey = \"contacts[0].friction\"\nvalues = [0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9]\n";
+  const std::string huge = message("huge", kMethods + grid);
+  EXPECT_NE(huge.find("parameter"), std::string::npos) << huge;
+  EXPECT_NE(huge.find("1e+10 points"), std::string::npos) << huge;
+  // S4-90 as shipped: dt = "auto" = 0.5 x le / c = 0.5 x 1 m / 4629 m/s, 926 steps to 0.1 s, 51
+  // DOFs: 4.7e4 DOF-steps. Refined 500 and 1000 times (DOFs and steps both scale), each point run
+  // by the paper and by IDA: 2 x 4.7e4 x (500^2 + 1000^2) = 1.2e11 DOF-steps, above the ordinary
+  // 1e11 (the estimate bounds it by the finest mesh: 1.9e11).
+  const std::string mesh = "[[parameter]]\nname = \"mesh\"\nmesh = true\nvalues = [500, 1000]\n";
+  const std::string long_study = message("long", kMethods + mesh);
+  EXPECT_NE(long_study.find("allow_long_run"), std::string::npos) << long_study;
+  EXPECT_NE(long_study.find("DOF-steps"), std::string::npos) << long_study;
+  EXPECT_EQ(message("long_allowed", kMethods + "allow_long_run = true\n" + mesh), "no error");
+  // The shipped studies are ordinary.
+  for (const char* f : {"s4_angle_friction.toml", "s4_throughput.toml"})
+    EXPECT_NO_THROW((void)Study::load(kRoot / "verification/studies" / f)) << f;
+}
+
 }  // namespace
 }  // namespace beamimpact::study

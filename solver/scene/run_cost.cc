@@ -18,6 +18,12 @@ constexpr double kBytesPerDof = 2000.0;
 /// Bytes per recorded history row and contact (about 20 doubles: gap, R, tau, u, v of both
 /// points, energies, momentum).
 constexpr double kBytesPerRowAndContact = 200.0;
+/// Bytes of one field file (output.fields): per node 16 numbers (reference point, displacement,
+/// velocity, rotation, section forces, contact force) and the polyline, plus the XML around them.
+/// Measured binary: 4590 B for S1's 22 nodes, 27783 B for 202 (129 B per node, 1.8 kB more);
+/// ASCII writes up to 25 characters per number.
+constexpr double kFieldBytesPerNode[2] = {130.0, 400.0};  // binary, ascii
+constexpr double kFieldBytesPerFile = 2000.0;
 
 }  // namespace
 
@@ -38,6 +44,10 @@ RunCost estimate_run_cost(const Scene& scene, double dt) {
   const double rows = c.steps / std::max(1, scene.time.output_every);
   c.bytes = c.dofs * kBytesPerDof + rows * kBytesPerRowAndContact *
                                         static_cast<double>(std::max<std::size_t>(1, scene.contacts.size()));
+  if (scene.output.fields)
+    c.field_bytes =
+        (rows + 1.0) * (c.dofs / 3.0 * kFieldBytesPerNode[scene.output.field_format == FieldFormat::kAscii] +
+                        kFieldBytesPerFile);
   return c;
 }
 
@@ -61,6 +71,16 @@ void check_run_cost(const Scene& scene, double dt) {
         fmt::format("this run is far beyond an ordinary one: {} (ordinary: at most {:g} DOF-steps "
                     "and {:g} GB); set time.allow_long_run = true (or --allow-long) to run it",
                     c.to_string(), kOrdinaryWork, kOrdinaryBytes / 1e9));
+  if (c.field_bytes > kOrdinaryFieldBytes && !scene.time.allow_long_run) {
+    const double every = std::ceil(scene.time.output_every * c.field_bytes / kOrdinaryFieldBytes);
+    throw SceneError(
+        scene.file, "output.fields",
+        fmt::format("the field files would take about {:.3g} GB ({:.3g} files, one per output row; "
+                    "ordinary: at most {:g} GB); write fewer with time.output_every = {:g} or more, "
+                    "or set time.allow_long_run = true to write them all",
+                    c.field_bytes / 1e9, c.steps / scene.time.output_every + 1.0, kOrdinaryFieldBytes / 1e9,
+                    every));
+  }
 }
 
 long step_count(const Scene& scene, double dt) {

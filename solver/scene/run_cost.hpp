@@ -13,12 +13,13 @@ namespace beamimpact {
 
 /// @brief The estimate for one scene and step.
 struct RunCost {
-  double steps = 0.0;       ///< ceil(end / dt)
-  double wave_steps = 0.0;  ///< end / (smallest axial element transit time): what resolving the
-                            ///< fastest wave takes (IDA's and the exact method's own steps)
-  double dofs = 0.0;        ///< 3 per node (u_x, u_y, theta), all bodies
-  double work = 0.0;        ///< max(steps, wave_steps) x dofs (DOF-steps)
-  double bytes = 0.0;       ///< model + recorded history, estimated
+  double steps = 0.0;        ///< ceil(end / dt)
+  double wave_steps = 0.0;   ///< end / (smallest axial element transit time): what resolving the
+                             ///< fastest wave takes (IDA's and the exact method's own steps)
+  double dofs = 0.0;         ///< 3 per node (u_x, u_y, theta), all bodies
+  double work = 0.0;         ///< max(steps, wave_steps) x dofs (DOF-steps)
+  double bytes = 0.0;        ///< model + recorded history, estimated
+  double field_bytes = 0.0;  ///< the field files of output.fields (0 without), estimated
   /// @brief "4e+05 steps x 66 DOFs = 2.6e+07 DOF-steps, about 0.01 GB".
   std::string to_string() const;
 };
@@ -28,6 +29,9 @@ struct RunCost {
 /// a CI machine or a laptop has. Above either, time.allow_long_run = true is needed.
 inline constexpr double kOrdinaryWork = 1e11;  ///< DOF-steps
 inline constexpr double kOrdinaryBytes = 4e9;  ///< bytes
+/// @brief Field files (output.fields) above this many bytes need time.allow_long_run = true or a
+/// larger time.output_every: a disk fills silently otherwise (one .vtu per output row).
+inline constexpr double kOrdinaryFieldBytes = 1e9;
 /// @brief Above this many steps a run is refused outright: t + dt == t in double precision near
 /// t = end once end / dt exceeds 2^52 (4.5e15), and the step counter must not overflow.
 inline constexpr double kMostSteps = 1e15;
@@ -49,7 +53,8 @@ inline double planned_dt(const Scene& scene) {
 
 /// @brief Throws SceneError (key time.dt or time.allow_long_run) when `scene` at step `dt` (s)
 /// has more than kMostSteps steps, or exceeds kOrdinaryWork / kOrdinaryBytes without
-/// time.allow_long_run. The message states the estimate.
+/// time.allow_long_run; key output.fields when the field files exceed kOrdinaryFieldBytes
+/// without it. The message states the estimate and the setting that allows the run.
 void check_run_cost(const Scene& scene, double dt);
 
 /// @brief The number of steps ceil(end / dt - 1e-9) as a long, after the check against

@@ -10,6 +10,7 @@
 #include <solver/scene/SceneError.hpp>
 #include <solver/scene/run_cost.hpp>
 #include <solver/scene/scene_io.hpp>
+#include <solver/util/write_file_atomic.hpp>
 
 namespace beamimpact {
 namespace {
@@ -20,13 +21,16 @@ void add_scene_warnings(const Scene& scene, SimulationResult& r) {
   for (const std::string& w : scene.warnings) r.extra["warnings"].push_back(w);
 }
 
+/// Nothing of an earlier run in the directory may vouch for this one, nor survive a refusal.
+void remove_run_outputs(const std::filesystem::path& out) {
+  remove_stale_outputs(out, {"summary.json", "history.csv"});
+  remove_stale_outputs(FieldWriter::collection(out).parent_path(), {"fields.pvd"});
+}
+
 /// Every run passes here: the method's acceptance, then the in-process solver or the program.
 SimulationResult run_method(const Scene& scene, const Method& m,
                             const std::optional<std::filesystem::path>& out, const std::string& mesh) {
-  if (out) {  // nothing of an earlier run in the directory may vouch for this one, nor a refusal
-    std::filesystem::remove(*out / "summary.json");
-    std::filesystem::remove(FieldWriter::collection(*out));
-  }
+  if (out) remove_run_outputs(*out);
   check_accepts(m, scene, mesh);
   if (!m.in_process()) {
     if (!out)
@@ -67,6 +71,7 @@ SimulationResult run(const Scene& scene, std::string_view method_name, const Run
 
 SimulationResult run(const std::filesystem::path& scene_file, std::string_view method_name,
                      const RunOptions& options) {
+  if (options.out) remove_run_outputs(*options.out);  // before anything can refuse
   const Method& m = method(method_name, scene_file.string(), "--method");
   std::vector<std::string> set = options.set;
   if (options.dt) {

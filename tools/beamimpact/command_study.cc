@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <beamimpact/version.hpp>
+#include <solver/util/write_file_atomic.hpp>
 #include <verification/study/run_study.hpp>
 
 #include "methods_option.hpp"
@@ -19,6 +20,7 @@ struct StudyArgs {
 };
 
 void study_command(const StudyArgs& a) {
+  remove_stale_outputs(a.out, {"study.csv", "study.json", "study.md", "timing.csv", "timing.json"});
   study::Study s = study::Study::load(a.file);
   s.keep_runs = s.keep_runs || a.keep_runs;
   const auto r = study::execute_study(s, a.out);

@@ -133,6 +133,33 @@ gates = [{ metric = "impluse", tol = 0.01, why = "misspelt metric name" }]
   EXPECT_FALSE(fs::exists(tmp_ / "v" / "report.md"));
 }
 
+// An output directory holds a complete result or visibly none: a refused re-run into the
+// directory of a finished one removes that run's outputs first (they would vouch for the refused
+// command), and a refused verify removes an earlier PASS report; nothing else there is touched.
+TEST_F(Commands, ARefusedRerunLeavesNoEarlierResultBehind) {
+  const fs::path out = tmp_ / "run";
+  ASSERT_EQ(
+      run(fmt::format("run verification/scenes/paper/s1_central.toml --out '{}' --quiet", out.string())).code,
+      0);
+  ASSERT_TRUE(fs::exists(out / "summary.json") && fs::exists(out / "history.csv"));
+  std::ofstream(out / "notes.txt") << "the user's own file\n";
+  const Result refused = run(fmt::format(
+      "run verification/scenes/paper/s1_central.toml --out '{}' --quiet --set bodies.A.E=-1", out.string()));
+  EXPECT_EQ(refused.code, 2) << refused.out;
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+  EXPECT_FALSE(fs::exists(out / "history.csv"));
+  EXPECT_TRUE(fs::exists(out / "notes.txt"));
+  const fs::path v = tmp_ / "v";
+  fs::create_directories(v);
+  std::ofstream(v / "report.md") << "verify passed\n";
+  std::ofstream(v / "junit.xml") << "<testsuites failures=\"0\"/>\n";
+  const Result bad =
+      run(fmt::format("verify '{}' --out '{}'", matrix("[[case]]\nscene = \"nope\"\n").string(), v.string()));
+  EXPECT_EQ(bad.code, 2) << bad.out;
+  EXPECT_FALSE(fs::exists(v / "report.md"));
+  EXPECT_FALSE(fs::exists(v / "junit.xml"));
+}
+
 // Matrix values out of range are refused at load (exit 2 naming the key), never run: a timeout
 // <= 0 killed every run, a mesh multiplier 0 reached the launcher.
 TEST_F(Commands, MatrixTimeoutAndMeshOutOfRangeExitTwo) {

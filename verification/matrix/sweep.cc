@@ -6,6 +6,7 @@
 
 #include <api/registry.hpp>
 #include <solver/util/InputError.hpp>
+#include <solver/util/write_file_atomic.hpp>
 #include <verification/compare/compare_runs.hpp>
 #include <verification/matrix/Table.hpp>
 #include <verification/matrix/evaluate.hpp>
@@ -32,6 +33,7 @@ const std::vector<std::string>& sweep_norms() {
 }
 
 std::optional<SweepResult> execute_sweep(const SweepOptions& o, const Launcher& launcher) {
+  remove_stale_outputs(o.out, {"sweep.csv", "sweep.json", "sweep.md"});  // before anything can refuse
   const bool by_fraction = !o.fractions.empty();
   const std::string key = by_fraction ? "--fraction" : "--dt";
   const auto& steps = by_fraction ? o.fractions : o.dts;

@@ -9,6 +9,7 @@
 
 #include <beamimpact/version.hpp>
 #include <solver/util/InputError.hpp>
+#include <solver/util/write_file_atomic.hpp>
 #include <verification/matrix/VerificationMatrix.hpp>
 #include <verification/matrix/interruption.hpp>
 
@@ -59,6 +60,8 @@ Selection select(const VerificationMatrix& m, const VerifyOptions& o) {
 std::optional<VerifyResult> verify(const VerifyOptions& o, const std::filesystem::path& exe) {
   const auto start = std::chrono::steady_clock::now();
   const std::string started = utc_now();
+  // An earlier verdict must not survive this run's refusal or failure (report.html: the HTML report's).
+  remove_stale_outputs(o.out, {"report.md", "junit.xml", "norms.json", "report.html"});
   if (o.jobs < 1)
     throw InputError(o.matrix.string(), "--jobs", "expected a positive number of parallel runs");
   const VerificationMatrix m = VerificationMatrix::load(o.matrix);

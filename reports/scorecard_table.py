@@ -109,6 +109,15 @@ def write_set(out, dirs, cards, text):
         os.replace(tmp, os.path.join(out, name))
 
 
+def provenance(cards):
+    """One line saying how the scorecards were made: one version, or each method's own."""
+    if len({c["version"] for c in cards}) == 1:
+        return (f"Scorecards of version {cards[0]['version']}, made {cards[0]['made']} UTC "
+                f"(`beamimpact score NAME`; command of the first: `{cards[0]['command']}`).")
+    each = "; ".join(f"{c['method']}: {c['version']}, made {c['made']} UTC" for c in cards)
+    return f"Scorecards made with `beamimpact score NAME` by different versions ({each})."
+
+
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("dirs", nargs="+", help="scorecard folders (beamimpact score --out DIR)")
@@ -116,9 +125,7 @@ def main(argv):
     args = ap.parse_args(argv)
     cards = [load(d) for d in args.dirs]
     (cols1, rows1), (cols2, rows2) = tables(cards)
-    text = (f"Scorecards of version {cards[0]['version']}, made {cards[0]['made']} UTC "
-            f"(`beamimpact score NAME`; command of the first: `{cards[0]['command']}`).\n\n"
-            + markdown(cols1, rows1) + "\n\nRelative impulse error against the scene's best reference "
+    text = (provenance(cards) + "\n\n" + markdown(cols1, rows1) + "\n\nRelative impulse error against the scene's best reference "
             "(verdict under the matrix's tolerance for that scene):\n\n" + markdown(cols2, rows2) + "\n")
     print(text, end="")
     if args.set:

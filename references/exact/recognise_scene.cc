@@ -36,11 +36,11 @@ bool holds_normal(const Body& b, int node, Vec2 n) {
   return h.held == 2 || (h.held == 1 && std::abs(cross(h.direction, n)) < kTol);
 }
 
-// True when the support holds the displacement along the unit axis d (rotation may be held too).
-bool holds_along(const Support& s, Vec2 d) {
-  if (std::abs(d[0]) < kTol) return s.fix_y;
-  if (std::abs(d[1]) < kTol) return s.fix_x;
-  return s.fix_x && s.fix_y;
+// True when the supports of body b at `node` hold the displacement along the unit axis d, in
+// global or body axes (the rotation may be held too: it does not enter the axial problem).
+bool holds_along(const Body& b, int node, Vec2 d) {
+  const NodeHold h = node_hold(b, node);
+  return h.held == 2 || (h.held == 1 && std::abs(cross(h.direction, d)) < kTol);
 }
 
 /// @brief Throws SceneError(scene.file, key, "the exact method cannot solve this scene: " + msg).
@@ -82,7 +82,7 @@ void recognise_fixed_far_end(const Scene& scene, const Frame& f, ExactProblem& p
                              double s_end) {
   const Body& B = f.B;
   const int far = s_end > s_start ? B.elements : 0;
-  if (B.supports.size() != 1 || B.supports[0].node != far || !holds_along(B.supports[0], p.dir))
+  if (B.supports.size() != 1 || B.supports[0].node != far || !holds_along(B, far, p.dir))
     refuse(scene, f.kb + ".supports",
            "the coaxial target's supports are not one support at its far end holding the axial "
            "displacement (the coaxial rod solution has a free or a clamped far end only)");

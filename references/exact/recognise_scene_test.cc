@@ -105,6 +105,11 @@ TEST(RecogniseScene, CoaxialTargetClampedAtItsFarEnd) {
   s.bodies[1].supports[0].fix_x = false;  // holds y and theta only: axially free
   expect_refused(s, "bodies[1].supports", "holding the axial");
   s = clamped;
+  s.bodies[1].supports[0] = Support{14, false, false, false, /*axial*/ true, false};  // fix = ["axial"]
+  EXPECT_EQ(recognise_scene(s).target_far_end, FarEnd::kFixed);
+  s.bodies[1].supports[0] = Support{14, false, false, false, false, /*normal*/ true};  // across the axis
+  expect_refused(s, "bodies[1].supports", "holding the axial");
+  s = clamped;
   s.bodies[1].supports.push_back(Support{3, false, true, false});
   expect_refused(s, "bodies[1].supports", "one support at its far end");
   s = clamped;

@@ -27,6 +27,16 @@ fs::path write_study(const std::string& name, const std::string& text) {
 
 const std::string kMethods = "methods = [\"paper\"]\nreference = { method = \"ida\" }\n";
 
+/// The message Study::load gives for a study file with `text`, or "no error".
+std::string message(const std::string& name, const std::string& text) {
+  try {
+    (void)Study::load(write_study(name, text));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
 TEST(Study, GridIsTheFullProductLastParameterFastest) {
   const Study s = Study::load(write_study("grid", kMethods + R"(
 [[parameter]]
@@ -106,14 +116,6 @@ values = [45, 60]
 }
 
 TEST(Study, BadInputNamesTheFileAndTheKey) {
-  auto message = [](const std::string& name, const std::string& text) -> std::string {
-    try {
-      (void)Study::load(write_study(name, text));
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "no error";
-  };
   const std::string mu = "[[parameter]]\nname = \"mu\"\nkey = \"contacts[0].friction\"\nvalues = [0.1]\n";
   EXPECT_NE(
       message("nomethod", "methods = [\"nope\"]\nreference = { method = \"ida\" }\n" + mu).find("methods"),
@@ -132,14 +134,6 @@ TEST(Study, BadInputNamesTheFileAndTheKey) {
 // Cost before any run: a grid of 1e10 points is refused before a point is made (it held 2 GB in
 // 20 s), and a study whose runs add up beyond an ordinary run's work needs allow_long_run.
 TEST(Study, CostBeyondMemoryOrOrdinaryWorkIsRefusedWithTheEstimate) {
-  auto message = [](const std::string& name, const std::string& text) -> std::string {
-    try {
-      (void)Study::load(write_study(name, text));
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "no error";
-  };
   std::string grid;  // ten parameters of ten levels: 10^10 points
   for (int i = 0; i < 10; ++i)
     grid += "[[parameter]]\nname = \"p" + std::to_string(i) +

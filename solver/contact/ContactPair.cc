@@ -132,7 +132,7 @@ bool ContactPair::relocate(const Eigen::VectorXd& U) {
   const Vec2 us = model_.node_vector(U, striker_);
   const Vec2 X = model_.node_position(striker_);
   const Vec2 xs{X[0] + us[0], X[1] + us[1]};
-  // Walk from the current element toward the striker's projection (deformed target chord).
+  // Walk from the current element toward the striker's point on the deformed target chord.
   int e = element_;
   int walked = 0;  // direction of the walk so far: -1, 0 or +1
   for (int guard = 0; guard <= target_elements_; ++guard) {
@@ -140,8 +140,13 @@ bool ContactPair::relocate(const Eigen::VectorXd& U) {
     const Vec2 p1 = model_.node_position(n1), p2 = model_.node_position(n1 + 1);
     const Vec2 u1 = model_.node_vector(U, n1), u2 = model_.node_vector(U, n1 + 1);
     const Vec2 a{p1[0] + u1[0], p1[1] + u1[1]}, b{p2[0] + u2[0], p2[1] + u2[1]};
-    const Vec2 ab = sub(b, a);
-    const double x = dot(sub(xs, a), ab) / dot(ab, ab);
+    // The struck point is where the striker's line along the normal n crosses the deformed
+    // chord: the rows close the gap along n, so any other point (the foot of the chord's own
+    // perpendicular) leaves a striker corrected along n off the chord, below it by the predicted
+    // penetration times sin^2 of the chord's turn. Coordinates along t, the reference axis.
+    const double span = dot(sub(b, a), t_);
+    if (!(span > 0.0)) return false;  // an element turned by 90 deg or more: keep the point
+    const double x = dot(sub(xs, a), t_) / span;
     // A walk that turns back has found the node between two elements, which roundoff puts just
     // outside both (x < 0 in one, x > 1 in the other): it would go back and forth until the
     // guard runs out and keep the pair where it is. Keep it there at once (O(1), not O(elements)).

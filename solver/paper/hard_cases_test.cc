@@ -222,15 +222,16 @@ INSTANTIATE_TEST_SUITE_P(
         RealGapCase{"s3_surface_10", 1e-9,
                     "mid-element strike, symmetric bending: the cubic passes through the chord point "
                     "(measured 3.5e-16 m)"},
-        RealGapCase{"s3_surface_20", 1e-5,
-                    "node strike, but the second impact lands after the striker slid: slope x offset "
-                    "(measured 2.2e-6 m of a 1.5 m deflection)"},
+        RealGapCase{"s3_surface_20", 1e-9,
+                    "node strike; the second impact lands on the turned target, the struck point on the "
+                    "striker's line along the normal (measured 3.5e-16 m; the chord's perpendicular foot "
+                    "would leave 2.2e-6 m)"},
         RealGapCase{"s4_oblique_90", 1e-9, "node-to-node, normal impact (measured 1e-18 m)"},
         RealGapCase{"s4_oblique_45", 5e-5,
                     "sliding with friction on a bent steel beam: slope x slide (measured 1.3e-5 m, 0.2 % of "
                     "the 7 mm deflection)"},
         RealGapCase{"hard/grazing_slide", 5e-6,
-                    "a 1.5 m slide across a node on the Hermite surface (measured 6.8e-7 m)"}),
+                    "a 1.5 m slide across a node on the Hermite surface (measured 2.0e-7 m)"}),
     [](const ::testing::TestParamInfo<RealGapCase>& i) {
       std::string n = i.param.scene;
       for (char& ch : n)

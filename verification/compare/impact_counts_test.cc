@@ -50,9 +50,9 @@ class ImpactCounts : public ::testing::TestWithParam<CountCase> {};
 TEST_P(ImpactCounts, PaperCountsTheExactSolutionsCollisions) {
   const CountCase& k = GetParam();
   const std::string file = testing::paper_scene(k.scene);
-  // 0.035 s: above the paper's chatter at closure (bounces of one or two steps at dt = 0.01, and
-  // S2's 0.01 s bounce at dt = 0.0025) and far below the separation of real collisions (S2: the
-  // striker leaves at ~1.1 s and returns at ~2 s).
+  // 0.035 s: above the paper's chatter at closure (bounces of one or two steps at dt = 0.01) and
+  // far below the separation of real collisions (S2: the striker leaves at ~1.1 s and returns at
+  // ~2 s).
   constexpr double kMergeGap = 0.035;
   const SimulationResult exact = run(file, "exact");
   const SimulationResult paper = run(file, "paper", {.set = {"time.dt=" + std::to_string(k.dt)}, .out = {}});

@@ -13,8 +13,8 @@ double cross(const Vec2& a, const Vec2& b) { return a[0] * b[1] - a[1] * b[0]; }
 
 }  // namespace
 
-DeformedSurface::DeformedSurface(const Model& model, int body, int striker_node)
-    : model_(model), striker_(striker_node) {
+DeformedSurface::DeformedSurface(const Model& model, int body, int striker_node, Centreline line)
+    : model_(model), striker_(striker_node), line_(line) {
   for (int e = 0; e < static_cast<int>(model.elements().size()); ++e)
     if (model.elements()[e].body == body) elements_.push_back(e);
   if (elements_.empty()) throw std::logic_error("DeformedSurface: the body has no elements");
@@ -39,7 +39,7 @@ DeformedSurface::Shape DeformedSurface::shape(const Eigen::VectorXd& U, int k) c
   s.L = std::sqrt(dot(s.c, s.c));
   s.n = {-s.c[1] / s.L, s.c[0] / s.L};  // the chord's left normal
   s.phi1 = s.phi2 = 0.0;
-  if (model_.dofs_per_node() == 3) {
+  if (model_.dofs_per_node() == 3 && line_ == Centreline::kBeam) {
     // Nodal rotations relative to the chord's rigid rotation: the beam's own cubic about it.
     const double turn = std::atan2(cross({el.c, el.s}, s.c), dot({el.c, el.s}, s.c));
     const int e1 = model_.equation(el.n1, 2), e2 = model_.equation(el.n2, 2);

@@ -23,6 +23,12 @@ struct RealGap {
       false;  ///< a surface contact whose striker is past the target's end (gap = distance to the end)
 };
 
+/// @brief Which deformed centreline a DeformedSurface measures against.
+enum class Centreline {
+  kBeam,   ///< each element's chord plus the beam's cubic from the nodal rotations (frames)
+  kChord,  ///< the chords only: the polyline through the deformed nodes (linear weights' surface)
+};
+
 /// @brief The deformed centreline of one body and the real gap of points against it.
 class DeformedSurface {
  public:
@@ -31,7 +37,8 @@ class DeformedSurface {
   /// @param striker_node global id of the striker node, which fixes the side (reference
   ///        configuration) and whether the contact is end-on (striker on the target's axis,
   ///        beyond an end) or across the surface
-  DeformedSurface(const Model& model, int body, int striker_node);
+  /// @param line the centreline measured against (rods: the chord either way)
+  DeformedSurface(const Model& model, int body, int striker_node, Centreline line = Centreline::kBeam);
 
   /// @brief The real gap of the striker node in configuration U. Starts the closest-point search
   /// at the element of the previous call (O(1) per call while the contact point moves little).
@@ -56,6 +63,7 @@ class DeformedSurface {
   double side_ = 1.0;  ///< +1: striker left of the target's axis (reference), -1: right
   int end_on_ = 0;     ///< 0: surface contact; -1 / +1: end-on at the start / end
   int hint_ = 0;
+  Centreline line_;
 };
 
 }  // namespace beamimpact

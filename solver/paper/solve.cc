@@ -9,6 +9,7 @@
 #include <solver/integrator/ExplicitContactIntegrator.hpp>
 #include <solver/model/critical_dt.hpp>
 #include <solver/model/deformed_geometry.hpp>
+#include <solver/paper/gap_in_contact.hpp>
 #include <solver/record/FieldWriter.hpp>
 #include <solver/record/ResultRecorder.hpp>
 #include <solver/scene/SceneError.hpp>
@@ -186,18 +187,19 @@ std::string turn_warning(const Scene& scene, std::size_t c, double turn_max) {
       scene.bodies[k.striker].name, scene.bodies[k.target].name, turn_max, kWarnTurn);
 }
 
-/// Records the complete step p: contact samples and real gaps every step, a row (and the fields,
-/// when asked for) every output_every-th step and at the last one. Throws when the energy is no
-/// longer finite or has grown 1e6-fold.
+/// Records the complete step p: contact samples, real gaps and the gap under force every step, a
+/// row (and the fields, when asked for) every output_every-th step and at the last one. Throws
+/// when the energy is no longer finite or has grown 1e6-fold.
 void record_step(const ExplicitContactIntegrator& integ, long p, long N, const Scene& scene,
                  double critical_dt, std::vector<DeformedSurface>& surfaces, ResultRecorder& rec,
-                 FieldWriter* fields, std::vector<double>& turn_max) {
+                 FieldWriter* fields, std::vector<double>& turn_max, GapInContact& in_contact) {
   const auto& groups = integ.pair_groups();
   for (std::size_t c = 0; c < groups.size(); ++c) {
     const ContactForce f = view(integ, groups[c]).f;
     rec.sample(c, integ.time(), f.R, f.tau, integ.dt(), f.state);
     for (int q : groups[c]) rec.track_real_gap(c, integ.time(), surfaces[q].gap(integ.U()).gap);
     track_turn(integ, groups[c], surfaces, turn_max[c]);
+    in_contact.track(c, groups[c], integ.forces(), integ.U(), integ.time());
   }
   if (p % scene.time.output_every != 0 && p != N) return;
   HistoryRow row = make_row(integ);
@@ -261,8 +263,9 @@ SimulationResult solve(const Scene& scene_in, const std::filesystem::path& field
   Progress progress("paper", scene.time.end);
   progress.set_dofs_per_update(model.size());
   std::vector<double> turn_max(scene.contacts.size(), 0.0);
+  GapInContact in_contact(model, scene, integ.pairs(), options.surface);
   for (long p = 0;; ++p) {
-    record_step(integ, p, N, scene, cs.dt, surfaces, rec, fields ? &*fields : nullptr, turn_max);
+    record_step(integ, p, N, scene, cs.dt, surfaces, rec, fields ? &*fields : nullptr, turn_max, in_contact);
     if (p == N) break;
     integ.step();
     progress.update(integ.time());
@@ -284,6 +287,7 @@ SimulationResult solve(const Scene& scene_in, const std::filesystem::path& field
     if (const std::string w = turn_warning(scene, c, turn_max[c]); !w.empty())
       result.extra["warnings"].push_back(w);
   }
+  in_contact.report(scene, result);
   for (std::size_t c = 0; c < scene.contacts.size(); ++c) {
     result.contacts[c].friction = scene.contacts[c].friction;  // as applied
     result.contacts[c].extra["contact_search"] =

@@ -3,6 +3,8 @@
 #include <array>
 #include <cstdint>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <vector>
 
 namespace beamimpact {
@@ -64,6 +66,13 @@ std::string sha256_hex(std::string_view data) {
     out += buf;
   }
   return out;
+}
+
+std::string file_sha256(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return "";
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return in.bad() ? "" : sha256_hex(bytes);
 }
 
 }  // namespace beamimpact

@@ -17,13 +17,14 @@ namespace {
 struct StudyArgs {
   std::string file, out;
   bool keep_runs = false;
+  bool fresh = false;
 };
 
 void study_command(const StudyArgs& a) {
   remove_stale_outputs(a.out, {"study.csv", "study.json", "study.md", "timing.csv", "timing.json"});
   study::Study s = study::Study::load(a.file);
   s.keep_runs = s.keep_runs || a.keep_runs;
-  const auto r = study::execute_study(s, a.out);
+  const auto r = study::execute_study(s, a.out, a.fresh);
   if (!r) return;  // an MPI worker rank: rank 0 writes the table
   const std::string command =
       fmt::format("beamimpact study {} --out {}{}", a.file, a.out, a.keep_runs ? " --keep-runs" : "");
@@ -46,6 +47,9 @@ void add_command_study(CLI::App& app) {
   c->add_option("STUDY", a->file, "Study file (TOML, verification/studies/)")->required();
   c->add_option("--out", a->out, "Output directory (study.csv, study.json, study.md, timing.*)")->required();
   c->add_flag("--keep-runs", a->keep_runs, "Keep every run's history.csv and summary.json under OUT/runs");
+  c->add_flag("--fresh", a->fresh,
+              "Run every point again (default: the points an interrupted study finished, recorded in "
+              "OUT/points with the same version, study and scene files, are taken as they are)");
   add_methods_option(c);
   c->callback([a] { study_command(*a); });
 }

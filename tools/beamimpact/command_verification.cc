@@ -40,6 +40,7 @@ struct CompareArgs {
 struct VerifyArgs {
   std::string matrix = "verification/matrix.toml", out, tier = "quick", only;
   int jobs = 1;
+  bool fresh = false;
 };
 
 struct SweepArgs {
@@ -75,6 +76,7 @@ void verify(const VerifyArgs& a) {
   o.tier = a.tier;
   o.only = a.only;
   o.jobs = a.jobs;
+  o.fresh = a.fresh;
   o.executor = study::distributed_jobs;
   o.quiet = study::World::rank() != 0;
   if (study::World::size() > 1) o.executor_note = fmt::format(", {} MPI ranks", study::World::size());
@@ -192,6 +194,9 @@ void add_verification_commands(CLI::App& app) {
       ->capture_default_str();
   v->add_option("--jobs", va->jobs, "Runs in parallel")->capture_default_str();
   v->add_option("--only", va->only, "Only cases whose name contains this text (e.g. s1_central)");
+  v->add_flag("--fresh", va->fresh,
+              "Run everything again (default: the runs an interrupted verify finished in OUT/runs, with the "
+              "same version, scene and settings, are taken as they are)");
   add_methods_option(v);
   v->callback([va] { verify(*va); });
 

@@ -3,7 +3,16 @@
 // exact comparison of the parsed values is a comparison to the last bit). Only timing fields,
 // the start time, the command line and the output directory may differ. Registered when the
 // build has MPI. As root, OpenMPI needs OMPI_ALLOW_RUN_AS_ROOT(_CONFIRM), set here.
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <thread>
+#include <vector>
 
 #include <cstdlib>
 #include <filesystem>
@@ -13,6 +22,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+
+extern char** environ;
 
 namespace beamimpact {
 namespace {
@@ -46,6 +57,8 @@ class MpiIdentity : public ::testing::Test {
       EXPECT_NE(read(log).find("rank 1"), std::string::npos) << "rank 1 did no work:\n" << read(log);
     }
   }
+
+ public:
   static std::string read(const fs::path& p) {
     std::ifstream in(p);
     std::stringstream ss;
@@ -101,17 +114,25 @@ TEST_F(MpiIdentity, SweepGivesTheSameNorms) {
   EXPECT_EQ(a, stripped(tmp_ / "mpi/sweep.json", tmp_ / "mpi"));
 }
 
-TEST_F(MpiIdentity, StudyTablesAreByteIdentical) {
-  const fs::path study = tmp_ / "s.toml";
+/// A 12-point study of S4 (time.end in s: 0.03 takes a few hundredths of a second a point).
+fs::path write_study(const fs::path& dir, double end) {
+  const fs::path study = dir / "s.toml";
   std::ofstream(study)
       << "name = \"mpi\"\nscene = \"" << BEAMIMPACT_SOURCE
       << "/verification/scenes/paper/s4_oblique_90.toml\"\nmethods = [\"paper\"]\n"
          "reference = { method = \"paper\", set = [\"time.fraction=0.125\"] }\n"
-         "set = [\"model.kinematics=linear\", \"time.end=0.03\", \"bodies.A.end=[5.0, 0.001]\"]\n"
+         "set = [\"model.kinematics=linear\", \"time.end="
+      << end
+      << "\", \"bodies.A.end=[5.0, 0.001]\"]\n"
          "[design]\nkind = \"lhs\"\nsamples = 12\n"
          "[[parameter]]\nname = \"alpha0\"\nrake = \"A\"\nfrom = 5.0\nto = 90.0\n"
          "[[parameter]]\nname = \"mu\"\nkey = \"contacts[0].friction\"\nfrom = 0.0\nto = 1.0\n"
          "[[parameter]]\nname = \"mesh\"\nmesh = true\nvalues = [1, 2]\n";
+  return study;
+}
+
+TEST_F(MpiIdentity, StudyTablesAreByteIdentical) {
+  const fs::path study = write_study(tmp_, 0.03);
   run("study " + study.string() + " --out OUT", tmp_ / "serial", false);
   run("study " + study.string() + " --out OUT", tmp_ / "mpi", true);
   for (const char* f : {"study.csv", "study.json"}) {
@@ -119,6 +140,68 @@ TEST_F(MpiIdentity, StudyTablesAreByteIdentical) {
     ASSERT_FALSE(a.empty()) << f;
     EXPECT_EQ(a, read(tmp_ / "mpi" / f)) << f;
   }
+}
+
+/// The process of MPI rank `rank` whose command line mentions `text` (0 when there is none).
+pid_t rank_process(int rank, const std::string& text) {
+  const std::string tag = fmt::format("OMPI_COMM_WORLD_RANK={}", rank);
+  for (const auto& e : fs::directory_iterator("/proc")) {
+    const std::string name = e.path().filename();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::string env = MpiIdentity::read(e.path() / "environ");
+    std::replace(env.begin(), env.end(), '\0', '\n');
+    if (MpiIdentity::read(e.path() / "cmdline").find(text) != std::string::npos &&
+        (env + "\n").find("\n" + tag + "\n") != std::string::npos)
+      return std::stoi(name);
+  }
+  return 0;
+}
+
+// A worker rank killed (SIGKILL) once two points are recorded ends the MPI job (rank 0 goes on
+// recording until mpirun ends it); the same command again takes the recorded points and runs the
+// rest, and the tables equal the serial run's byte for byte (time.end 1 s: a few tenths of a
+// second a point, so the job ends before the last point).
+TEST_F(MpiIdentity, StudyWithAKilledRankResumesToTheSameTables) {
+  const fs::path study = write_study(tmp_, 1.0);
+  run("study " + study.string() + " --out OUT", tmp_ / "serial", false);
+  const fs::path out = tmp_ / "mpi";
+  std::vector<std::string> args = {MPIEXEC, "--oversubscribe", "-n",    "2",         BEAMIMPACT_EXE,
+                                   "study", study.string(),    "--out", out.string()};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, 1, (tmp_ / "killed.log").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&fa, 1, 2);
+  posix_spawn_file_actions_addchdir_np(&fa, BEAMIMPACT_SOURCE);
+  pid_t mpirun = 0;
+  ASSERT_EQ(posix_spawn(&mpirun, argv[0], &fa, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&fa);
+  auto recorded = [&] {
+    std::error_code ec;
+    int n = 0;
+    for (const auto& e : fs::directory_iterator(out / "points", ec)) n += e.path().extension() == ".json";
+    return n;
+  };
+  int status = 0;
+  pid_t worker = 0;
+  while (recorded() < 2 || (worker = rank_process(1, out.string())) == 0) {  // polled, not timed
+    ASSERT_EQ(waitpid(mpirun, &status, WNOHANG), 0) << "the study ended first:\n"
+                                                    << read(tmp_ / "killed.log");
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  kill(worker, SIGKILL);
+  ASSERT_EQ(waitpid(mpirun, &status, 0), mpirun);
+  EXPECT_FALSE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read(tmp_ / "killed.log");
+  ASSERT_FALSE(fs::exists(out / "study.csv")) << read(tmp_ / "killed.log");
+  const int finished = recorded();
+  ASSERT_LT(finished, 12);
+  run("study " + study.string() + " --out OUT", out, true);
+  EXPECT_NE(read(out.string() + ".log").find(fmt::format("resumed: {} of 12 points", finished)),
+            std::string::npos)
+      << read(out.string() + ".log");
+  for (const char* f : {"study.csv", "study.json"}) EXPECT_EQ(read(out / f), read(tmp_ / "serial" / f)) << f;
 }
 
 }  // namespace

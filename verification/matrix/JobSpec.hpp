@@ -35,6 +35,9 @@ struct JobSpec {
 struct Launcher {
   std::filesystem::path exe;                         ///< the beamimpact executable
   std::vector<std::filesystem::path> methods_files;  ///< passed on as --methods FILE
+  /// @brief Take a run recorded as finished in its directory with the same input instead of
+  /// running it again (finished_runs.hpp: resuming an interrupted verify).
+  bool reuse_finished = false;
 
   /// @brief Reason the spec cannot run here ("" when it can): a method not in the registry, or
   /// an external program's check failing (api/registry.hpp unavailable()).

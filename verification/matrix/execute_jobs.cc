@@ -12,18 +12,17 @@
 #include <api/child_process.hpp>
 #include <api/external_method.hpp>
 #include <api/registry.hpp>
+#include <verification/matrix/finished_runs.hpp>
 #include <verification/matrix/interruption.hpp>
 
 namespace beamimpact::verification {
 
-JobOutcome execute_job(const JobSpec& spec, const std::filesystem::path& dir, const Launcher& launcher,
-                       const std::string& why, double timeout) {
+namespace {
+
+/// execute_job without the record.
+JobOutcome run_job(const JobSpec& spec, const std::filesystem::path& dir, const Launcher& launcher,
+                   double timeout) {
   JobOutcome o{spec, dir, JobOutcome::Status::kFailed, {}, 0.0, 0.0, 0, 0.0, nullptr};
-  if (!why.empty()) {
-    o.status = JobOutcome::Status::kSkipped;
-    o.message = why;
-    return o;
-  }
   std::error_code ec;
   std::filesystem::remove_all(dir, ec);                    // never mistake an old result for this run's
   if (std::filesystem::create_directories(dir, ec); ec) {  // in a worker thread: never throw
@@ -75,6 +74,47 @@ JobOutcome execute_job(const JobSpec& spec, const std::filesystem::path& dir, co
   return o;
 }
 
+}  // namespace
+
+JobOutcome execute_job(const JobSpec& spec, const std::filesystem::path& dir, const Launcher& launcher,
+                       const std::string& why, double timeout) {
+  if (!why.empty())
+    return JobOutcome{spec, dir, JobOutcome::Status::kSkipped, why, 0.0, 0.0, 0, 0.0, nullptr};
+  if (launcher.reuse_finished)
+    if (auto earlier = recorded_run(spec, dir)) return *earlier;
+  const nlohmann::json input = run_input(spec);  // what the run is made from, before it starts
+  JobOutcome o = run_job(spec, dir, launcher, timeout);
+  record_run(o, input);
+  return o;
+}
+
+nlohmann::json outcome_json(const JobOutcome& o) {
+  return {{"status", static_cast<int>(o.status)},
+          {"message", o.message},
+          {"process_seconds", o.process_seconds},
+          {"solver_seconds", o.solver_seconds},
+          {"steps", o.steps},
+          {"dt", o.dt},
+          {"resumed", o.resumed}};
+}
+
+JobOutcome outcome_from_json(const JobSpec& spec, const std::filesystem::path& dir, const nlohmann::json& j) {
+  const int status = j.at("status").get<int>();
+  if (status < 0 || status > static_cast<int>(JobOutcome::Status::kNotApplicable))
+    throw std::runtime_error("unknown run status " + std::to_string(status));
+  JobOutcome o{spec,
+               dir,
+               static_cast<JobOutcome::Status>(status),
+               j.at("message").get<std::string>(),
+               j.at("process_seconds").get<double>(),
+               j.at("solver_seconds").get<double>(),
+               j.at("steps").get<long>(),
+               j.at("dt").get<double>(),
+               nullptr};
+  o.resumed = j.value("resumed", false);
+  return o;
+}
+
 std::shared_ptr<const StoredRun> stored_run(const JobOutcome& o) {
   return o.run ? o.run : std::make_shared<const StoredRun>(StoredRun::read(o.dir));
 }
@@ -94,8 +134,9 @@ std::vector<JobSpec> schedule_order(const std::vector<JobSpec>& specs) {
 }
 
 std::string progress_line(std::size_t done, std::size_t total, const JobOutcome& o) {
-  return fmt::format("[{}/{}] {}: {}{} ({:.2f} s)\n", done, total, o.spec.label(), status_name(o.status),
-                     o.message.empty() ? "" : ": " + o.message, o.process_seconds);
+  return fmt::format("[{}/{}] {}: {}{} ({:.2f} s{})\n", done, total, o.spec.label(), status_name(o.status),
+                     o.message.empty() ? "" : ": " + o.message, o.process_seconds,
+                     o.resumed ? ", finished earlier" : "");
 }
 
 const char* status_name(JobOutcome::Status s) {

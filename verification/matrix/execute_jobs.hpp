@@ -1,5 +1,5 @@
 #pragma once
-/// @file run_all.hpp
+/// @file execute_jobs.hpp
 /// @brief Runs a set of independent runs in parallel worker threads, each as its own process,
 /// with one progress line per finished run on stderr.
 
@@ -10,6 +10,8 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include <verification/compare/StoredRun.hpp>
 #include <verification/matrix/JobSpec.hpp>
@@ -33,6 +35,7 @@ struct JobOutcome {
   /// @brief The finished run (history.csv and summary.json), read once by execute_job; null when
   /// not ok or when the outcome came from another MPI rank (stored_run() reads it then).
   std::shared_ptr<const StoredRun> run;
+  bool resumed = false;  ///< finished by an earlier, interrupted command (its times are that run's)
 };
 
 /// @brief The outcome's run: JobOutcome::run, or read from its directory when the outcome has none.
@@ -57,10 +60,19 @@ using JobExecutor = std::function<std::optional<std::map<std::string, JobOutcome
 /// steps, so that the tail of the queue is short.
 std::vector<JobSpec> schedule_order(const std::vector<JobSpec>& specs);
 
-/// @brief Runs one spec into dir (emptied first) as its own process and reads its summary.json.
+/// @brief Runs one spec into dir (emptied first) as its own process and reads its summary.json;
+/// an ok or not-applicable run is then recorded as finished (finished_runs.hpp). With
+/// launcher.reuse_finished, a run recorded in dir with the same input is taken instead.
 /// @param why_not non-empty: the run is skipped with this reason (unavailable method, interrupted)
 JobOutcome execute_job(const JobSpec& spec, const std::filesystem::path& dir, const Launcher& launcher,
                        const std::string& why_not, double timeout_seconds);
+
+/// @brief An outcome as JSON, without its spec, directory and run (between MPI ranks, in a
+/// finished run's record): status, message, process_seconds, solver_seconds, steps, dt.
+nlohmann::json outcome_json(const JobOutcome& o);
+
+/// @brief The inverse of outcome_json(); the run is not read (stored_run() reads it).
+JobOutcome outcome_from_json(const JobSpec& spec, const std::filesystem::path& dir, const nlohmann::json& j);
 
 /// @brief The progress line of a finished run ("[3/10] s1_central paper dt=0.01: ok (0.21 s)").
 std::string progress_line(std::size_t done, std::size_t total, const JobOutcome& o);

@@ -11,6 +11,7 @@
 #include <solver/util/InputError.hpp>
 #include <solver/util/write_file_atomic.hpp>
 #include <verification/matrix/VerificationMatrix.hpp>
+#include <verification/matrix/finished_runs.hpp>
 #include <verification/matrix/interruption.hpp>
 
 namespace beamimpact::verification {
@@ -74,12 +75,17 @@ std::optional<VerifyResult> verify(const VerifyOptions& o, const std::filesystem
   Launcher launcher;
   launcher.exe = exe;
   launcher.methods_files = loaded_methods_files();  // each run sees the same registry
+  launcher.reuse_finished = !o.fresh;
   std::filesystem::create_directories(o.out);
-  if (!o.quiet)
+  if (!o.quiet) {
     fmt::print(stderr,
                "verify: {} case(s), {} convergence ladder(s), {} check(s), {} run(s), tier {}, {} job(s){}\n",
                s.cases.size(), s.ladders.size(), s.checks.size(), s.specs.size(), o.tier, o.jobs,
                o.executor_note);
+    if (const std::size_t n = o.fresh ? 0 : count_recorded(s.specs, o.out / "runs"))
+      fmt::print(stderr, "resumed: {} of {} runs finished earlier (--fresh runs them all again)\n", n,
+                 s.specs.size());
+  }
   const auto ran = o.executor
                        ? o.executor(s.specs, o.out / "runs", launcher, o.jobs, m.timeout)
                        : std::optional(execute_jobs(s.specs, o.out / "runs", launcher, o.jobs, m.timeout));

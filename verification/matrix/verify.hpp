@@ -26,6 +26,9 @@ struct VerifyOptions {
   JobExecutor executor;        ///< where the runs go (empty: execute_jobs, threads of this process)
   std::string executor_note;   ///< appended to the plan line on stderr (", 2 MPI ranks")
   bool quiet = false;          ///< no plan line (an MPI worker rank)
+  /// @brief Run everything again; otherwise a run recorded as finished under out/runs with the
+  /// same input (an interrupted verify's) is taken as it is (finished_runs.hpp).
+  bool fresh = false;
 };
 
 /// @brief A verification run: how it was made, every item's gates, and the verdict.
@@ -37,8 +40,9 @@ struct VerifyResult {
 };
 
 /// @brief Checks the options (InputError naming the option), loads the matrix, runs the selected
-/// items' runs into out/runs/ and evaluates them. Returns nullopt on an MPI rank other than 0
-/// (see JobExecutor). An interruption (interruption()) leaves a result marked incomplete.
+/// items' runs into out/runs/ (those finished earlier taken, unless o.fresh) and evaluates them. Returns
+/// nullopt on an MPI rank other than 0 (see JobExecutor). An interruption (interruption()) leaves a result
+/// marked incomplete.
 /// @param exe the beamimpact executable the runs start (with --methods for each methods file read)
 std::optional<VerifyResult> verify(const VerifyOptions& o, const std::filesystem::path& exe);
 

@@ -27,26 +27,14 @@ std::optional<std::map<std::string, JobOutcome>> distributed_jobs(
         const auto& s = order[i];
         const std::string why =
             verification::interruption() ? "not started: interrupted" : launcher.unavailable(s);
-        const JobOutcome o = verification::execute_job(s, out_dir / s.key(), launcher, why, timeout_seconds);
-        return nlohmann::json{{"status", static_cast<int>(o.status)},
-                              {"message", o.message},
-                              {"process_seconds", o.process_seconds},
-                              {"solver_seconds", o.solver_seconds},
-                              {"steps", o.steps},
-                              {"dt", o.dt}}
+        return verification::outcome_json(
+                   verification::execute_job(s, out_dir / s.key(), launcher, why, timeout_seconds))
             .dump();
       },
       [&](std::size_t i, const std::string& payload, int rank) {
-        const auto j = nlohmann::json::parse(payload);
-        JobOutcome o{order[i],
-                     out_dir / order[i].key(),
-                     static_cast<JobOutcome::Status>(j.at("status").get<int>()),
-                     j.at("message").get<std::string>(),
-                     j.at("process_seconds").get<double>(),
-                     j.at("solver_seconds").get<double>(),
-                     j.at("steps").get<long>(),
-                     j.at("dt").get<double>(),
-                     nullptr};  // the run stays on disk: evaluate reads it (stored_run)
+        // The run stays on disk: evaluate reads it (stored_run).
+        JobOutcome o = verification::outcome_from_json(order[i], out_dir / order[i].key(),
+                                                       nlohmann::json::parse(payload));
         std::string line = verification::progress_line(++done, order.size(), o);
         line.insert(line.size() - 1, fmt::format(" rank {}", rank));
         fmt::print(stderr, "{}", line);

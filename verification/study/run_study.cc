@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <utility>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -10,6 +11,7 @@
 #include <solver/util/Progress.hpp>
 #include <solver/util/write_file_atomic.hpp>
 #include <verification/matrix/Table.hpp>
+#include <verification/study/finished_points.hpp>
 #include <verification/study/task_farm.hpp>
 
 namespace beamimpact::study {
@@ -43,25 +45,52 @@ bool broke(const Study& s, const CaseResult& c) {
   return false;
 }
 
+/// Rank 0, before the points are handed out: the points finished earlier (recorded with the same
+/// input) go into r.results with cost -1 (not run again), the others get their cost. Returns how
+/// many were finished.
+std::size_t take_finished(const Study& s, const fs::path& out, const nlohmann::json& base, bool fresh,
+                          StudyResult& r, std::vector<double>& cost) {
+  prepare_point_records(out, fresh);
+  std::size_t reused = 0;
+  for (std::size_t i = 0; i < r.points.size(); ++i) {
+    if (auto p = fresh ? std::nullopt : recorded_point(out, base, i, r.points[i])) {
+      r.results[i] = std::move(*p);
+      cost[i] = -1.0;
+      ++reused;
+    } else {
+      cost[i] = point_cost(s, r.points[i]);
+    }
+  }
+  return reused;
+}
+
 }  // namespace
 
-std::optional<StudyResult> execute_study(const Study& s, const fs::path& out) {
+std::optional<StudyResult> execute_study(const Study& s, const fs::path& out, bool fresh) {
   const auto start = std::chrono::steady_clock::now();
   StudyResult r;
   r.points = design_points(s);
   r.ranks = World::size();
   const std::size_t n = r.points.size();
+  r.results.resize(n);
   std::vector<double> cost(n);
+  std::size_t finished = 0;  // points done, those of an earlier, interrupted study included
+  nlohmann::json base;
   if (World::rank() == 0) {
-    for (std::size_t i = 0; i < n; ++i) cost[i] = point_cost(s, r.points[i]);
+    base = study_input(s);
+    finished = r.resumed = take_finished(s, out, base, fresh, r, cost);
     fmt::print(stderr, "study {}: {} point(s) x {} method(s), reference {}, {} rank(s)\n", s.name, n,
                s.methods.size(), s.reference.method, r.ranks);
+    if (finished > 0)
+      fmt::print(stderr,
+                 "resumed: {} of {} points finished earlier ({}/points; --fresh runs them all again)\n",
+                 finished, n, out.string());
   }
   const fs::path runs = out / "runs";
   r.results.resize(n);
   // One line per point instead of the methods' own progress; the caller's setting comes back.
   const Progress::Silence quiet;
-  std::size_t finished = 0;
+  bool warned = false;
   const bool root = farm(
       cost, [&](std::size_t i) { return run_point(s, r.points[i], i, runs).to_json().dump(); },
       [&](std::size_t i, const std::string& payload, int rank) {
@@ -77,6 +106,12 @@ std::optional<StudyResult> execute_study(const Study& s, const fs::path& out) {
         }
         fmt::print(stderr, "[{}/{}] #{} {}:{} ({:.2f} s, rank {})\n", ++finished, n, i,
                    point_label(s, r.points[i]), line, secs, rank);
+        try {
+          record_point(out, base, i, r.points[i], p);
+        } catch (const std::exception& e) {  // the study goes on; only its resumption is lost
+          if (!std::exchange(warned, true))
+            fmt::print(stderr, "warning: {}: an interrupted study would run such points again\n", e.what());
+        }
         r.results[i] = std::move(p);
       },
       [&](std::size_t i) { return fmt::format("study point #{} ({})", i, point_label(s, r.points[i])); });
@@ -209,12 +244,11 @@ StudyCounts write_study(const Study& s, const StudyResult& r, const fs::path& ou
   StudyTables t = empty_tables(s);
   for (std::size_t i = 0; i < r.points.size(); ++i)
     for (const auto& c : r.results[i].cases) add_case(s, i, r.points[i], r.results[i], c, t);
-  const double rate = r.wall_seconds > 0 ? static_cast<double>(t.n_cases) / r.wall_seconds : 0.0;
-  const nlohmann::json timing{{"ranks", r.ranks},
-                              {"points", r.points.size()},
-                              {"cases", t.n_cases},
-                              {"wall_seconds", r.wall_seconds},
-                              {"cases_per_second", rate}};
+  const std::size_t run_now = t.n_cases - r.resumed * s.methods.size();
+  const double rate = r.wall_seconds > 0 ? static_cast<double>(run_now) / r.wall_seconds : 0.0;
+  const nlohmann::json timing{
+      {"ranks", r.ranks},   {"points", r.points.size()},      {"points_finished_earlier", r.resumed},
+      {"cases", t.n_cases}, {"wall_seconds", r.wall_seconds}, {"cases_per_second", rate}};
   write_file_atomic(out / "study.csv", t.csv.csv());
   write_file_atomic(out / "study.json", study_json(s, version, t.cases).dump(1) + "\n");
   write_file_atomic(out / "study.md", study_markdown(s, r, t, command, version));

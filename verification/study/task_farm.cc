@@ -13,7 +13,6 @@
 #include <cstring>
 #include <deque>
 #include <mutex>
-#include <numeric>
 #include <thread>
 
 #ifdef BEAMIMPACT_HAVE_MPI
@@ -197,8 +196,9 @@ void World::abort(int code) {
 }
 
 std::vector<std::size_t> longest_first(const std::vector<double>& cost) {
-  std::vector<std::size_t> order(cost.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < cost.size(); ++i)
+    if (!(cost[i] < 0.0)) order.push_back(i);
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
   return order;

@@ -29,11 +29,12 @@ class World {
   [[noreturn]] static void abort(int code);
 };
 
-/// @brief Runs tasks 0..cost.size()-1, each exactly once, the most costly first.
+/// @brief Runs tasks 0..cost.size()-1, each exactly once, the most costly first; a task of
+/// negative cost is not run (done elsewhere: a study point finished earlier).
 /// One rank: in this thread, in that order. N ranks: rank 0 is the master (its queue hands the
 /// next task to whichever worker asks) and also computes in a second thread; ranks 1..N-1 ask,
 /// compute and send results back. If a rank dies (a signal), it prints which task it was running.
-/// @param cost work estimate of each task (only the order matters)
+/// @param cost work estimate of each task (only the order matters; negative: not run)
 /// @param work computes task i and returns its result (called on any rank; must not throw)
 /// @param done called on rank 0, in its main thread, for each result as it arrives, with the
 ///        rank that computed it
@@ -43,7 +44,8 @@ bool farm(const std::vector<double>& cost, const std::function<std::string(std::
           const std::function<void(std::size_t, const std::string&, int)>& done,
           const std::function<std::string(std::size_t)>& label = {});
 
-/// @brief The order farm() hands tasks out: by cost, largest first, ties by index.
+/// @brief The order farm() hands tasks out: by cost, largest first, ties by index; tasks of
+/// negative cost left out.
 std::vector<std::size_t> longest_first(const std::vector<double>& cost);
 
 }  // namespace beamimpact::study

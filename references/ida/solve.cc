@@ -292,6 +292,55 @@ double integrate(const Scene& scene, const IdaOptions& opt, double dt, PenaltyId
   return h * static_cast<double>(every);
 }
 
+/// The output grid's step: the scene's dt ("auto": fraction x the critical step of M^-1 K, the
+/// same grid as the paper's run, whose critical step is written into `r`).
+double output_grid_step(const Scene& scene, const Model& model, SimulationResult& r) {
+  if (scene.time.dt) return *scene.time.dt;
+  r.critical_dt = critical_step(model).dt;
+  return scene.time.fraction * r.critical_dt;
+}
+
+/// The summary's "ida" block: settings, IDA's counters and each contact's penalty law.
+nlohmann::json ida_extra(const IdaOptions& opt, const IdaSettings& settings, int n, const IdaCounters& c,
+                         double output_step, double dissipated, const nlohmann::json& contacts) {
+  return {{"rtol", opt.rtol},
+          {"atol", opt.atol},
+          {"linear_solver", settings.linear_solver == IdaLinearSolver::kDense ? "dense" : "klu"},
+          {"unknowns", 2 * n},
+          {"steps", c.steps},
+          {"residual_evals", c.residual_evals},
+          {"jacobian_evals", c.jacobian_evals},
+          {"nonlinear_iters", c.nonlinear_iters},
+          {"error_test_fails", c.error_test_fails},
+          {"nonlinear_conv_fails", c.nonlinear_conv_fails},
+          {"root_evals", c.root_evals},
+          {"events", c.events},
+          {"klu_pattern_changes", c.klu_pattern_changes},
+          {"warnings", c.warnings},
+          {"output_step", output_step},
+          {"dissipated", dissipated},
+          {"contacts", contacts}};
+}
+
+/// Each contact's intervals from the located events and impulses from the quadratures; peaks and
+/// stick/slip counts stay the recorder's (from the accepted steps).
+void summarize_contacts(const PenaltyIda& ida, const PenaltyContacts& contacts,
+                        const std::vector<ImpulseTrace>& traces, double merge_gap, SimulationResult& result) {
+  for (int i = 0; i < static_cast<int>(result.contacts.size()); ++i) {
+    ContactSummary& s = result.contacts[i];
+    const double step_sum = s.impulse_normal;
+    nlohmann::json events = nlohmann::json::array();
+    s.intervals = event_intervals(ida.events(), i, merge_gap, ida.t(), events);
+    s.impulse_normal = ida.impulse_normal(i);
+    s.interval_impulses = interval_impulses(s.intervals, traces[i], ida.t());
+    s.impulse_tangential = ida.impulse_tangential(i);
+    s.extra = contacts.extra[i];
+    s.extra["events"] = events;
+    s.extra["impulse_normal_step_sum"] = step_sum;
+    s.friction = contacts.laws[i].mu;  // as applied
+  }
+}
+
 }  // namespace
 
 SimulationResult solve(const Scene& scene) {
@@ -302,12 +351,7 @@ SimulationResult solve(const Scene& scene) {
   const Model model(scene, effects.bending);
   const int n = model.size();
 
-  // Output grid: the scene's dt ("auto": fraction x the critical step of M^-1 K).
-  double dt = scene.time.dt.value_or(0.0);
-  if (!scene.time.dt) {
-    r.critical_dt = critical_step(model).dt;  // the same grid as the paper's run
-    dt = scene.time.fraction * r.critical_dt;
-  }
+  const double dt = output_grid_step(scene, model, r);
   double v_scale = 0.0;
   for (const Body& b : scene.bodies) v_scale = std::max(v_scale, std::hypot(b.velocity[0], b.velocity[1]));
   const IdaOptions opt = read_ida_options(scene, dt, v_scale, &r.assumed);
@@ -345,42 +389,12 @@ SimulationResult solve(const Scene& scene) {
   const IdaCounters c = ida.counters();
   r.steps = c.steps;
   r.dofs = n;
-  r.extra["ida"] = {{"rtol", opt.rtol},
-                    {"atol", opt.atol},
-                    {"linear_solver", settings.linear_solver == IdaLinearSolver::kDense ? "dense" : "klu"},
-                    {"unknowns", 2 * n},
-                    {"steps", c.steps},
-                    {"residual_evals", c.residual_evals},
-                    {"jacobian_evals", c.jacobian_evals},
-                    {"nonlinear_iters", c.nonlinear_iters},
-                    {"error_test_fails", c.error_test_fails},
-                    {"nonlinear_conv_fails", c.nonlinear_conv_fails},
-                    {"root_evals", c.root_evals},
-                    {"events", c.events},
-                    {"klu_pattern_changes", c.klu_pattern_changes},
-                    {"warnings", c.warnings},
-                    {"output_step", output_step},
-                    {"dissipated", ida.dissipated()},
-                    {"contacts", contacts.extra}};
+  r.extra["ida"] = ida_extra(opt, settings, n, c, output_step, ida.dissipated(), contacts.extra);
 
-  // Intervals from the located events, impulses from the quadratures; peaks and stick/slip
-  // counts from the accepted steps (the recorder's statistics).
   std::vector<ContactKind> kinds;
   for (const auto& g : contacts.geometry) kinds.push_back(g->kind());
   SimulationResult result = rec.finish(kinds);
-  for (int i = 0; i < static_cast<int>(result.contacts.size()); ++i) {
-    ContactSummary& s = result.contacts[i];
-    const double step_sum = s.impulse_normal;
-    nlohmann::json events = nlohmann::json::array();
-    s.intervals = event_intervals(ida.events(), i, opt.merge_gap, ida.t(), events);
-    s.impulse_normal = ida.impulse_normal(i);
-    s.interval_impulses = interval_impulses(s.intervals, traces[i], ida.t());
-    s.impulse_tangential = ida.impulse_tangential(i);
-    s.extra = contacts.extra[i];
-    s.extra["events"] = events;
-    s.extra["impulse_normal_step_sum"] = step_sum;
-    s.friction = contacts.laws[i].mu;  // as applied
-  }
+  summarize_contacts(ida, contacts, traces, opt.merge_gap, result);
   return result;
 }
 

@@ -102,6 +102,15 @@ class ColumnBuilder {
 
 }  // namespace
 
+/// The assembly's scratch: K and M built column by column, the summed lumped masses, and each
+/// group's nonzero entries.
+struct Model::Assembly {
+  explicit Assembly(int n) : kb(n), mb(n), mdiag(Eigen::VectorXd::Zero(n)) {}
+  ColumnBuilder kb, mb;
+  Eigen::VectorXd mdiag;
+  std::vector<GroupEntries> entries;
+};
+
 Model::Model(const Scene& scene, bool bending)
     : dofs_per_node_(bending ? 3 : 1),
       lumped_(scene.model.mass == MassKind::kLumped),
@@ -111,10 +120,14 @@ Model::Model(const Scene& scene, bool bending)
   if (!bending && !scene_is_collinear(scene, &axis_))
     throw SceneError(scene.file, "effects.bending",
                      "false requires all bodies and velocities on one line; this scene is not collinear");
-  const int dpn = dofs_per_node_;
+  number_equations(scene, add_bodies(scene));
+  assemble(scene, form_groups());
+}
 
+std::vector<char> Model::add_bodies(const Scene& scene) {
   // Nodes and fixed DOFs. A rigid body's nodes have none of their own (all fixed here): they
   // follow the body's centre, whose DOFs come after every node's.
+  const int dpn = dofs_per_node_;
   std::vector<char> fixed;
   for (int b = 0; b < static_cast<int>(scene.bodies.size()); ++b) {
     const Body& body = scene.bodies[b];
@@ -139,7 +152,12 @@ Model::Model(const Scene& scene, bool bending)
                            body.inertia, body.rho, le, d[0], d[1], body.rigid, timoshenko, phi});
   }
   if (!frame_.empty()) frame_.resize(node_pos_.size(), -1);
+  return fixed;
+}
+
+void Model::number_equations(const Scene& scene, std::vector<char> fixed) {
   // Rigid bodies' centre DOFs: immovable when supported (the scene allows only a full fix).
+  const int dpn = dofs_per_node_;
   const std::size_t node_dofs = fixed.size();
   std::vector<int> rigid_first(scene.bodies.size(), -1);
   for (int b = 0; b < static_cast<int>(scene.bodies.size()); ++b)
@@ -160,15 +178,9 @@ Model::Model(const Scene& scene, bool bending)
       for (int c = 0; c < dpn; ++c) rigid_eq_[b][c] = dof_to_eq_[rigid_first[b] + c];
     }
   dof_to_eq_.resize(node_dofs);  // node DOFs only: equation() never sees the centres' slots
-  const int n = size();
+}
 
-  // Element matrices in global axes, scattered to the free equations. Two passes over the
-  // elements: the first counts the entries of K and M in each column and sums the momentum
-  // covectors and lumped masses, the second places the entries.
-  ColumnBuilder kb(n), mb(n);
-  Eigen::VectorXd mdiag = Eigen::VectorXd::Zero(n);
-  momentum_.assign(num_bodies(), {Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)});
-  const int ne = 2 * dpn;
+std::vector<int> Model::form_groups() {
   // Consecutive elements with equal matrices form a group; each group's matrices are formed once.
   group_.assign(elements_.size(), -1);
   std::vector<int> group_first;  // the first element of each group
@@ -185,10 +197,14 @@ Model::Model(const Scene& scene, bool bending)
     }
     group_[e] = static_cast<int>(groups_.size()) - 1;
   }
-  std::vector<GroupEntries> entries;
+  return group_first;
+}
+
+void Model::collect_entries(const std::vector<int>& group_first, Assembly& a) const {
+  const int dpn = dofs_per_node_, ne = 2 * dpn;
   for (std::size_t g = 0; g < groups_.size(); ++g) {
     const ElementGroup& grp = groups_[g];
-    GroupEntries& ge = entries.emplace_back();
+    GroupEntries& ge = a.entries.emplace_back();
     for (int i = 0; i < ne; ++i)
       for (int j = 0; j < ne; ++j) {
         if (grp.K(i, j) != 0.0) ge.k.push_back({i, j, grp.K(i, j)});
@@ -207,57 +223,78 @@ Model::Model(const Scene& scene, bool bending)
       for (int i = 0; i < ne; ++i) ge.mr(i, c) = m_r(i);
     }
   }
+}
+
+void Model::assemble(const Scene& scene, const std::vector<int>& group_first) {
+  // Element matrices in global axes, scattered to the free equations. Two passes over the
+  // elements: the first counts the entries of K and M in each column and sums the momentum
+  // covectors and lumped masses, the second places the entries.
+  const int n = size();
+  Assembly a(n);
+  momentum_.assign(num_bodies(), {Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)});
+  collect_entries(group_first, a);
   for (int pass = 0; pass < 2; ++pass) {
     const bool counting = pass == 0;
     if (!counting) {
-      kb.place();
-      mb.place();
+      a.kb.place();
+      a.mb.place();
     }
-    for (int b = 0; b < num_bodies(); ++b) {  // rigid bodies: m, m, m L^2 / 12 at the centre
-      if (!rigid(b)) continue;
-      const Body& body = scene.bodies[b];
-      const double m = body_mass_[b], L = body.length();
-      const double masses[3] = {m, m, m * L * L / 12.0};
-      for (int c = 0; c < dpn; ++c) {
-        const int eq = rigid_eq_[b][c];
-        if (eq < 0) continue;
-        const double mc = dpn == 3 ? masses[c] : m;
-        if (!lumped_)
-          mb.add(eq, eq, mc);
-        else if (counting)
-          mdiag(eq) += mc;
-        if (!counting) continue;
-        if (dpn == 3 && c < 2)
-          momentum_[b][c](eq) += mc;  // the centre's x or y translation
-        else if (dpn == 1)
-          for (int k = 0; k < 2; ++k) momentum_[b][k](eq) += mc * axis_[k];  // the rod axis
-      }
-    }
-    for (int e = 0; e < static_cast<int>(elements_.size()); ++e) {
-      const Element& el = elements_[e];
-      if (el.rigid) continue;  // geometry only
-      const GroupEntries& grp = entries[group_[e]];
-      const Eigen::Matrix<int, 6, 1> eq = element_equations(e);
-      if (counting)
-        for (int c = 0; c < 2; ++c)
-          for (int i = 0; i < ne; ++i)
-            if (eq(i) >= 0) momentum_[el.body][c](eq(i)) += grp.mr(i, c);
-      for (const Nonzero& z : grp.k)
-        if (eq(z.i) >= 0 && eq(z.j) >= 0) kb.add(eq(z.i), eq(z.j), z.v);
-      for (const Nonzero& z : grp.m) {
-        if (eq(z.i) < 0 || eq(z.j) < 0) continue;
-        if (!lumped_)
-          mb.add(eq(z.i), eq(z.j), z.v);
-        else if (counting)
-          mdiag(eq(z.i)) += z.v;
-      }
-    }
+    add_rigid_masses(scene, counting, a);
+    add_elements(counting, a);
     if (lumped_)  // M is the diagonal of the summed masses (final when placing)
-      for (int i = 0; i < n; ++i) mb.add(i, i, mdiag(i));
+      for (int i = 0; i < n; ++i) a.mb.add(i, i, a.mdiag(i));
   }
-  kb.finish(K_);
-  mb.finish(M_);
-  if (lumped_) m_diag_ = std::move(mdiag);
+  a.kb.finish(K_);
+  a.mb.finish(M_);
+  if (lumped_) m_diag_ = std::move(a.mdiag);
+}
+
+void Model::add_rigid_masses(const Scene& scene, bool counting, Assembly& a) {
+  // Rigid bodies: m, m, m L^2 / 12 at the centre.
+  const int dpn = dofs_per_node_;
+  for (int b = 0; b < num_bodies(); ++b) {
+    if (!rigid(b)) continue;
+    const Body& body = scene.bodies[b];
+    const double m = body_mass_[b], L = body.length();
+    const double masses[3] = {m, m, m * L * L / 12.0};
+    for (int c = 0; c < dpn; ++c) {
+      const int eq = rigid_eq_[b][c];
+      if (eq < 0) continue;
+      const double mc = dpn == 3 ? masses[c] : m;
+      if (!lumped_)
+        a.mb.add(eq, eq, mc);
+      else if (counting)
+        a.mdiag(eq) += mc;
+      if (!counting) continue;
+      if (dpn == 3 && c < 2)
+        momentum_[b][c](eq) += mc;  // the centre's x or y translation
+      else if (dpn == 1)
+        for (int k = 0; k < 2; ++k) momentum_[b][k](eq) += mc * axis_[k];  // the rod axis
+    }
+  }
+}
+
+void Model::add_elements(bool counting, Assembly& a) {
+  const int ne = 2 * dofs_per_node_;
+  for (int e = 0; e < static_cast<int>(elements_.size()); ++e) {
+    const Element& el = elements_[e];
+    if (el.rigid) continue;  // geometry only
+    const GroupEntries& grp = a.entries[group_[e]];
+    const Eigen::Matrix<int, 6, 1> eq = element_equations(e);
+    if (counting)
+      for (int c = 0; c < 2; ++c)
+        for (int i = 0; i < ne; ++i)
+          if (eq(i) >= 0) momentum_[el.body][c](eq(i)) += grp.mr(i, c);
+    for (const Nonzero& z : grp.k)
+      if (eq(z.i) >= 0 && eq(z.j) >= 0) a.kb.add(eq(z.i), eq(z.j), z.v);
+    for (const Nonzero& z : grp.m) {
+      if (eq(z.i) < 0 || eq(z.j) < 0) continue;
+      if (!lumped_)
+        a.mb.add(eq(z.i), eq(z.j), z.v);
+      else if (counting)
+        a.mdiag(eq(z.i)) += z.v;
+    }
+  }
 }
 
 bool Model::same_element_matrices(int a, int b) const {

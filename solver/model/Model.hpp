@@ -152,6 +152,19 @@ class Model {
   bool same_element_matrices(int a, int b) const;
   /// Fixes the DOFs that the supports of body b hold, setting the node axes of its rotated nodes.
   void hold_supported(const Body& body, int b, std::vector<char>& fixed);
+  /// The construction's steps, in order: nodes, elements and fixed DOFs (returned per node DOF);
+  /// equations of the free DOFs and rigid centres; element groups (returned: each group's first
+  /// element); K, M and the momentum covectors.
+  std::vector<char> add_bodies(const Scene& scene);
+  void number_equations(const Scene& scene, std::vector<char> fixed);
+  std::vector<int> form_groups();
+  struct Assembly;  ///< the assembly's scratch (Model.cc)
+  void assemble(const Scene& scene, const std::vector<int>& group_first);
+  /// Each group's nonzero entries of K_e and M_e and its M_e r for the rigid translations.
+  void collect_entries(const std::vector<int>& group_first, Assembly& a) const;
+  /// The assembly's passes (counting, then placing) over rigid bodies' masses and over elements.
+  void add_rigid_masses(const Scene& scene, bool counting, Assembly& a);
+  void add_elements(bool counting, Assembly& a);
   /// Per body: equations of its centre (x, y, theta; rods: axial), -1 when fixed, kNotRigid for
   /// an elastic body.
   std::vector<std::array<int, 3>> rigid_eq_;

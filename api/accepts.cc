@@ -9,12 +9,14 @@
 namespace beamimpact {
 namespace {
 
-/// Refuses with the method's name and where its capabilities were declared.
+/// Refuses with the method's name, what the scene should say instead and where the method's
+/// capabilities were declared.
 [[noreturn]] void refuse(const Method& m, const Scene& scene, const std::string& key, const std::string& what,
-                         const std::string& flag) {
-  throw SceneError(scene.file, key,
-                   fmt::format("not applicable: method '{}' does not take {} (accepts.{} = false, {})",
-                               m.name, what, flag, m.origin));
+                         const std::string& expected, const std::string& flag) {
+  throw SceneError(
+      scene.file, key,
+      fmt::format("not applicable: method '{}' does not take {}; expected {} (accepts.{} = false, {})",
+                  m.name, what, expected, flag, m.origin));
 }
 
 void check_tables(const Scene& scene) {
@@ -47,35 +49,44 @@ void check_accepts(const Method& m, const Scene& scene, const std::string& mesh)
   check_tables(scene);
   const Method::Accepts& a = m.accepts;
   for (const char* key : {"time.dt", "time.fraction"})
-    if (!a.dt && scene.overrides.count(key)) refuse(m, scene, key, "a time step (it picks its own)", "dt");
+    if (!a.dt && scene.overrides.count(key))
+      refuse(m, scene, key, "a time step (it picks its own)", "no --dt or " + std::string(key) + " override",
+             "dt");
   if (!mesh.empty()) {
     if (a.mesh_factor)
       (void)mesh_factor(mesh, scene.file, m.name);
     else if (m.in_process())
-      refuse(m, scene, "mesh", "a mesh", "mesh_factor");
+      refuse(m, scene, "mesh", "a mesh", "no --mesh", "mesh_factor");
     else if (!std::any_of(m.command.begin(), m.command.end(),
                           [](const std::string& x) { return x.find("{mesh}") != std::string::npos; }))
-      refuse(m, scene, "mesh", "a mesh (its command has no {mesh})", "mesh_factor");
+      refuse(m, scene, "mesh", "a mesh (its command has no {mesh})", "no --mesh", "mesh_factor");
   }
   for (std::size_t i = 0; i < scene.contacts.size(); ++i) {
     const Contact& c = scene.contacts[i];
     const std::string key = "contacts[" + std::to_string(i) + "]";
     if (!a.friction && c.friction > 0.0 && scene.effects.friction.value_or(true))
-      refuse(m, scene, key + ".friction", "friction (it does not model friction)", "friction");
-    if (!a.search && c.search) refuse(m, scene, key + ".node", "a contact search (node = \"all\")", "search");
+      refuse(m, scene, key + ".friction", "friction (it does not model friction)", "friction = 0",
+             "friction");
+    if (!a.search && c.search)
+      refuse(m, scene, key + ".node", "a contact search (node = \"all\")",
+             "one declared node: \"start\", \"end\" or a node index", "search");
     if (!a.hertz && c.law == ContactLaw::kHertz)
-      refuse(m, scene, key + ".law", "the Hertz contact law (law = \"hertz\")", "hertz");
+      refuse(m, scene, key + ".law", "the Hertz contact law (law = \"hertz\")", "\"hard\" (or no law)",
+             "hertz");
   }
   if (!a.several_contacts && scene.contacts.size() > 1)
-    refuse(m, scene, "contacts", fmt::format("{} contacts (one only)", scene.contacts.size()),
+    refuse(m, scene, "contacts", fmt::format("{} contacts", scene.contacts.size()), "one [[contacts]] table",
            "several_contacts");
   if (!a.rotation && scene.model.kinematics == Kinematics::kCorotational)
-    refuse(m, scene, "model.kinematics", "large rotation (corotational kinematics)", "rotation");
+    refuse(m, scene, "model.kinematics", "large rotation (corotational kinematics)", "\"linear\"",
+           "rotation");
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     const std::string key = "bodies[" + std::to_string(i) + "]";
-    if (!a.rigid && scene.bodies[i].rigid) refuse(m, scene, key + ".rigid", "rigid bodies", "rigid");
+    if (!a.rigid && scene.bodies[i].rigid)
+      refuse(m, scene, key + ".rigid", "rigid bodies", "rigid = false", "rigid");
     if (!a.timoshenko && scene.bodies[i].theory == BeamTheory::kTimoshenko)
-      refuse(m, scene, key + ".theory", "Timoshenko beams (theory = \"timoshenko\")", "timoshenko");
+      refuse(m, scene, key + ".theory", "Timoshenko beams (theory = \"timoshenko\")",
+             "\"euler-bernoulli\" (or no theory)", "timoshenko");
   }
 }
 

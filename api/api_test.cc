@@ -42,6 +42,38 @@ TEST(Registry, HasEveryMethodOnceWithWhatItAccepts) {
   }
 }
 
+// What a method does not take (Method::Accepts) is refused by api::run, the one place that checks
+// it for every method: the scene file, the key and what the scene should say instead are named.
+TEST(Api, RefusesWhatTheMethodDoesNotTakeNamingFileKeyAndExpected) {
+  struct Case {
+    std::string method;
+    std::vector<std::string> set;
+    std::string key, expected;
+  };
+  const Case cases[] = {
+      {"ida", {"contacts[0].node=\"all\""}, "contacts[0].node", "expected one declared node"},
+      {"exact", {"contacts[0].node=\"all\""}, "contacts[0].node", "expected one declared node"},
+      {"exact",
+       {"contacts[0].law=hertz", "contacts[0].stiffness=50"},
+       "contacts[0].law",
+       "expected \"hard\""},
+      {"exact", {"bodies.B.theory=timoshenko"}, "bodies[1].theory", "expected \"euler-bernoulli\""},
+  };
+  for (const Case& c : cases) {
+    try {
+      run(testing::paper_scene("s1_central"), c.method, RunOptions{c.set});
+      ADD_FAILURE() << c.method << " ran " << c.key;
+    } catch (const SceneError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(e.key(), c.key) << what;
+      EXPECT_NE(what.find("s1_central.toml"), std::string::npos) << what;
+      EXPECT_NE(what.find("not applicable: method '" + c.method + "' does not take"), std::string::npos)
+          << what;
+      EXPECT_NE(what.find(c.expected), std::string::npos) << what;
+    }
+  }
+}
+
 // S1 (two equal free rods, references.md 1): the exact impulse is m v0 / 2 = 4 N s. The
 // one-call API must give it through the registry, and the paper's 10-element run is within its
 // documented mesh error (-3.6 %, 5 % bound).

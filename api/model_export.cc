@@ -11,7 +11,6 @@
 #include <solver/model/critical_dt.hpp>
 #include <solver/model/load_vector.hpp>
 #include <solver/scene/SceneError.hpp>
-#include <solver/scene/contact_law.hpp>
 #include <solver/util/write_file_atomic.hpp>
 
 namespace beamimpact {
@@ -232,12 +231,29 @@ json files_json(const Model& model) {
              "centre-of-mass velocity is that over bodies[b].mass"}}}};
 }
 
+/// What the export's format cannot hold (its own limits, not a method's capabilities): its
+/// contact rows are of one declared striker node and of the hard law (gap >= 0, no spring).
+void refuse_unexportable_contacts(const Scene& scene) {
+  for (std::size_t i = 0; i < scene.contacts.size(); ++i) {
+    const Contact& c = scene.contacts[i];
+    const std::string key = fmt::format("contacts[{}]", i);
+    if (c.search)
+      throw SceneError(scene.file, key + ".node",
+                       "node = \"all\" (contact search) cannot be exported: the model's contact rows are of "
+                       "one declared node; expected \"start\", \"end\" or a node index");
+    if (c.law == ContactLaw::kHertz)
+      throw SceneError(
+          scene.file, key + ".law",
+          "\"hertz\" cannot be exported: the model's contact rows are the hard law's (gap >= 0, no "
+          "spring); expected \"hard\" (or no law)");
+  }
+}
+
 }  // namespace
 
 nlohmann::json export_model(const Scene& scene_in, const std::filesystem::path& dir) {
   std::filesystem::remove(dir / "model.json");  // nothing of an earlier export vouches for this one
-  refuse_contact_search(scene_in, "model export");
-  refuse_hertz(scene_in, "model export");  // the contact rows are the hard law's: gap >= 0, no spring
+  refuse_unexportable_contacts(scene_in);
   const Effects effects = derive_effects(scene_in);
   if (effects.corotational)
     throw SceneError(scene_in.file, "model.kinematics",

@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 
 #include <solver/scene/SceneError.hpp>
-#include <solver/scene/contact_law.hpp>
 #include <solver/scene/support_axes.hpp>
 
 namespace beamimpact::exact {
@@ -258,13 +257,13 @@ ExactProblem recognise_rod_on_wall(const Scene& scene) {
 }
 
 ExactProblem recognise_scene(const Scene& scene) {
-  refuse_contact_search(scene, "exact");
-  refuse_hertz(scene, "exact");
-  refuse_timoshenko(scene, "exact");
   if (scene.bodies.size() == 2 && scene.contacts.size() == 1 &&
       !scene.bodies[scene.contacts[0].striker].rigid && scene.bodies[scene.contacts[0].target].rigid)
     return recognise_rod_on_wall(scene);
-  refuse_loads(scene, "exact");
+  if (scene.loads.any())
+    refuse(scene, "loads",
+           "external loads (gravity, point forces) enter its rod-on-a-rigid-wall solution only; expected no "
+           "[loads] table, or a method that applies them (paper, ida)");
   for (const Body& b : scene.bodies)
     if (b.rigid) return recognise_rigid_rod(scene);
   check_one_frictionless_undamped_contact(scene);

@@ -1,7 +1,9 @@
 #pragma once
 /// @file recognise_scene.hpp
 /// @brief Decides whether a scene has an exact (or semi-analytic) counterpart and extracts
-/// its 1D data; any other scene is refused with the condition that failed.
+/// its 1D data; any other scene is refused with the condition that failed ("the exact method
+/// cannot solve this scene: ..."). What the method never takes (a contact search, Timoshenko
+/// beams, the Hertz law) is the registry's to refuse (Method::Accepts, checked by api::run).
 
 #include <string>
 

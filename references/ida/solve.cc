@@ -19,7 +19,6 @@
 #include <solver/record/ContactIntervals.hpp>
 #include <solver/record/ResultRecorder.hpp>
 #include <solver/scene/SceneError.hpp>
-#include <solver/scene/contact_law.hpp>
 #include <solver/scene/run_cost.hpp>
 #include <solver/util/Progress.hpp>
 
@@ -344,7 +343,6 @@ void summarize_contacts(const PenaltyIda& ida, const PenaltyContacts& contacts,
 }  // namespace
 
 SimulationResult solve(const Scene& scene) {
-  refuse_contact_search(scene, "ida");
   ResultRecorder rec(scene, "ida", ContactSampling::kAdaptiveSteps);
   SimulationResult& r = rec.result();
   const Effects effects = ida_effects(scene, r.assumed);

@@ -233,7 +233,6 @@ TEST(RunIda, BadOptionsAreSceneErrors) {
   // A striker of vanishing mass under the default penalty: its contact period (2 pi sqrt(m/kn),
   // 2e-17 s here) would take ~1e18 IDA steps over S1; it hung before, now it is refused up front.
   expect_error("bodies.A.area=1e-30", "time.allow_long_run");
-  expect_error("contacts[0].node=\"all\"", "contacts[0].node");  // contact search: paper only
 }
 
 }  // namespace

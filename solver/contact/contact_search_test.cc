@@ -12,7 +12,6 @@
 #include <solver/integrator/ExplicitContactIntegrator.hpp>
 #include <solver/model/deformed_geometry.hpp>
 #include <solver/paper/solve.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/scene_io.hpp>
 #include <solver/testing/test_scenes.hpp>
 
@@ -104,17 +103,6 @@ TEST(ContactSearch, BoxesFollowTheDeformedNodes) {
     if (const int eq = model.equation(model.node_id(1, i), 1); eq >= 0) U(eq) = gap;
   boxes.update(U);
   EXPECT_TRUE(boxes.near(U, tip, 1));
-}
-
-// The references check one declared node: node = "all" is refused with the key named.
-TEST(ContactSearch, MethodsWithoutSearchRefuseIt) {
-  const Scene s = load_scene(testing::paper_scene("s2_transverse"), {"contacts[0].node=\"all\""});
-  try {
-    refuse_contact_search(s, "ida");
-    FAIL() << "expected a SceneError";
-  } catch (const SceneError& e) {
-    EXPECT_NE(std::string(e.what()).find("contacts[0].node"), std::string::npos) << e.what();
-  }
 }
 
 }  // namespace

@@ -2,8 +2,6 @@
 
 #include <cmath>
 
-#include <solver/scene/SceneError.hpp>
-
 namespace beamimpact {
 
 double Body::length() const { return std::hypot(end[0] - start[0], end[1] - start[1]); }
@@ -36,22 +34,6 @@ int Scene::body_index(const std::string& n) const {
   for (std::size_t i = 0; i < bodies.size(); ++i)
     if (bodies[i].name == n) return static_cast<int>(i);
   return -1;
-}
-
-void refuse_loads(const Scene& scene, const std::string& method) {
-  if (scene.loads.any())
-    throw SceneError(scene.file, "loads",
-                     "method '" + method +
-                         "' does not apply external loads (gravity, point forces); expected "
-                         "no [loads] table, or run a method that applies them (paper, ida)");
-}
-
-void refuse_contact_search(const Scene& scene, const std::string& method) {
-  for (std::size_t i = 0; i < scene.contacts.size(); ++i)
-    if (scene.contacts[i].search)
-      throw SceneError(scene.file, "contacts[" + std::to_string(i) + "].node",
-                       "node = \"all\" (contact search) is run by the paper method only; method '" + method +
-                           "' checks one declared node: expected \"start\", \"end\" or a node index");
 }
 
 }  // namespace beamimpact

@@ -179,12 +179,4 @@ struct Scene {
   int body_index(const std::string& name) const;
 };
 
-/// @brief Refuses a scene with loads for a method that does not apply them: SceneError naming
-/// the [loads] table. `method` names the method in the message.
-void refuse_loads(const Scene& scene, const std::string& method);
-
-/// @brief Refuses a scene with a contact search (node = "all") for a method that checks only the
-/// declared node: SceneError naming contacts[i].node. `method` names the method in the message.
-void refuse_contact_search(const Scene& scene, const std::string& method);
-
 }  // namespace beamimpact

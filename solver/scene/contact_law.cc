@@ -36,20 +36,4 @@ void read_contact_law(TableReader& r, Contact& c) {
   c.hertz_stiffness = 4.0 / 3.0 * E * std::sqrt(R);
 }
 
-void refuse_hertz(const Scene& scene, const std::string& method) {
-  for (std::size_t i = 0; i < scene.contacts.size(); ++i)
-    if (scene.contacts[i].law == ContactLaw::kHertz)
-      throw SceneError(scene.file, "contacts[" + std::to_string(i) + "].law",
-                       "\"hertz\" is not run by method '" + method +
-                           "', which takes the hard law only: expected \"hard\" (or no law)");
-}
-
-void refuse_timoshenko(const Scene& scene, const std::string& method) {
-  for (std::size_t i = 0; i < scene.bodies.size(); ++i)
-    if (scene.bodies[i].theory == BeamTheory::kTimoshenko)
-      throw SceneError(scene.file, "bodies[" + std::to_string(i) + "].theory",
-                       "\"timoshenko\" is not modelled by method '" + method +
-                           "' (Euler-Bernoulli beams only): expected \"euler-bernoulli\" (or no theory)");
-}
-
 }  // namespace beamimpact

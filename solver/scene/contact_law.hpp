@@ -16,12 +16,4 @@ namespace beamimpact {
 /// hard law.
 void read_contact_law(TableReader& r, Contact& c);
 
-/// @brief Refuses a scene with a Hertz contact for a method that runs only the hard law:
-/// SceneError naming contacts[i].law. `method` names the method in the message.
-void refuse_hertz(const Scene& scene, const std::string& method);
-
-/// @brief Refuses a scene with a Timoshenko body for a method that models only Euler-Bernoulli
-/// beams: SceneError naming bodies[i].theory.
-void refuse_timoshenko(const Scene& scene, const std::string& method);
-
 }  // namespace beamimpact

@@ -11,6 +11,7 @@
 #include <solver/model/critical_dt.hpp>
 #include <solver/model/load_vector.hpp>
 #include <solver/scene/SceneError.hpp>
+#include <solver/util/OutputLock.hpp>
 #include <solver/util/write_file_atomic.hpp>
 
 namespace beamimpact {
@@ -252,6 +253,7 @@ void refuse_unexportable_contacts(const Scene& scene) {
 }  // namespace
 
 nlohmann::json export_model(const Scene& scene_in, const std::filesystem::path& dir) {
+  const OutputLock lock(dir);                   // the only writer of dir until the export returns
   std::filesystem::remove(dir / "model.json");  // nothing of an earlier export vouches for this one
   refuse_unexportable_contacts(scene_in);
   const Effects effects = derive_effects(scene_in);

@@ -10,6 +10,7 @@
 #include <solver/scene/SceneError.hpp>
 #include <solver/scene/run_cost.hpp>
 #include <solver/scene/scene_io.hpp>
+#include <solver/util/OutputLock.hpp>
 #include <solver/util/write_file_atomic.hpp>
 
 namespace beamimpact {
@@ -27,7 +28,8 @@ void remove_run_outputs(const std::filesystem::path& out) {
   remove_stale_outputs(FieldWriter::collection(out).parent_path(), {"fields.pvd"});
 }
 
-/// Every run passes here: the method's acceptance, then the in-process solver or the program.
+/// Every run passes here (its directory locked): the method's acceptance, then the in-process
+/// solver or the program.
 SimulationResult run_method(const Scene& scene, const Method& m,
                             const std::optional<std::filesystem::path>& out, const std::string& mesh) {
   if (out) remove_run_outputs(*out);
@@ -66,12 +68,14 @@ SimulationResult run(const Scene& scene, std::string_view method_name, const Run
   if (!options.set.empty() || options.dt || !options.mesh.empty())
     throw SceneError(scene.file, "set",
                      "expected no overrides, dt or mesh for a loaded scene; pass them to load_scene()");
+  const OutputLock lock(options.out.value_or(std::filesystem::path()));
   return run_method(scene, method(method_name, scene.file, "--method"), options.out, "");
 }
 
 SimulationResult run(const std::filesystem::path& scene_file, std::string_view method_name,
                      const RunOptions& options) {
-  if (options.out) remove_run_outputs(*options.out);  // before anything can refuse
+  const OutputLock lock(options.out.value_or(std::filesystem::path()));  // the only writer of the directory
+  if (options.out) remove_run_outputs(*options.out);                     // before anything can refuse
   const Method& m = method(method_name, scene_file.string(), "--method");
   std::vector<std::string> set = options.set;
   if (options.dt) {

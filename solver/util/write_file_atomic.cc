@@ -7,13 +7,19 @@ namespace beamimpact {
 
 void write_file_atomic(const std::filesystem::path& file, const std::string& text) {
   const std::filesystem::path tmp = file.string() + ".partial";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-    out << text;
-    if (!out) throw std::runtime_error("error writing " + tmp.string());
+  try {
+    {
+      std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+      if (!out) throw std::runtime_error("cannot write " + tmp.string());
+      out << text;
+      if (!out) throw std::runtime_error("error writing " + tmp.string());
+    }
+    std::filesystem::rename(tmp, file);  // fails when file is a directory
+  } catch (...) {
+    std::error_code ignored;  // no half-written .partial left behind
+    std::filesystem::remove(tmp, ignored);
+    throw;
   }
-  std::filesystem::rename(tmp, file);
 }
 
 void remove_stale_outputs(const std::filesystem::path& dir, std::initializer_list<const char*> names) {

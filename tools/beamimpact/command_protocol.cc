@@ -20,6 +20,7 @@
 #include "CommandExit.hpp"
 #include "command_verification.hpp"
 #include "methods_option.hpp"
+#include "output_lock.hpp"
 
 namespace beamimpact {
 namespace {
@@ -55,7 +56,7 @@ void conform_command(const ProtocolArgs& a) {
   if (m.in_process())
     throw SceneError(m.origin, "conform", "'" + m.name + "' is built in; conform checks an external program");
   const fs::path out = a.out.empty() ? fs::path("conform-" + m.name) : fs::path(a.out);
-  fs::create_directories(out);
+  const OutputLock lock = lock_output(out);
   const std::vector<RuleResult> results = conform(m, data_folder("conform"), out, a.timeout);
   int failed = 0;
   fmt::print("conform {} ({}):\n", m.name, m.origin);
@@ -90,7 +91,7 @@ void score_command(const ProtocolArgs& a) {
     for (const JobSpec* s : {&it.run, &it.reference})
       if (seen.insert(s->key()).second) specs.push_back(*s);
   const fs::path out = a.out.empty() ? fs::path("score-" + m.name) : fs::path(a.out);
-  fs::create_directories(out);
+  const OutputLock lock = lock_output(out);
   forward_interruptions();
   fmt::print(stderr, "score {}: {} scene(s), {} run(s), {} job(s)\n", m.name, items.size(), specs.size(),
              a.jobs);

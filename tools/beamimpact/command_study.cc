@@ -10,6 +10,7 @@
 #include <verification/study/run_study.hpp>
 
 #include "methods_option.hpp"
+#include "output_lock.hpp"
 
 namespace beamimpact {
 namespace {
@@ -21,6 +22,7 @@ struct StudyArgs {
 };
 
 void study_command(const StudyArgs& a) {
+  const OutputLock lock = lock_output(a.out);
   remove_stale_outputs(a.out, {"study.csv", "study.json", "study.md", "timing.csv", "timing.json"});
   study::Study s = study::Study::load(a.file);
   s.keep_runs = s.keep_runs || a.keep_runs;

@@ -25,6 +25,7 @@
 #include <verification/study/task_farm.hpp>
 #include "CommandExit.hpp"
 #include "methods_option.hpp"
+#include "output_lock.hpp"
 
 namespace beamimpact {
 namespace {
@@ -61,14 +62,17 @@ Launcher launcher() {
 namespace {
 
 void compare(const CompareArgs& a) {
+  fs::path json = a.json.empty() ? fs::path(a.a) / "compare.json" : fs::path(a.json);
+  if (std::error_code ec; fs::is_directory(json, ec)) json /= "compare.json";  // --json DIR
+  const OutputLock lock = lock_output(json.has_parent_path() ? json.parent_path() : fs::path("."));
   const Comparison c = compare_runs(StoredRun::read(a.a), StoredRun::read(a.b), a.options);
   fmt::print("{}", c.to_text());
-  const fs::path json = a.json.empty() ? fs::path(a.a) / "compare.json" : fs::path(a.json);
   write_file_atomic(json, c.to_json().dump(1) + "\n");
   fmt::print("wrote {}\n", json.string());
 }
 
 void verify(const VerifyArgs& a) {
+  const OutputLock lock = lock_output(a.out);  // before the earlier reports are removed
   forward_interruptions();
   VerifyOptions o;
   o.matrix = a.matrix;
@@ -101,6 +105,7 @@ void verify(const VerifyArgs& a) {
 
 void sweep(SweepArgs& a) {
   const auto start = std::chrono::steady_clock::now();
+  const OutputLock lock = lock_output(a.out);  // before the earlier tables are removed
   a.o.scene = a.scene;
   a.o.out = a.out;
   forward_interruptions();
@@ -153,7 +158,9 @@ void add_verification_commands(CLI::App& app) {
       "compare", "Error norms of run DIR_1 against reference run DIR_2 (each norm's definition is printed)");
   c->add_option("DIR_1", ca->a, "Run directory (history.csv, summary.json)")->required();
   c->add_option("DIR_2", ca->b, "Reference run directory")->required();
-  c->add_option("--json", ca->json, "Write the norms as JSON here (default DIR_1/compare.json)");
+  c->add_option("--json", ca->json,
+                "Write the norms as JSON to this file, or to compare.json in this directory (default "
+                "DIR_1/compare.json)");
   const CLI::Validator positive_time(
       [](std::string& text) -> std::string {
         char* end = nullptr;

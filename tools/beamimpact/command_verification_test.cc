@@ -233,7 +233,9 @@ gates = [{{ metric = "impulse", tol = 0.01, why = "a scene that cannot exist" }}
   // An --out the file system refuses: exit 2, the path cut to 160 characters, no library wording.
   r = run(fmt::format("run verification/scenes/paper/s1_central.toml --out '{}'", (tmp_ / name).string()));
   EXPECT_EQ(r.code, 2) << r.out;
-  EXPECT_NE(r.out.find("File name too long (check --out"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("key '--out': expected a directory that can be written: File name too long"),
+            std::string::npos)
+      << r.out;
   EXPECT_EQ(r.out.find("filesystem error"), std::string::npos) << r.out;
   EXPECT_LT(r.out.size(), 300u) << r.out;
 }
@@ -249,6 +251,14 @@ TEST_F(Commands, CompareRunsAndRejectsNonRuns) {
   EXPECT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("I.rel_linf: max_t |a-b| / max_t |b|"), std::string::npos) << r.out;
   EXPECT_TRUE(fs::exists(tmp_ / "c.json"));
+  // --json DIR: DIR/compare.json, and no compare.json.partial or DIR.partial left beside it
+  fs::create_directories(tmp_ / "cdir");
+  EXPECT_EQ(run(fmt::format("compare '{}' '{}' --json '{}'", (tmp_ / "a").string(), (tmp_ / "b").string(),
+                            (tmp_ / "cdir").string()))
+                .code,
+            0);
+  EXPECT_EQ(read(tmp_ / "cdir" / "compare.json"), read(tmp_ / "c.json"));
+  EXPECT_FALSE(fs::exists(tmp_ / "cdir.partial"));
   const Result bad = run(fmt::format("compare '{}' '{}'", tmp_.string(), (tmp_ / "b").string()));
   EXPECT_EQ(bad.code, 2) << bad.out;
   EXPECT_NE(bad.out.find("summary.json"), std::string::npos) << bad.out;

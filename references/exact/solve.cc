@@ -7,10 +7,12 @@
 #include <references/exact/CoaxialRods.hpp>
 #include <references/exact/RigidRodImpact.hpp>
 #include <references/exact/RodOnBeam.hpp>
+#include <references/exact/RodOnBeamCost.hpp>
 #include <references/exact/RodOnWall.hpp>
 #include <references/exact/output_times.hpp>
 #include <references/exact/recognise_scene.hpp>
 #include <solver/record/ResultRecorder.hpp>
+#include <solver/scene/SceneError.hpp>
 #include <solver/scene/TableReader.hpp>
 #include <solver/scene/run_cost.hpp>
 
@@ -240,6 +242,28 @@ struct BeamOptions {
   double tol = 1e-3, rtol = 1e-10;
 };
 
+/// Before any mode is integrated: a solution (or the worst case of a mode study, every doubling
+/// up to modes_max) far beyond an ordinary run is refused with its estimate, unless
+/// time.allow_long_run is set.
+void check_beam_cost(const Scene& scene, const RodOnBeamSetup& s, const BeamOptions& o) {
+  std::vector<int> counts;
+  if (o.modes > 0) counts.push_back(static_cast<int>(std::min<long>(o.modes, 1L << 30)));
+  for (long n = std::max(1L, o.modes_min); o.modes == 0; n *= 2) {
+    counts.push_back(static_cast<int>(n));
+    if (2 * n > o.modes_max || n >= (1L << 30)) break;  // 2^30 modes: refused anyway
+  }
+  const RodOnBeamCost c = estimate_rod_on_beam_cost(s, counts);
+  if (scene.time.allow_long_run || (c.seconds() <= kOrdinaryExactSeconds && c.bytes <= kOrdinaryBytes))
+    return;
+  throw SceneError(
+      scene.file, o.modes > 0 ? "exact.modes" : "exact.modes_max",
+      fmt::format("the rod-on-beam solution is far beyond an ordinary run: {}{} (ordinary: at most {:g} "
+                  "min and {:g} GB); set fewer modes (exact.modes or exact.modes_max), a larger "
+                  "exact.dt_out, or time.allow_long_run = true (or --allow-long) to run it",
+                  c.to_string(), o.modes > 0 ? "" : " (the mode study's worst case)",
+                  kOrdinaryExactSeconds / 60.0, kOrdinaryBytes / 1e9));
+}
+
 SimulationResult solve_beam(const Scene& scene, const ExactProblem& p, const BeamOptions& o,
                             ResultRecorder& rec) {
   SimulationResult& r = rec.result();
@@ -253,6 +277,7 @@ SimulationResult solve_beam(const Scene& scene, const ExactProblem& p, const Bea
   s.t_end = scene.time.end;
   s.dt_out = r.dt;
   s.rtol = o.rtol;
+  check_beam_cost(scene, s, o);
   ModeStudy study;
   if (o.modes > 0) {
     s.modes = static_cast<int>(o.modes);

@@ -65,38 +65,7 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
     spring_now_.swap(spring_next_);
     std::fill(spring_next_.begin(), spring_next_.end(), 0.0);  // set by this solve's Hertz pairs
   }
-  for (int c = 0; c < m; ++c) {
-    // Contact search: an open searched pair whose node is outside the other body's box cannot
-    // touch it within this step; it is skipped (gap reported as +inf: far).
-    if (boxes_ && pairs_[c].searched() && out_[c].state == ContactState::kOpen &&
-        !boxes_->near(Ubar, pairs_[c].striker_node(), pairs_[c].target_body())) {
-      out_[c] = ContactForce{0.0, 0.0, std::numeric_limits<double>::infinity(), 0.0, ContactState::kOpen};
-      active_[c] = candidate_[c] = 0;
-      continue;
-    }
-    // A sliding (or newly closing) striker is re-located from the predicted configuration; a
-    // sticking one stays on the material point it holds.
-    if (out_[c].state != ContactState::kStick && pairs_[c].relocate(Ubar)) fresh_[c] = 0;
-    const ContactPair& p = pairs_[c];
-    gbar_[c] = p.g0() + ContactPair::eval(p.normal_row(), Ubar);
-    sbar_[c] =
-        friction_ ? ContactPair::eval(p.tangent_row(), Ubar) - ContactPair::eval(p.tangent_row(), U) : 0.0;
-    if (closure_slip_ == ClosureSlip::kFromClosure && friction_ && out_[c].state == ContactState::kOpen &&
-        gbar_[c] < -tol_[c]) {
-      // A closure step: only the slide after the closure instant (linear in time) is to be stopped.
-      const double g_now = std::max(0.0, p.g0() + ContactPair::eval(p.normal_row(), U));
-      sbar_[c] *= -gbar_[c] / (g_now - gbar_[c]);  // 1 - phi, phi = g_now / (g_now - gbar)
-    }
-    out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};
-    active_[c] = gbar_[c] < -tol_[c] && p.on_surface();
-    // A Hertz pair whose spring pushed at U^{p-1} still carries half that force (hertz_local).
-    if (hertz_pair(c) && spring_prev_[c] > 0.0) active_[c] = p.on_surface();
-    candidate_[c] = p.on_surface();
-    if (active_[c]) {
-      refresh_response(c);
-      engaged_.push_back(c);
-    }
-  }
+  for (int c = 0; c < m; ++c) predict(c, Ubar, U);
   // Gauss-Seidel over contacts: each local solve sees the others' current forces. A contact that
   // was open before the others' forces were applied joins as soon as they push it into
   // penetration (with one contact there is nothing to push: the first pass decides).
@@ -104,72 +73,119 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
     double change = 0.0;
     for (int c = 0; c < m; ++c) {
       if (!active_[c] && (m == 1 || !candidate_[c])) continue;
-      const ContactPair& p = pairs_[c];
       double g = gbar_[c], s = sbar_[c];
-      for (int d : engaged_) {  // effect of the other contacts' forces on this one
-        if (d == c || out_[d].state == ContactState::kOpen) continue;
-        g += out_[d].R * ContactPair::eval(p.normal_row(), hn_[d]);
-        if (friction_) {
-          g += out_[d].tau * ContactPair::eval(p.normal_row(), ht_[d]);
-          s += out_[d].R * ContactPair::eval(p.tangent_row(), hn_[d]) +
-               out_[d].tau * ContactPair::eval(p.tangent_row(), ht_[d]);
-        }
-      }
+      add_others(c, g, s);
       if (!active_[c]) {
         if (g >= -tol_[c]) continue;  // still open with the others' forces
         active_[c] = 1;
         refresh_response(c);
         engaged_.insert(std::upper_bound(engaged_.begin(), engaged_.end(), c), c);  // keep index order
       }
-      const double Ann = ContactPair::eval(p.normal_row(), hn_[c]);
-      if (hertz_pair(c)) {
-        const ContactForce f = g < -tol_[c] || spring_prev_[c] > 0.0
-                                   ? hertz_local(c, g, s, Ann)
-                                   : ContactForce{0.0, 0.0, g, s, ContactState::kOpen};
-        change = std::max(change, std::abs(f.R - out_[c].R) + std::abs(f.tau - out_[c].tau));
-        out_[c] = f;
-        continue;
-      }
-      ContactForce f{0.0, 0.0, g, s, ContactState::kOpen};
-      if (g < -tol_[c]) {
-        if (!friction_ || mu_[c] == 0.0) {
-          f.R = -g / Ann;  // Eq. 20 in general form: the gap closes exactly
-          f.state = friction_ ? ContactState::kSlip : ContactState::kClosed;
-        } else {
-          const double Ant = ContactPair::eval(p.normal_row(), ht_[c]);
-          const double Atn = ContactPair::eval(p.tangent_row(), hn_[c]);
-          const double Att = ContactPair::eval(p.tangent_row(), ht_[c]);
-          // Stick: no relative tangential increment (Eq. 2 second line / Eq. 31).
-          const double det = Ann * Att - Ant * Atn;
-          const double Rs = (-g * Att + s * Ant) / det, Ts = (-s * Ann + g * Atn) / det;
-          if (Rs > 0.0 && std::abs(Ts) <= mu_[c] * Rs) {
-            f.R = Rs;
-            f.tau = Ts;
-            f.state = ContactState::kStick;
-          } else {
-            // Slip: tau opposes the sliding the stick force would have prevented.
-            const double sigma = slip_direction(Rs, Ts, s);
-            const double R = -g / (Ann + sigma * mu_[c] * Ant);
-            if (R > 0.0) {
-              f.R = R;
-              f.tau = sigma * mu_[c] * R;
-              f.state = ContactState::kSlip;
-            }
-          }
-        }
-        if (f.state != ContactState::kOpen) {
-          f.gap_next = g + f.R * Ann + (friction_ ? f.tau * ContactPair::eval(p.normal_row(), ht_[c]) : 0.0);
-          if (friction_)
-            f.slip_next = s + f.R * ContactPair::eval(p.tangent_row(), hn_[c]) +
-                          f.tau * ContactPair::eval(p.tangent_row(), ht_[c]);
-        }
-      }
+      const double Ann = ContactPair::eval(pairs_[c].normal_row(), hn_[c]);
+      ContactForce f;
+      if (!hertz_pair(c))
+        f = hard_local(c, g, s, Ann);
+      else if (g < -tol_[c] || spring_prev_[c] > 0.0)
+        f = hertz_local(c, g, s, Ann);
+      else
+        f = ContactForce{0.0, 0.0, g, s, ContactState::kOpen};
       change = std::max(change, std::abs(f.R - out_[c].R) + std::abs(f.tau - out_[c].tau));
       out_[c] = f;
     }
     if (change <= 1e-13 * (1.0 + std::abs(out_[0].R))) break;
   }
+  finish_open_gaps();
+  return out_;
+}
+
+void ContactSolver::predict(int c, const Eigen::VectorXd& Ubar, const Eigen::VectorXd& U) {
+  // Contact search: an open searched pair whose node is outside the other body's box cannot
+  // touch it within this step; it is skipped (gap reported as +inf: far).
+  if (boxes_ && pairs_[c].searched() && out_[c].state == ContactState::kOpen &&
+      !boxes_->near(Ubar, pairs_[c].striker_node(), pairs_[c].target_body())) {
+    out_[c] = ContactForce{0.0, 0.0, std::numeric_limits<double>::infinity(), 0.0, ContactState::kOpen};
+    active_[c] = candidate_[c] = 0;
+    return;
+  }
+  // A sliding (or newly closing) striker is re-located from the predicted configuration; a
+  // sticking one stays on the material point it holds.
+  if (out_[c].state != ContactState::kStick && pairs_[c].relocate(Ubar)) fresh_[c] = 0;
+  const ContactPair& p = pairs_[c];
+  gbar_[c] = p.g0() + ContactPair::eval(p.normal_row(), Ubar);
+  sbar_[c] =
+      friction_ ? ContactPair::eval(p.tangent_row(), Ubar) - ContactPair::eval(p.tangent_row(), U) : 0.0;
+  if (closure_slip_ == ClosureSlip::kFromClosure && friction_ && out_[c].state == ContactState::kOpen &&
+      gbar_[c] < -tol_[c]) {
+    // A closure step: only the slide after the closure instant (linear in time) is to be stopped.
+    const double g_now = std::max(0.0, p.g0() + ContactPair::eval(p.normal_row(), U));
+    sbar_[c] *= -gbar_[c] / (g_now - gbar_[c]);  // 1 - phi, phi = g_now / (g_now - gbar)
+  }
+  out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};
+  active_[c] = gbar_[c] < -tol_[c] && p.on_surface();
+  // A Hertz pair whose spring pushed at U^{p-1} still carries half that force (hertz_local).
+  if (hertz_pair(c) && spring_prev_[c] > 0.0) active_[c] = p.on_surface();
+  candidate_[c] = p.on_surface();
+  if (active_[c]) {
+    refresh_response(c);
+    engaged_.push_back(c);
+  }
+}
+
+void ContactSolver::add_others(int c, double& g, double& s) const {
+  // The effect of the other contacts' forces on this one.
+  const ContactPair& p = pairs_[c];
+  for (int d : engaged_) {
+    if (d == c || out_[d].state == ContactState::kOpen) continue;
+    g += out_[d].R * ContactPair::eval(p.normal_row(), hn_[d]);
+    if (friction_) {
+      g += out_[d].tau * ContactPair::eval(p.normal_row(), ht_[d]);
+      s += out_[d].R * ContactPair::eval(p.tangent_row(), hn_[d]) +
+           out_[d].tau * ContactPair::eval(p.tangent_row(), ht_[d]);
+    }
+  }
+}
+
+ContactForce ContactSolver::hard_local(int c, double g, double s, double Ann) const {
+  const ContactPair& p = pairs_[c];
+  ContactForce f{0.0, 0.0, g, s, ContactState::kOpen};
+  if (g >= -tol_[c]) return f;
+  if (!friction_ || mu_[c] == 0.0) {
+    f.R = -g / Ann;  // Eq. 20 in general form: the gap closes exactly
+    f.state = friction_ ? ContactState::kSlip : ContactState::kClosed;
+  } else {
+    const double Ant = ContactPair::eval(p.normal_row(), ht_[c]);
+    const double Atn = ContactPair::eval(p.tangent_row(), hn_[c]);
+    const double Att = ContactPair::eval(p.tangent_row(), ht_[c]);
+    // Stick: no relative tangential increment (Eq. 2 second line / Eq. 31).
+    const double det = Ann * Att - Ant * Atn;
+    const double Rs = (-g * Att + s * Ant) / det, Ts = (-s * Ann + g * Atn) / det;
+    if (Rs > 0.0 && std::abs(Ts) <= mu_[c] * Rs) {
+      f.R = Rs;
+      f.tau = Ts;
+      f.state = ContactState::kStick;
+    } else {
+      // Slip: tau opposes the sliding the stick force would have prevented.
+      const double sigma = slip_direction(Rs, Ts, s);
+      const double R = -g / (Ann + sigma * mu_[c] * Ant);
+      if (R > 0.0) {
+        f.R = R;
+        f.tau = sigma * mu_[c] * R;
+        f.state = ContactState::kSlip;
+      }
+    }
+  }
+  if (f.state != ContactState::kOpen) {
+    f.gap_next = g + f.R * Ann + (friction_ ? f.tau * ContactPair::eval(p.normal_row(), ht_[c]) : 0.0);
+    if (friction_)
+      f.slip_next = s + f.R * ContactPair::eval(p.tangent_row(), hn_[c]) +
+                    f.tau * ContactPair::eval(p.tangent_row(), ht_[c]);
+  }
+  return f;
+}
+
+void ContactSolver::finish_open_gaps() {
   // Gaps of contacts left open include the others' forces (for the history's gap column).
+  const int m = static_cast<int>(pairs_.size());
   for (int c = 0; c < m; ++c) {
     any_ |= out_[c].state != ContactState::kOpen;
     if (out_[c].state == ContactState::kOpen && m > 1) {
@@ -183,7 +199,6 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
       out_[c].gap_next = g;
     }
   }
-  return out_;
 }
 
 ContactForce ContactSolver::hertz_local(int c, double g, double s, double Ann) {

@@ -78,6 +78,14 @@ class ContactSolver {
 
  private:
   void refresh_response(int c);
+  /// The steps of solve(): contact c's predicted gap and slide at Ubar and whether it is active;
+  /// the other contacts' forces added to g and s; the hard law's local solve (stick or slip);
+  /// the open contacts' gaps with the others' forces. Inline (defined in ContactSolver.cc, the
+  /// only caller) so that the step loop pays no call for them in a position-independent build.
+  inline void predict(int c, const Eigen::VectorXd& Ubar, const Eigen::VectorXd& U);
+  inline void add_others(int c, double& g, double& s) const;
+  inline ContactForce hard_local(int c, double g, double s, double Ann) const;
+  inline void finish_open_gaps();
   /// The local solve of a Hertz pair c with predicted gap g and slip s (others' forces included).
   ContactForce hertz_local(int c, double g, double s, double Ann);
   bool hertz_pair(int c) const { return !hertz_.empty() && hertz_[c] > 0.0; }

@@ -15,8 +15,8 @@ INTEG = "solver/integrator/ExplicitContactIntegrator.cc"
 
 # The contact loop's first lines, used by the mutants that need the previous step's state.
 _OPEN_LINES = (
-    "    out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};\n"
-    "    active_[c] = gbar_[c] < -tol_[c] && p.on_surface();\n")
+    "  out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};\n"
+    "  active_[c] = gbar_[c] < -tol_[c] && p.on_surface();\n")
 
 
 def _scaled_force(k):
@@ -35,10 +35,10 @@ MUTANTS = [
     dict(name="contact_late", layer="contact", ci=True,
          what="a contact closes one step late: only once U^p itself penetrates, not the prediction",
          edits=[(CS, _OPEN_LINES,
-                 "    const bool was_open = out_[c].state == ContactState::kOpen;\n"
-                 "    out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};\n"
-                 "    active_[c] = gbar_[c] < -tol_[c] && p.on_surface() &&\n"
-                 "                 (!was_open || p.g0() + ContactPair::eval(p.normal_row(), U) < -tol_[c]);\n")]),
+                 "  const bool was_open = out_[c].state == ContactState::kOpen;\n"
+                 "  out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};\n"
+                 "  active_[c] = gbar_[c] < -tol_[c] && p.on_surface() &&\n"
+                 "               (!was_open || p.g0() + ContactPair::eval(p.normal_row(), U) < -tol_[c]);\n")]),
     dict(name="nts_weights_swapped", layer="contact", ci=False,
          what="node-to-surface (both weights non-zero): the target nodes' weights xi1, xi2 swapped",
          edits=[(CP, "    if (xi1_ != 0.0) model_.append_projection(n1, d, -xi1_, out);\n"
@@ -64,13 +64,13 @@ MUTANTS = [
          what="release on R <= 0 replaced by R < -eps: a closed contact holds while its gap is below "
               "1e-4 x the largest body length (a tensile multiplier up to that gap / A_nn)",
          edits=[(CS, _OPEN_LINES,
-                 "    const bool was_open = out_[c].state == ContactState::kOpen;\n"
-                 "    out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};\n"
-                 "    const double hold = was_open ? -tol_[c] : 1e6 * tol_[c];\n"
-                 "    active_[c] = gbar_[c] < hold && p.on_surface();\n"),
-                (CS, "      ContactForce f{0.0, 0.0, g, s, ContactState::kOpen};\n      if (g < -tol_[c]) {",
-                 "      ContactForce f{0.0, 0.0, g, s, ContactState::kOpen};\n      if (g < -tol_[c] || active_[c]) {"),
-                (CS, "            if (R > 0.0) {", "            if (R > -1e6 * tol_[c] / Ann) {")]),
+                 "  const bool was_open = out_[c].state == ContactState::kOpen;\n"
+                 "  out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};\n"
+                 "  const double hold = was_open ? -tol_[c] : 1e6 * tol_[c];\n"
+                 "  active_[c] = gbar_[c] < hold && p.on_surface();\n"),
+                (CS, "  ContactForce f{0.0, 0.0, g, s, ContactState::kOpen};\n  if (g >= -tol_[c]) return f;",
+                 "  ContactForce f{0.0, 0.0, g, s, ContactState::kOpen};\n  if (g >= -tol_[c] && !active_[c]) return f;"),
+                (CS, "      if (R > 0.0) {", "      if (R > -1e6 * tol_[c] / Ann) {")]),
     dict(name="damping_sign", layer="integrator", ci=False,
          what="Rayleigh damping force sign flipped (C v added instead of subtracted)",
          edits=[(INTEG, "  f -= model_.rayleigh_mass() * scratch_;", "  f += model_.rayleigh_mass() * scratch_;"),

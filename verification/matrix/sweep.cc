@@ -23,17 +23,8 @@ std::string cell(const Comparison* c, const std::string& name) {
   return n && n->value ? fmt::format("{:.4g}", *n->value) : "n/a";
 }
 
-}  // namespace
-
-const std::vector<std::string>& sweep_norms() {
-  static const std::vector<std::string> n = {
-      "impulse", "I.rel_linf", "R.rel_l2",  "Rw.rel_l2", "peak_R",         "contact_start", "contact_end",
-      "impacts", "ua.rel_l2",  "ub.rel_l2", "vb.rel_l2", "final_velocity", "energy_final"};
-  return n;
-}
-
-std::optional<SweepResult> execute_sweep(const SweepOptions& o, const Launcher& launcher) {
-  remove_stale_outputs(o.out, {"sweep.csv", "sweep.json", "sweep.md"});  // before anything can refuse
+/// The steps asked for: either --dt or --fraction, positive, fractions at most 1.
+void check_steps(const SweepOptions& o) {
   const bool by_fraction = !o.fractions.empty();
   const std::string key = by_fraction ? "--fraction" : "--dt";
   const auto& steps = by_fraction ? o.fractions : o.dts;
@@ -46,6 +37,22 @@ std::optional<SweepResult> execute_sweep(const SweepOptions& o, const Launcher& 
     if (v > 1.0)
       throw InputError(o.scene.string(), key,
                        fmt::format("expected fractions of the critical step in (0, 1], got {:g}", v));
+}
+
+}  // namespace
+
+const std::vector<std::string>& sweep_norms() {
+  static const std::vector<std::string> n = {
+      "impulse", "I.rel_linf", "R.rel_l2",  "Rw.rel_l2", "peak_R",         "contact_start", "contact_end",
+      "impacts", "ua.rel_l2",  "ub.rel_l2", "vb.rel_l2", "final_velocity", "energy_final"};
+  return n;
+}
+
+std::optional<SweepResult> execute_sweep(const SweepOptions& o, const Launcher& launcher) {
+  remove_stale_outputs(o.out, {"sweep.csv", "sweep.json", "sweep.md"});  // before anything can refuse
+  check_steps(o);
+  const bool by_fraction = !o.fractions.empty();
+  const auto& steps = by_fraction ? o.fractions : o.dts;
   std::error_code unreadable;  // a path the file system refuses (too long) is not found either
   if (!fs::exists(o.scene, unreadable)) throw InputError(o.scene.string(), "", "scene file not found");
   const Method& method = beamimpact::method(o.method, o.scene.string(), "--method");

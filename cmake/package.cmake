@@ -12,11 +12,33 @@ add_library(beamimpact::beamimpact ALIAS beamimpact_all)
 install(TARGETS beamimpact_headers ${_libraries} beamimpact_all EXPORT beamimpactTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS beamimpact RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-foreach(_dir IN LISTS BEAMIMPACT_MODULE_DIRS)
-  if(NOT _dir STREQUAL "solver/testing")
-    install(DIRECTORY ${PROJECT_SOURCE_DIR}/${_dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/beamimpact/${_dir}
-      FILES_MATCHING PATTERN "*.hpp" PATTERN "test_*" EXCLUDE PATTERN "tests" EXCLUDE)
+# The public headers: what a program using find_package(beamimpact) includes (running a scene,
+# the method registry and methods files, loading a scene, exporting its model) and every project
+# header they include, found by following their #include lines. Nothing else is installed: the
+# methods' internals, kernels and test helpers stay in the source tree. tools/test-install.sh
+# checks that each installed header's project includes are installed too.
+set(BEAMIMPACT_PUBLIC_HEADERS api/run.hpp api/registry.hpp api/methods_file.hpp api/model_export.hpp
+  solver/scene/scene_io.hpp)
+set(_public "")
+set(_todo ${BEAMIMPACT_PUBLIC_HEADERS})
+while(_todo)
+  list(POP_FRONT _todo _header)
+  if(_header IN_LIST _public)
+    continue()
   endif()
+  list(APPEND _public ${_header})
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${_header})
+  file(STRINGS ${PROJECT_SOURCE_DIR}/${_header} _includes REGEX "^#include <[^>]+>")
+  foreach(_include IN LISTS _includes)
+    string(REGEX REPLACE "^#include <([^>]+)>.*" "\\1" _include "${_include}")
+    if(EXISTS ${PROJECT_SOURCE_DIR}/${_include} AND NOT IS_DIRECTORY ${PROJECT_SOURCE_DIR}/${_include})
+      list(APPEND _todo ${_include})
+    endif()
+  endforeach()
+endwhile()
+foreach(_header IN LISTS _public)
+  get_filename_component(_dir ${_header} DIRECTORY)
+  install(FILES ${PROJECT_SOURCE_DIR}/${_header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/beamimpact/${_dir})
 endforeach()
 install(FILES ${BEAMIMPACT_INCLUDE_DIR}/beamimpact/version.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/beamimpact)
 # Data: scenes, matrix and methods file (share/beamimpact/verification), the FEniCSx reference script.

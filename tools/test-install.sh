@@ -9,6 +9,26 @@ build=$(cd "$1" && pwd)
 prefix=$build/install-test
 rm -rf "$prefix" "$build/consumer"
 cmake --install "$build" --prefix "$prefix" > "$build/install-test.log"
+# The installed headers are the public API's closure: each one's project includes (a path that
+# is a file of the repository, or the generated beamimpact/...) are installed beside it, and no
+# internal header (a test helper, a *_impl or detail/ file) is.
+inc=$prefix/include/beamimpact
+mapfile -t installed < <(cd "$inc" && find . -name '*.hpp' -printf '%P\n' | sort)
+((${#installed[@]})) || { echo "install test: no headers under $inc"; exit 1; }
+missing=0
+for h in "${installed[@]}"; do
+  while read -r dep; do
+    if { [[ -f $root/$dep ]] && [[ ! -f $inc/$dep ]]; } ||
+      { [[ $dep == beamimpact/* ]] && [[ ! -f $prefix/include/$dep ]]; }; then
+      echo "install test: $h includes <$dep>, which is not installed"; missing=1
+    fi
+  done < <(sed -n 's/^#include <\([^>]*\)>.*/\1/p' "$inc/$h")
+  case $h in
+    solver/testing/* | *_test* | *test_* | *_impl* | */detail/*) echo "install test: internal header $h installed"; missing=1 ;;
+  esac
+done
+((missing == 0)) || exit 1
+echo "install test: ${#installed[@]} headers installed, each one's project includes installed too"
 cmake -S "$root/examples/consumer" -B "$build/consumer" -DCMAKE_PREFIX_PATH="$prefix" \
   -DCMAKE_BUILD_TYPE=Release >> "$build/install-test.log"
 cmake --build "$build/consumer" >> "$build/install-test.log"

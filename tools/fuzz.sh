@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # @brief Fuzzing (issue 16): builds the libFuzzer targets of fuzz/ with clang + ASan + UBSan (the
 # build of tools/sanitize.sh, build-asan/) and runs each from its seed corpus (the shipped scenes, matrix and fuzz/corpus/).
-# Usage: tools/fuzz.sh            each target for 20 s, one after the other (CI)
+# Usage: tools/fuzz.sh            each target for 12 s, one after the other (CI: a minute in all)
 #        tools/fuzz.sh --long     a campaign: the targets side by side (nice 19), each until
 #                                 BEAMIMPACT_FUZZ_RUNS executions (default 1000000) or
 #                                 BEAMIMPACT_FUZZ_SECONDS (default 10800), whichever comes first
@@ -10,7 +10,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${BEAMIMPACT_ASAN_DIR:-build-asan}
-seconds=20
+seconds=12
 runs=-1            # libFuzzer: no execution limit
 long=false
 if [[ "${1:-}" == "--long" ]]; then
@@ -25,10 +25,12 @@ declare -A seeds=(
   [scene_fuzz]="$(find verification/scenes fuzz/corpus/scene -name '*.toml' | tr '\n' ' ')"
   [run_reader_fuzz]="$(find fuzz/corpus/run -type f | tr '\n' ' ')"
   [matrix_fuzz]="verification/matrix.toml $(find fuzz/corpus/matrix -type f | tr '\n' ' ')"
+  [study_fuzz]="$(find verification/studies fuzz/corpus/study -name '*.toml' | tr '\n' ' ')"
+  [methods_fuzz]="verification/methods.toml $(find fuzz/corpus/methods -type f | tr '\n' ' ')"
 )
 mkdir -p "$build/findings"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=0}
-targets=(scene_fuzz run_reader_fuzz matrix_fuzz)
+targets=(scene_fuzz run_reader_fuzz matrix_fuzz study_fuzz methods_fuzz)
 
 # fuzz_one TARGET: runs one target from its corpus; its log is build-asan/findings/TARGET.log.
 fuzz_one() {

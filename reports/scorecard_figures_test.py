@@ -1,4 +1,4 @@
-"""scorecard_figures.py on a real scorecard (`beamimpact score paper`): one embedded diagram per
+"""scorecard_figures.py on a real scorecard (`beamimpact score paper --sets paper`): one embedded diagram per
 scored scene with a committed work-precision set, the page still self-contained, a second run
 replacing the figures instead of adding to them, and bad input refused with exit 2."""
 import os
@@ -18,7 +18,10 @@ def figures(path):
 
 def test_one_diagram_per_scene_with_a_set_and_idempotent(tmp_path):
     out = tmp_path / "score"
-    subprocess.run([EXE, "score", "paper", "--out", str(out), "--jobs", "2"], cwd=ROOT, check=True, capture_output=True)
+    # The paper's scenes only, against IDA as the matrix writes it (converged IDA on S4 costs minutes
+    # of CPU): this test is about the figures, the references' choice has its own tests.
+    subprocess.run([EXE, "score", "paper", "--out", str(out), "--jobs", "2", "--sets", "paper", "--references", "matrix"],
+                   cwd=ROOT, check=True, capture_output=True)
     paper = {f[:-5] for f in os.listdir(os.path.join(ROOT, "verification", "scenes", "paper")) if f.endswith(".toml")}
     sets = {d for d in os.listdir(os.path.join(ROOT, "reports", "work_precision"))
             if d in paper and os.path.isfile(os.path.join(ROOT, "reports", "work_precision", d, "work_precision.json"))}
@@ -34,3 +37,11 @@ def test_one_diagram_per_scene_with_a_set_and_idempotent(tmp_path):
 def test_bad_input_exit_2_with_one_line(tmp_path):
     r = subprocess.run(["/usr/bin/python3", SCRIPT, str(tmp_path)], capture_output=True, text=True)
     assert r.returncode == 2 and "scorecard.json" in r.stderr and len(r.stderr.strip().splitlines()) == 1
+
+
+def test_score_refuses_unknown_sets_and_matrix_references_for_ida(tmp_path):
+    for args, key in ((["paper", "--sets", "paper,papers"], "--sets"), (["ida", "--references", "matrix"], "--references")):
+        r = subprocess.run([EXE, "score"] + args + ["--out", str(tmp_path / "s")], cwd=ROOT, capture_output=True, text=True)
+        assert r.returncode == 2, r.stderr
+        assert key in r.stderr and len(r.stderr.strip().splitlines()) == 1, r.stderr
+        assert not (tmp_path / "s" / "scorecard.json").exists()

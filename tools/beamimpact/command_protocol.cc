@@ -6,6 +6,7 @@
 #include <set>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <api/methods_file.hpp>
 #include <api/registry.hpp>
@@ -32,6 +33,7 @@ struct ProtocolArgs {
   std::string method, out, matrix;
   int jobs = 1;
   double timeout = 600.0;
+  ScoreOptions score;
 };
 
 /// The data folder (verification/ scenes and matrix), or bad input when there is none.
@@ -81,10 +83,11 @@ void conform_command(const ProtocolArgs& a) {
 void score_command(const ProtocolArgs& a) {
   const auto start = std::chrono::steady_clock::now();
   const Method& m = runnable(a.method, "score");
+  a.score.validate(m.name);
   const fs::path root = data_folder("score");
   const VerificationMatrix matrix =
       VerificationMatrix::load(a.matrix.empty() ? root / "verification/matrix.toml" : fs::path(a.matrix));
-  const std::vector<ScoreItem> items = score_items(matrix, m.name, root);
+  const std::vector<ScoreItem> items = score_items(matrix, m.name, root, a.score);
   std::vector<JobSpec> specs;
   std::set<std::string> seen;
   for (const ScoreItem& it : items)
@@ -93,16 +96,19 @@ void score_command(const ProtocolArgs& a) {
   const fs::path out = a.out.empty() ? fs::path("score-" + m.name) : fs::path(a.out);
   const OutputLock lock = lock_output(out);
   forward_interruptions();
-  fmt::print(stderr, "score {}: {} scene(s), {} run(s), {} job(s)\n", m.name, items.size(), specs.size(),
-             a.jobs);
+  fmt::print(stderr, "score {}: {} scene(s) of {}, {} run(s), {} job(s); reference where no exact: {}\n",
+             m.name, items.size(), fmt::join(a.score.sets, ", "), specs.size(), a.jobs,
+             ida_reference(a.score));
   const auto runs = execute_jobs(specs, out / "runs", launcher(), a.jobs, matrix.timeout);
   const std::vector<ScoreRow> rows = score_rows(items, runs);
   ScoreContext ctx{m.name,
                    m.origin,
-                   fmt::format("beamimpact score {} --out {} --jobs {}", m.name, out.string(), a.jobs),
+                   fmt::format("beamimpact score {} --out {} --jobs {} --sets {} --references {}", m.name,
+                               out.string(), a.jobs, fmt::join(a.score.sets, ","), a.score.references),
                    kVersion,
                    utc_now(),
-                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                   a.score};
   write_scorecard(out, ctx, rows);
   std::map<std::string, int> counts;
   for (const ScoreRow& r : rows) {
@@ -149,6 +155,16 @@ void add_protocol_commands(CLI::App& app) {
                 "The verification matrix giving references and tolerances "
                 "(default verification/matrix.toml)");
   s->add_option("--jobs", sa->jobs, "Runs in parallel")->capture_default_str();
+  s->add_option(
+       "--sets", sa->score.sets,
+       "Scene sets scored: paper (verification/scenes/paper), hard (verification/scenes/hard), exact "
+       "(the other scenes with an exact answer)")
+      ->delimiter(',')
+      ->capture_default_str();
+  s->add_option("--references", sa->score.references,
+                "IDA references: converged (rtol 1e-10, atol 1e-13, penalty 1e4 EA/le) or matrix (the matrix "
+                "case's settings: quicker, less strict; not for IDA itself)")
+      ->capture_default_str();
   add_methods_option(s);
   s->callback([sa] { score_command(*sa); });
 }

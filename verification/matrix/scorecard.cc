@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <solver/util/InputError.hpp>
 #include <solver/util/write_file_atomic.hpp>
 #include <verification/compare/compare_runs.hpp>
 #include <verification/matrix/reports.hpp>
@@ -34,9 +35,9 @@ std::string text(const std::optional<double>& v) { return v ? fmt::format("{:.3g
 
 /// IDA converged beyond its defaults, keeping the reference's own settings: time tolerances 100
 /// times tighter (rtol 1e-10, atol 1e-13) and a penalty 10 times stiffer (1e4 EA/le), so that
-/// IDA's step and penetration errors fall below the defaults' by about those factors. IDA's own
-/// scorecard takes it wherever its reference would be IDA, so IDA is never compared with its own
-/// run, and its errors show how far the default IDA that the other methods meet is from converged.
+/// IDA's step and penetration errors fall below the defaults' by about those factors. Every
+/// method's scorecard takes it wherever its reference would be IDA: IDA is never compared with
+/// its own run, and every method meets the same reference on a scene.
 JobSpec converged_ida(JobSpec ref) {
   const auto has = [&](const std::string& key) {
     return std::any_of(ref.set.begin(), ref.set.end(),
@@ -49,45 +50,90 @@ JobSpec converged_ida(JobSpec ref) {
   return ref;
 }
 
-}  // namespace
+const std::vector<std::string> kSets = {"paper", "hard", "exact"};
 
-std::vector<ScoreItem> score_items(const VerificationMatrix& matrix, const std::string& method,
-                                   const fs::path& data_root) {
-  std::vector<fs::path> scenes;
-  for (const char* folder : {"paper", "hard"}) {
-    std::vector<fs::path> in;
-    for (const auto& e : fs::directory_iterator(data_root / "verification/scenes" / folder))
+/// The scenes of one set, sorted: a folder's scene files, or (exact) every scene outside the
+/// paper and hard folders that a matrix case compares with the exact method, in matrix order.
+std::vector<fs::path> set_scenes(const std::string& set, const VerificationMatrix& matrix,
+                                 const fs::path& root) {
+  std::vector<fs::path> in;
+  if (set != "exact") {
+    for (const auto& e : fs::directory_iterator(root / "verification/scenes" / set))
       if (e.path().extension() == ".toml") in.push_back(normal(e.path()));
     std::sort(in.begin(), in.end());
-    scenes.insert(scenes.end(), in.begin(), in.end());
+    return in;
   }
-  for (const Case& c : matrix.cases)  // scenes with an exact answer
-    if (c.reference.method == "exact" &&
-        std::find(scenes.begin(), scenes.end(), normal(c.run.scene)) == scenes.end())
-      scenes.push_back(normal(c.run.scene));
+  const fs::path paper = normal(root / "verification/scenes/paper"),
+                 hard = normal(root / "verification/scenes/hard");
+  for (const Case& c : matrix.cases) {
+    const fs::path scene = normal(c.run.scene), folder = scene.parent_path();
+    if (c.reference.method == "exact" && folder != paper && folder != hard &&
+        std::find(in.begin(), in.end(), scene) == in.end())
+      in.push_back(scene);
+  }
+  return in;
+}
+
+/// The matrix case giving `scene`'s best reference for `method`, or nullptr.
+const Case* best_case(const VerificationMatrix& matrix, const fs::path& scene, const std::string& method) {
+  const Case* best = nullptr;
+  for (const Case& c : matrix.cases)
+    if (normal(c.run.scene) == scene && rank(c, method) < 100 &&
+        (!best || rank(c, method) < rank(*best, method)))
+      best = &c;
+  return best;
+}
+
+}  // namespace
+
+std::string ida_reference(const ScoreOptions& o) {
+  return o.references == "converged"
+             ? "IDA converged beyond its defaults: rtol 1e-10, atol 1e-13, penalty 1e4 EA/le, with the "
+               "case's own "
+               "settings"
+             : "IDA at the matrix case's settings (not converged further: --references matrix)";
+}
+
+void ScoreOptions::validate(const std::string& method) const {
+  if (sets.empty()) throw InputError("command line", "--sets", "expected one or more of paper, hard, exact");
+  for (std::size_t i = 0; i < sets.size(); ++i) {
+    if (std::find(kSets.begin(), kSets.end(), sets[i]) == kSets.end())
+      throw InputError("command line", "--sets", "expected paper, hard or exact, got '" + sets[i] + "'");
+    if (std::find(sets.begin(), sets.begin() + i, sets[i]) != sets.begin() + i)
+      throw InputError("command line", "--sets", "'" + sets[i] + "' is named twice");
+  }
+  if (references != "converged" && references != "matrix")
+    throw InputError("command line", "--references",
+                     "expected converged or matrix, got '" + references + "'");
+  if (references == "matrix" && method == "ida")
+    throw InputError(
+        "command line", "--references",
+        "IDA's own scorecard needs converged references (with matrix ones IDA would score its own runs)");
+}
+
+std::vector<ScoreItem> score_items(const VerificationMatrix& matrix, const std::string& method,
+                                   const fs::path& data_root, const ScoreOptions& options) {
+  options.validate(method);
+  const auto reference = [&](const JobSpec& ref) {
+    return ref.method == "ida" && options.references == "converged" ? converged_ida(ref) : ref;
+  };
   std::vector<ScoreItem> items;
-  for (const fs::path& scene : scenes) {
-    const Case* best = nullptr;
-    for (const Case& c : matrix.cases)
-      if (normal(c.run.scene) == scene && rank(c, method) < 100 &&
-          (!best || rank(c, method) < rank(*best, method)))
-        best = &c;
-    ScoreItem it;
-    it.run = JobSpec{scene, method, std::nullopt, "", {}, {}};
-    if (best) {
-      if (best->run.method == method) it.run = best->run;
-      it.reference = best->reference.method == "ida" && method == "ida" ? converged_ida(best->reference)
-                                                                        : best->reference;
-      it.reference_kind = best->reference.method;
-      it.gates = best->gates;
-      it.source = best->name();
-    } else {
-      const JobSpec ida{scene, "ida", std::nullopt, "", {}, {}};
-      it.reference = method == "ida" ? converged_ida(ida) : ida;
-      it.reference_kind = "ida";
+  for (const std::string& set : options.sets)
+    for (const fs::path& scene : set_scenes(set, matrix, data_root)) {
+      ScoreItem it;
+      it.run = JobSpec{scene, method, std::nullopt, "", {}, {}};
+      if (const Case* best = best_case(matrix, scene, method)) {
+        if (best->run.method == method) it.run = best->run;
+        it.reference = reference(best->reference);
+        it.reference_kind = best->reference.method;
+        it.gates = best->gates;
+        it.source = best->name();
+      } else {
+        it.reference = reference(JobSpec{scene, "ida", std::nullopt, "", {}, {}});
+        it.reference_kind = "ida";
+      }
+      items.push_back(std::move(it));
     }
-    items.push_back(std::move(it));
-  }
   return items;
 }
 
@@ -180,6 +226,8 @@ void write_scorecard(const fs::path& dir, const ScoreContext& ctx, const std::ve
                             {"command", ctx.command},
                             {"version", ctx.version},
                             {"made", ctx.made},
+                            {"sets", ctx.options.sets},
+                            {"references", ctx.options.references},
                             {"wall_seconds", ctx.wall_seconds},
                             {"counts", counts},
                             {"scenes", scenes},
@@ -199,14 +247,14 @@ void write_scorecard(const fs::path& dir, const ScoreContext& ctx, const std::ve
       "<h1>Scorecard: {0}</h1>\n<p>{1}</p>\n<p>Command: <code>{2}</code>; version {3}; made {4} (UTC); "
       "wall time {5:.1f} s.</p>\n<p>Quantities: {6}. Each run is compared with the best reference of its "
       "scene "
-      "(exact where the verification matrix has one, else IDA) under the matrix's own tolerance for that "
+      "(exact where the verification matrix has one, else {8}) under the matrix's own tolerance for that "
       "scene; "
       "error: the norm of <code>beamimpact compare</code> (relative unless the metric says otherwise); "
       "solver s: the method's own time (summary.json wall_seconds).</p>\n"
       "<table>\n<tr><th>scene</th><th>reference</th><th>quantity</th><th>error</th><th>tolerance</th>"
       "<th>status</th><th>solver s</th><th>note</th></tr>\n{7}</table>\n</body></html>\n",
       xml_escape(ctx.method), xml_escape(ctx.origin), xml_escape(ctx.command), xml_escape(ctx.version),
-      xml_escape(ctx.made), ctx.wall_seconds, xml_escape(tally), body);
+      xml_escape(ctx.made), ctx.wall_seconds, xml_escape(tally), body, ida_reference(ctx.options));
   write_file_atomic(dir / "scorecard.html", html);
 }
 

@@ -1,5 +1,6 @@
 // The scorecard's choice of reference and tolerances, read from the shipped matrix: exact where
-// the matrix compares a scene with it, else IDA; the method's own case first, then the paper's.
+// the matrix compares a scene with it, else IDA converged beyond its defaults; the method's own
+// case first, then the paper's.
 #include <verification/matrix/scorecard.hpp>
 
 #include <algorithm>
@@ -7,10 +8,19 @@
 
 #include <gtest/gtest.h>
 
+#include <solver/util/InputError.hpp>
+
 namespace beamimpact::verification {
 namespace {
 
 namespace fs = std::filesystem;
+
+/// What converged_ida adds to an IDA reference that sets none of these keys.
+const std::vector<std::string> kConverged = {"ida.rtol=1e-10", "ida.atol=1e-13", "ida.kn_factor=1e4"};
+
+bool has(const std::vector<std::string>& set, const std::string& s) {
+  return std::find(set.begin(), set.end(), s) != set.end();
+}
 
 const ScoreItem& item(const std::vector<ScoreItem>& items, const std::string& scene) {
   for (const auto& i : items)
@@ -42,11 +52,11 @@ TEST(Scorecard, PicksTheBestReferenceAndTheMatrixTolerances) {
   EXPECT_EQ(s4.run.method, "standin");
   EXPECT_FALSE(s4.run.dt);
   EXPECT_FALSE(s4.gates.empty());
-  // A hard scene the matrix has no case for: IDA at the scene's settings, errors without a verdict
-  // (IDA's own scorecard shows how far those settings are from converged).
+  // A hard scene the matrix has no case for: converged IDA at the scene's settings, errors without
+  // a verdict.
   const ScoreItem& grazing = item(standin, "grazing_1deg");
   EXPECT_EQ(grazing.reference.method, "ida");
-  EXPECT_TRUE(grazing.reference.set.empty());
+  EXPECT_EQ(grazing.reference.set, kConverged);
   EXPECT_TRUE(grazing.gates.empty());
   EXPECT_TRUE(grazing.source.empty());
   EXPECT_EQ(item(standin, "rigid_rod_oblique").reference_kind, "exact");
@@ -57,18 +67,76 @@ TEST(Scorecard, IdaIsNeverItsOwnReference) {
   const VerificationMatrix m = VerificationMatrix::load(root / "verification/matrix.toml");
   // Against itself every error would be 0 and every gate a pass that means nothing: IDA is scored
   // against a converged IDA run (or exact), whatever case of the matrix gives the tolerances.
-  const std::vector<std::string> converged = {"ida.rtol=1e-10", "ida.atol=1e-13", "ida.kn_factor=1e4"};
   for (const ScoreItem& it : score_items(m, "ida", root)) {
     EXPECT_NE(it.run.key(), it.reference.key()) << it.run.label();
-    if (it.reference_kind == "ida")
-      for (const std::string& c : converged)
-        EXPECT_NE(std::find(it.reference.set.begin(), it.reference.set.end(), c), it.reference.set.end())
-            << it.reference.label();
+    if (it.reference_kind == "ida") {
+      for (const std::string& c : kConverged) EXPECT_TRUE(has(it.reference.set, c)) << it.reference.label();
+    }
   }
   // A case's own reference settings stay (S4-60: IDA's converged friction regularisation).
   const auto ida = score_items(m, "ida", root);
   const auto& s60 = item(ida, "s4_oblique_60").reference.set;
-  EXPECT_NE(std::find(s60.begin(), s60.end(), "ida.friction_velocity=1e-5"), s60.end());
+  EXPECT_TRUE(has(s60, "ida.friction_velocity=1e-5"));
+  // With matrix references IDA would meet its own runs: refused, naming the option.
+  try {
+    score_items(m, "ida", root, ScoreOptions{{"paper"}, "matrix"});
+    ADD_FAILURE() << "IDA scored against matrix references";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "--references");
+  }
+}
+
+TEST(Scorecard, IdaReferencesAreConvergedUnlessMatrixReferencesAreAsked) {
+  const fs::path root = BEAMIMPACT_SOURCE;
+  const VerificationMatrix m = VerificationMatrix::load(root / "verification/matrix.toml");
+  // Each IDA reference of the paper's scorecard is an IDA reference the matrix writes for that
+  // scene (or IDA at the scene's settings where it has none), with the three converged settings
+  // added; --references matrix takes it as written.
+  const auto converged = score_items(m, "paper", root, ScoreOptions{{"paper", "hard"}, "converged"});
+  const auto written = score_items(m, "paper", root, ScoreOptions{{"paper", "hard"}, "matrix"});
+  ASSERT_EQ(converged.size(), written.size());
+  int ida = 0;
+  for (std::size_t i = 0; i < converged.size(); ++i) {
+    if (written[i].reference.method != "ida") continue;
+    ++ida;
+    std::vector<std::string> expect = written[i].reference.set;
+    expect.insert(expect.end(), kConverged.begin(), kConverged.end());
+    EXPECT_EQ(converged[i].reference.set, expect) << converged[i].run.label();
+    const bool in_matrix = std::any_of(m.cases.begin(), m.cases.end(), [&](const Case& c) {
+      return fs::absolute(c.run.scene).lexically_normal() == written[i].run.scene &&
+             c.reference.method == "ida" && c.reference.set == written[i].reference.set;
+    });
+    EXPECT_TRUE(in_matrix || (written[i].source.empty() && written[i].reference.set.empty()))
+        << written[i].run.label();
+  }
+  EXPECT_GE(ida, 10);  // S3 at 10 elements, S4 x3 and the hard scenes without exact answers
+}
+
+TEST(Scorecard, SetsSelectTheScenesInOrderAndBadOptionsNameTheOption) {
+  const fs::path root = BEAMIMPACT_SOURCE;
+  const VerificationMatrix m = VerificationMatrix::load(root / "verification/matrix.toml");
+  std::size_t paper_files = 0;
+  for (const auto& e : fs::directory_iterator(root / "verification/scenes/paper"))
+    paper_files += e.path().extension() == ".toml";
+  const auto paper = score_items(m, "paper", root, ScoreOptions{{"paper"}, "converged"});
+  EXPECT_EQ(paper.size(), paper_files);
+  for (const ScoreItem& it : paper) EXPECT_EQ(it.run.scene.parent_path().filename(), "paper");
+  // The exact set: the six extra scenes with an exact answer, none of the paper's (S1 has one too).
+  const auto exact = score_items(m, "paper", root, ScoreOptions{{"exact"}, "converged"});
+  EXPECT_EQ(exact.size(), 6u);
+  for (const ScoreItem& it : exact) EXPECT_EQ(it.reference_kind, "exact") << it.run.label();
+  const auto key_of = [&](const ScoreOptions& o) {
+    try {
+      score_items(m, "paper", root, o);
+    } catch (const InputError& e) {
+      return e.key();
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(key_of(ScoreOptions{{"papers"}, "converged"}), "--sets");
+  EXPECT_EQ(key_of(ScoreOptions{{"paper", "paper"}, "converged"}), "--sets");
+  EXPECT_EQ(key_of(ScoreOptions{{}, "converged"}), "--sets");
+  EXPECT_EQ(key_of(ScoreOptions{{"hard"}, "tight"}), "--references");
 }
 
 }  // namespace

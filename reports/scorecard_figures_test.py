@@ -39,8 +39,9 @@ def test_bad_input_exit_2_with_one_line(tmp_path):
     assert r.returncode == 2 and "scorecard.json" in r.stderr and len(r.stderr.strip().splitlines()) == 1
 
 
-def test_score_refuses_unknown_sets_and_matrix_references_for_ida(tmp_path):
-    for args, key in ((["paper", "--sets", "paper,papers"], "--sets"), (["ida", "--references", "matrix"], "--references")):
+def test_score_refuses_unknown_sets_matrix_references_for_ida_and_no_time(tmp_path):
+    for args, key in ((["paper", "--sets", "paper,papers"], "--sets"), (["ida", "--references", "matrix"], "--references"),
+                      (["paper", "--timeout=0"], "--timeout")):
         r = subprocess.run([EXE, "score"] + args + ["--out", str(tmp_path / "s")], cwd=ROOT, capture_output=True, text=True)
         assert r.returncode == 2, r.stderr
         assert key in r.stderr and len(r.stderr.strip().splitlines()) == 1, r.stderr

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 
 #include <fmt/format.h>
@@ -12,6 +13,7 @@
 #include <api/registry.hpp>
 #include <beamimpact/version.hpp>
 #include <solver/scene/SceneError.hpp>
+#include <solver/util/InputError.hpp>
 #include <verification/matrix/conform.hpp>
 #include <verification/matrix/execute_jobs.hpp>
 #include <verification/matrix/interruption.hpp>
@@ -33,6 +35,7 @@ struct ProtocolArgs {
   std::string method, out, matrix;
   int jobs = 1;
   double timeout = 600.0;
+  std::optional<double> score_timeout;  ///< s per run; the matrix's timeout when not given
   ScoreOptions score;
 };
 
@@ -84,6 +87,9 @@ void score_command(const ProtocolArgs& a) {
   const auto start = std::chrono::steady_clock::now();
   const Method& m = runnable(a.method, "score");
   a.score.validate(m.name);
+  if (a.score_timeout && !(*a.score_timeout > 0.0))
+    throw InputError("command line", "--timeout",
+                     fmt::format("expected seconds > 0, got {}", *a.score_timeout));
   const fs::path root = data_folder("score");
   const VerificationMatrix matrix =
       VerificationMatrix::load(a.matrix.empty() ? root / "verification/matrix.toml" : fs::path(a.matrix));
@@ -99,16 +105,19 @@ void score_command(const ProtocolArgs& a) {
   fmt::print(stderr, "score {}: {} scene(s) of {}, {} run(s), {} job(s); reference where no exact: {}\n",
              m.name, items.size(), fmt::join(a.score.sets, ", "), specs.size(), a.jobs,
              ida_reference(a.score));
-  const auto runs = execute_jobs(specs, out / "runs", launcher(), a.jobs, matrix.timeout);
+  const auto runs =
+      execute_jobs(specs, out / "runs", launcher(), a.jobs, a.score_timeout.value_or(matrix.timeout));
   const std::vector<ScoreRow> rows = score_rows(items, runs);
-  ScoreContext ctx{m.name,
-                   m.origin,
-                   fmt::format("beamimpact score {} --out {} --jobs {} --sets {} --references {}", m.name,
-                               out.string(), a.jobs, fmt::join(a.score.sets, ","), a.score.references),
-                   kVersion,
-                   utc_now(),
-                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-                   a.score};
+  ScoreContext ctx{
+      m.name,
+      m.origin,
+      fmt::format("beamimpact score {} --out {} --jobs {} --sets {} --references {} --timeout {}", m.name,
+                  out.string(), a.jobs, fmt::join(a.score.sets, ","), a.score.references,
+                  a.score_timeout.value_or(matrix.timeout)),
+      kVersion,
+      utc_now(),
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+      a.score};
   write_scorecard(out, ctx, rows);
   std::map<std::string, int> counts;
   for (const ScoreRow& r : rows) {
@@ -155,6 +164,7 @@ void add_protocol_commands(CLI::App& app) {
                 "The verification matrix giving references and tolerances "
                 "(default verification/matrix.toml)");
   s->add_option("--jobs", sa->jobs, "Runs in parallel")->capture_default_str();
+  s->add_option("--timeout", sa->score_timeout, "s per run (default: the matrix's timeout)");
   s->add_option(
        "--sets", sa->score.sets,
        "Scene sets scored: paper (verification/scenes/paper), hard (verification/scenes/hard), exact "

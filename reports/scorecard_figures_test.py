@@ -1,6 +1,7 @@
 """scorecard_figures.py on a real scorecard (`beamimpact score paper --sets paper`): one embedded diagram per
 scored scene with a committed work-precision set, the page still self-contained, a second run
 replacing the figures instead of adding to them, and bad input refused with exit 2."""
+import json
 import os
 import re
 import subprocess
@@ -46,3 +47,20 @@ def test_score_refuses_unknown_sets_matrix_references_for_ida_and_no_time(tmp_pa
         assert r.returncode == 2, r.stderr
         assert key in r.stderr and len(r.stderr.strip().splitlines()) == 1, r.stderr
         assert not (tmp_path / "s" / "scorecard.json").exists()
+
+
+def test_several_methods_share_their_references(tmp_path):
+    out = tmp_path / "score"
+    r = subprocess.run([EXE, "score", "paper", "example", "--sets", "exact", "--references", "matrix", "--out", str(out),
+                        "--jobs", "2"], cwd=ROOT, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    cards = {}
+    for m in ("paper", "example"):
+        with open(out / m / "scorecard.json") as f:
+            cards[m] = json.load(f)
+        assert cards[m]["method"] == m and "paper example" in cards[m]["command"]
+    refs = {(s["scene"], s["reference"]) for c in cards.values() for s in c["scenes"]}
+    assert all(s["reference_kind"] == "exact" for c in cards.values() for s in c["scenes"])
+    # The six exact-answer scenes' references, each run once for both scorecards.
+    assert len(refs) == len(cards["paper"]["scenes"]) == 6
+    assert len([d for d in os.listdir(out / "runs") if d.endswith(".exact")]) == 6

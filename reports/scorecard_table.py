@@ -32,8 +32,8 @@ case's own IDA settings; `ida, converged` in the table): IDA is never scored aga
 and IDA's row shows how far its defaults are from converged. Made with:
 
 ```sh
+build/beamimpact score paper ida fenicsx siconos example --out /tmp/scores --jobs 2 --timeout 5400
 for m in paper ida fenicsx siconos example; do
-  build/beamimpact score $m --out /tmp/scores/$m --jobs 2
   /usr/bin/python3 reports/scorecard_figures.py /tmp/scores/$m     # scorecard.html with the diagrams
 done
 /usr/bin/python3 reports/scorecard_table.py /tmp/scores/{paper,ida,fenicsx,siconos,example} --set reports/scorecards

@@ -1,5 +1,6 @@
 #include "command_protocol.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 #include <memory>
@@ -33,6 +34,7 @@ using namespace verification;
 
 struct ProtocolArgs {
   std::string method, out, matrix;
+  std::vector<std::string> methods;  ///< score: one or more
   int jobs = 1;
   double timeout = 600.0;
   std::optional<double> score_timeout;  ///< s per run; the matrix's timeout when not given
@@ -83,42 +85,8 @@ void conform_command(const ProtocolArgs& a) {
   if (failed) throw CommandExit{1};
 }
 
-void score_command(const ProtocolArgs& a) {
-  const auto start = std::chrono::steady_clock::now();
-  const Method& m = runnable(a.method, "score");
-  a.score.validate(m.name);
-  if (a.score_timeout && !(*a.score_timeout > 0.0))
-    throw InputError("command line", "--timeout",
-                     fmt::format("expected seconds > 0, got {}", *a.score_timeout));
-  const fs::path root = data_folder("score");
-  const VerificationMatrix matrix =
-      VerificationMatrix::load(a.matrix.empty() ? root / "verification/matrix.toml" : fs::path(a.matrix));
-  const std::vector<ScoreItem> items = score_items(matrix, m.name, root, a.score);
-  std::vector<JobSpec> specs;
-  std::set<std::string> seen;
-  for (const ScoreItem& it : items)
-    for (const JobSpec* s : {&it.run, &it.reference})
-      if (seen.insert(s->key()).second) specs.push_back(*s);
-  const fs::path out = a.out.empty() ? fs::path("score-" + m.name) : fs::path(a.out);
-  const OutputLock lock = lock_output(out);
-  forward_interruptions();
-  fmt::print(stderr, "score {}: {} scene(s) of {}, {} run(s), {} job(s); reference where no exact: {}\n",
-             m.name, items.size(), fmt::join(a.score.sets, ", "), specs.size(), a.jobs,
-             ida_reference(a.score));
-  const auto runs =
-      execute_jobs(specs, out / "runs", launcher(), a.jobs, a.score_timeout.value_or(matrix.timeout));
-  const std::vector<ScoreRow> rows = score_rows(items, runs);
-  ScoreContext ctx{
-      m.name,
-      m.origin,
-      fmt::format("beamimpact score {} --out {} --jobs {} --sets {} --references {} --timeout {}", m.name,
-                  out.string(), a.jobs, fmt::join(a.score.sets, ","), a.score.references,
-                  a.score_timeout.value_or(matrix.timeout)),
-      kVersion,
-      utc_now(),
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-      a.score};
-  write_scorecard(out, ctx, rows);
+/// Prints a scored method's rows and its tally; the tally is returned for the summary line.
+std::string print_score(const std::vector<ScoreRow>& rows) {
   std::map<std::string, int> counts;
   for (const ScoreRow& r : rows) {
     fmt::print("{:<26} {:<14} {:>8.3f} s  vs {}\n", r.item->run.scene_name(), status_name(r.outcome.status),
@@ -133,8 +101,58 @@ void score_command(const ProtocolArgs& a) {
   std::string tally;
   for (const auto& [status, n] : counts)
     tally += fmt::format("{}{} {}", tally.empty() ? "" : ", ", n, status);
-  fmt::print("score {}: {}\nscorecard: {} {}\n", m.name, tally, (out / "scorecard.json").string(),
-             (out / "scorecard.html").string());
+  return tally;
+}
+
+/// Scores one method or several: every run (a reference shared by several methods once) in one
+/// set of jobs under DIR/runs; one method's scorecard in DIR, several methods' in DIR/NAME.
+void score_command(const ProtocolArgs& a) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<const Method*> ms;
+  for (const std::string& name : a.methods) {
+    ms.push_back(&runnable(name, "score"));
+    a.score.validate(name);
+    if (std::count(a.methods.begin(), a.methods.end(), name) > 1)
+      throw InputError("command line", "NAME", "'" + name + "' is named twice");
+  }
+  if (a.score_timeout && !(*a.score_timeout > 0.0))
+    throw InputError("command line", "--timeout",
+                     fmt::format("expected seconds > 0, got {}", *a.score_timeout));
+  const fs::path root = data_folder("score");
+  const VerificationMatrix matrix =
+      VerificationMatrix::load(a.matrix.empty() ? root / "verification/matrix.toml" : fs::path(a.matrix));
+  std::vector<std::vector<ScoreItem>> items;
+  std::vector<JobSpec> specs;
+  std::set<std::string> seen;
+  for (const Method* m : ms) {
+    items.push_back(score_items(matrix, m->name, root, a.score));
+    for (const ScoreItem& it : items.back())
+      for (const JobSpec* s : {&it.run, &it.reference})
+        if (seen.insert(s->key()).second) specs.push_back(*s);
+  }
+  const std::string names = fmt::format("{}", fmt::join(a.methods, " "));
+  const fs::path out =
+      a.out.empty() ? fs::path("score-" + fmt::format("{}", fmt::join(a.methods, "-"))) : fs::path(a.out);
+  const OutputLock lock = lock_output(out);
+  forward_interruptions();
+  fmt::print(stderr, "score {}: {} scene(s) of {}, {} run(s), {} job(s); reference where no exact: {}\n",
+             names, items.front().size(), fmt::join(a.score.sets, ", "), specs.size(), a.jobs,
+             ida_reference(a.score));
+  const double timeout = a.score_timeout.value_or(matrix.timeout);
+  const auto runs = execute_jobs(specs, out / "runs", launcher(), a.jobs, timeout);
+  const std::string command =
+      fmt::format("beamimpact score {} --out {} --jobs {} --sets {} --references {} --timeout {}", names,
+                  out.string(), a.jobs, fmt::join(a.score.sets, ","), a.score.references, timeout);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (std::size_t i = 0; i < ms.size(); ++i) {
+    const std::vector<ScoreRow> rows = score_rows(items[i], runs);
+    const fs::path dir = ms.size() == 1 ? out : out / ms[i]->name;
+    write_scorecard(
+        dir, ScoreContext{ms[i]->name, ms[i]->origin, command, kVersion, utc_now(), wall, a.score}, rows);
+    const std::string tally = print_score(rows);
+    fmt::print("score {}: {}\nscorecard: {} {}\n", ms[i]->name, tally, (dir / "scorecard.json").string(),
+               (dir / "scorecard.html").string());
+  }
   if (interruption()) throw CommandExit{interrupted_exit_code()};
 }
 
@@ -157,9 +175,14 @@ void add_protocol_commands(CLI::App& app) {
       "score",
       "Score a method on the benchmark set against the best reference of each scene: scorecard.json and "
       "scorecard.html");
-  s->add_option("NAME", sa->method, "The method (`beamimpact methods`)")->required();
-  s->add_option("--out", sa->out,
-                "Output directory (runs/, scorecard.json, scorecard.html; default score-NAME)");
+  s->add_option("NAME", sa->methods,
+                "The method (`beamimpact methods`), or several: their runs in one set of jobs, a reference "
+                "they share run once, each scorecard in DIR/NAME")
+      ->required();
+  s->add_option(
+      "--out", sa->out,
+      "Output directory (runs/, scorecard.json, scorecard.html, or NAME/ for each of several methods; "
+      "default score-NAME)");
   s->add_option("--matrix", sa->matrix,
                 "The verification matrix giving references and tolerances "
                 "(default verification/matrix.toml)");

@@ -188,7 +188,9 @@ Study Study::load(const fs::path& file_in) {
   if (r.has("description")) s.description = r.string("description", "one line");
   s.scene = (s.file.parent_path() / r.string("scene", "a scene file relative to the study file"))
                 .lexically_normal();
-  if (!fs::exists(s.scene)) r.fail("scene", "scene file " + s.scene.string() + " not found");
+  std::error_code unreadable;  // e.g. a name too long for the file system: not found either
+  if (!fs::exists(s.scene, unreadable))
+    r.fail("scene", "scene file " + InputError::clip(s.scene.string(), 160) + " not found");
   s.methods = r.strings("methods", true);
   if (s.methods.empty()) r.fail("methods", "expected at least one method (" + method_names() + ")");
   for (const auto& m : s.methods) (void)method(m, file, "methods");

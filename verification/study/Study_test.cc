@@ -37,6 +37,20 @@ std::string message(const std::string& name, const std::string& text) {
   return "no error";
 }
 
+// A scene path longer than the file system allows (ENAMETOOLONG, 255 bytes a name) is a missing
+// scene, not an error of the file system.
+TEST(Study, SceneNameTooLongIsBadInputNamingTheKey) {
+  const fs::path p = fs::temp_directory_path() / "beamimpact_study_test_long.toml";
+  std::ofstream(p) << "name = \"long\"\nscene = \"" << std::string(300, 'b') << ".toml\"\n" << kMethods;
+  try {
+    (void)Study::load(p);
+    FAIL() << "a missing scene was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("scene"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("not found"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Study, GridIsTheFullProductLastParameterFastest) {
   const Study s = Study::load(write_study("grid", kMethods + R"(
 [[parameter]]

@@ -1,41 +1,21 @@
 // End-to-end: the `beamimpact` binary's exit codes, messages and outputs for good and bad input.
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <nlohmann/json.hpp>
 
 #include <solver/testing/test_scenes.hpp>
+#include <tools/beamimpact/testing/cli_run.hpp>
 
 namespace {
 
 namespace fs = std::filesystem;
 using beamimpact::testing::paper_scene;
-
-struct Result {
-  int code;
-  std::string output;  // stdout and stderr
-};
-
-Result run(const std::string& args) {
-  const std::string cmd = std::string(BEAMIMPACT_EXE) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  while (std::fgets(buf.data(), buf.size(), p)) out += buf.data();
-  const int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = beamimpact::testing::temp_path("cli_" + name);
-  fs::remove_all(d);
-  return d;
-}
+using Result = beamimpact::testing::CliResult;
+using beamimpact::testing::fresh_dir;
+using beamimpact::testing::run_cli;
 
 std::string bad_scene(const std::string& from, const std::string& to) {
   std::ifstream in(paper_scene("s2_transverse"));
@@ -50,7 +30,7 @@ std::string bad_scene(const std::string& from, const std::string& to) {
 
 TEST(Cli, RunWritesHistoryAndSummary) {
   const fs::path out = fresh_dir("ok");
-  const Result r = run("run " + paper_scene("s1_central") + " --out " + out.string());
+  const Result r = run_cli("run " + paper_scene("s1_central") + " --out " + out.string());
   ASSERT_EQ(r.code, 0) << r.output;
   std::ifstream h(out / "history.csv");
   std::string header;
@@ -133,7 +113,7 @@ TEST(Cli, BadInputExitsTwoWithOneMessageAndNoResult) {
   };
   for (const Bad& c : cases) {
     const fs::path out = fresh_dir("bad");
-    const Result r = run(c.args + " --out " + out.string());
+    const Result r = run_cli(c.args + " --out " + out.string());
     EXPECT_EQ(r.code, 2) << c.what << ": " << r.output;
     EXPECT_NE(r.output.find(c.says), std::string::npos) << c.what << ": " << r.output;
     EXPECT_EQ(r.output.find("error:"), r.output.rfind("error:")) << c.what << ": one message";
@@ -146,7 +126,7 @@ TEST(Cli, BadInputExitsTwoWithOneMessageAndNoResult) {
 // names the file and the key and points at the body-axis roller; in body axes there is none.
 TEST(Cli, GlobalRollerOnAnInclinedBodyWarns) {
   const std::string inclined = bad_scene("end = [10.0, 0.0]", "end = [8.0, -6.0]");
-  const Result r = run("run " + inclined + " --quiet --out " + fresh_dir("roller").string());
+  const Result r = run_cli("run " + inclined + " --quiet --out " + fresh_dir("roller").string());
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_NE(r.output.find("warning: " + inclined + ": key 'bodies[1].supports[1].fix'"), std::string::npos)
       << r.output;
@@ -156,15 +136,15 @@ TEST(Cli, GlobalRollerOnAnInclinedBodyWarns) {
   text.replace(text.find("fix = [\"y\"]"), 11, "fix = [\"normal\"]");
   const std::string across = beamimpact::testing::temp_path("cli_roller_across.toml").string();
   std::ofstream(across) << text;
-  const Result body = run("run " + across + " --quiet --out " + fresh_dir("roller_across").string());
+  const Result body = run_cli("run " + across + " --quiet --out " + fresh_dir("roller_across").string());
   ASSERT_EQ(body.code, 0) << body.output;
   EXPECT_EQ(body.output.find("warning"), std::string::npos) << body.output;
 }
 
 TEST(Cli, LongValuesAreCutInTheMessage) {
   // A 5000-character value was echoed whole; the message keeps 80 characters of it.
-  const Result r = run("run " + paper_scene("s1_central") + " --out " + fresh_dir("long").string() +
-                       " --set contacts[0].node=" + std::string(5000, 'x'));
+  const Result r = run_cli("run " + paper_scene("s1_central") + " --out " + fresh_dir("long").string() +
+                           " --set contacts[0].node=" + std::string(5000, 'x'));
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find("key 'contacts[0].node'"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("xxxxxxxxxx..."), std::string::npos) << r.output;
@@ -175,8 +155,8 @@ TEST(Cli, QuietPrintsNothingAndAllowLongRuns) {
   // 5e5 steps x 66 DOFs = 3.3e7 DOF-steps is ordinary and passes with --allow-long too. A run
   // over 1 s shows progress: the sanitizer build (checked: progress lines before the fix), not
   // always the release build (0.5 s), where this checks the flags only.
-  const Result r = run("run " + paper_scene("s1_central") + " --out " + fresh_dir("quiet").string() +
-                       " --quiet --allow-long --set time.end=5000");
+  const Result r = run_cli("run " + paper_scene("s1_central") + " --out " + fresh_dir("quiet").string() +
+                           " --quiet --allow-long --set time.end=5000");
   EXPECT_EQ(r.code, 0) << r.output;
   EXPECT_EQ(r.output, "");
 }
@@ -184,11 +164,11 @@ TEST(Cli, QuietPrintsNothingAndAllowLongRuns) {
 TEST(Cli, FailedRerunRemovesAStaleSummary) {
   // A directory that held a complete result must not look complete after a failed run into it.
   const fs::path out = fresh_dir("stale");
-  ASSERT_EQ(run("run " + paper_scene("s1_central") + " --out " + out.string()).code, 0);
+  ASSERT_EQ(run_cli("run " + paper_scene("s1_central") + " --out " + out.string()).code, 0);
   ASSERT_TRUE(fs::exists(out / "summary.json"));
   // dt = 0.2 s is twice the critical step: allowed by the flag, the run diverges -> exit 3.
-  const Result r = run("run " + paper_scene("s1_central") + " --out " + out.string() +
-                       " --set time.dt=0.2 --set time.allow_above_critical=true --set time.end=400");
+  const Result r = run_cli("run " + paper_scene("s1_central") + " --out " + out.string() +
+                           " --set time.dt=0.2 --set time.allow_above_critical=true --set time.end=400");
   EXPECT_EQ(r.code, 3) << r.output;
   EXPECT_NE(r.output.find("diverged"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out / "summary.json"));

@@ -8,45 +8,17 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <tools/beamimpact/testing/cli_run.hpp>
+
 namespace beamimpact {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int code;
-  std::string out;
-};
+using Result = testing::CliResult;
 
-class Commands : public ::testing::Test {
+class Commands : public testing::CliTest {
  protected:
-  void SetUp() override {
-    src_ = BEAMIMPACT_SOURCE;
-    exe_ = BEAMIMPACT_EXE;
-    tmp_ = fs::temp_directory_path() / fmt::format("beamimpact_commands_{}", ::getpid());
-    fs::remove_all(tmp_);
-    fs::create_directories(tmp_);
-  }
-  void TearDown() override { fs::remove_all(tmp_); }
-
-  Result run(const std::string& args) {
-    const fs::path log = tmp_ / "out.txt";
-    const int rc = std::system(
-        fmt::format("cd '{}' && '{}' {} > '{}' 2>&1", src_.string(), exe_.string(), args, log.string())
-            .c_str());
-    std::ifstream in(log);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return {WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, ss.str()};
-  }
-
-  std::string read(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  }
-
   fs::path matrix(const std::string& body) {
     const fs::path p = tmp_ / "m.toml";
     std::ofstream(p)
@@ -57,7 +29,7 @@ class Commands : public ::testing::Test {
     return p;
   }
 
-  fs::path src_, exe_, tmp_;
+  const fs::path src_ = BEAMIMPACT_SOURCE;
 };
 
 // The S1 paper rows of the real matrix pass, and the JUnit file names scene, method and dt.
@@ -65,7 +37,7 @@ TEST_F(Commands, VerifyNamesCasesBySceneMethodAndDt) {
   const Result r = run(
       fmt::format("verify verification/matrix.toml --only 's1_central paper dt=0.01 vs' --out '{}' --jobs 2",
                   (tmp_ / "v").string()));
-  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(r.code, 0) << r.output;
   const std::string junit = read(tmp_ / "v" / "junit.xml");
   EXPECT_NE(junit.find("<testsuite name=\"s1_central\""), std::string::npos) << junit;
   EXPECT_NE(junit.find("classname=\"s1_central.paper.dt=0.01\""), std::string::npos) << junit;
@@ -95,7 +67,7 @@ gates = [{ metric = "impulse", tol = 0.01, why = "a method whose program is miss
     const fs::path m = matrix(b);
     const Result r = run(fmt::format("verify '{}' --methods '{}' --out '{}'", m.string(), methods.string(),
                                      (tmp_ / "v").string()));
-    EXPECT_EQ(r.code, required ? 1 : 0) << r.out;
+    EXPECT_EQ(r.code, required ? 1 : 0) << r.output;
     const std::string junit = read(tmp_ / "v" / "junit.xml");
     EXPECT_NE(junit.find("its check &apos;/bin/false&apos; exited 1"), std::string::npos) << junit;
     EXPECT_NE(junit.find(required ? "<failure" : "<skipped"), std::string::npos) << junit;
@@ -112,9 +84,9 @@ reference = { method = "paper" }
 gates = [{ metric = "impulse", tol = 0.01, why = "a method that does not exist" }]
 )");
   const Result r = run(fmt::format("verify '{}' --out '{}'", m.string(), (tmp_ / "v").string()));
-  EXPECT_EQ(r.code, 2) << r.out;
-  EXPECT_NE(r.out.find("case[0].method"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("paper, exact, ida, fenicsx"), std::string::npos) << r.out;
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("case[0].method"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("paper, exact, ida, fenicsx"), std::string::npos) << r.output;
 }
 
 // Bad matrix: one message naming the file and the key, exit code 2, no report presented.
@@ -127,9 +99,9 @@ reference = { method = "ida" }
 gates = [{ metric = "impluse", tol = 0.01, why = "misspelt metric name" }]
 )");
   const Result r = run(fmt::format("verify '{}' --out '{}'", m.string(), (tmp_ / "v").string()));
-  EXPECT_EQ(r.code, 2) << r.out;
-  EXPECT_NE(r.out.find(m.string()), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("case[0].gates[0].metric"), std::string::npos) << r.out;
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find(m.string()), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("case[0].gates[0].metric"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(tmp_ / "v" / "report.md"));
 }
 
@@ -145,7 +117,7 @@ TEST_F(Commands, ARefusedRerunLeavesNoEarlierResultBehind) {
   std::ofstream(out / "notes.txt") << "the user's own file\n";
   const Result refused = run(fmt::format(
       "run verification/scenes/paper/s1_central.toml --out '{}' --quiet --set bodies.A.E=-1", out.string()));
-  EXPECT_EQ(refused.code, 2) << refused.out;
+  EXPECT_EQ(refused.code, 2) << refused.output;
   EXPECT_FALSE(fs::exists(out / "summary.json"));
   EXPECT_FALSE(fs::exists(out / "history.csv"));
   EXPECT_TRUE(fs::exists(out / "notes.txt"));
@@ -155,7 +127,7 @@ TEST_F(Commands, ARefusedRerunLeavesNoEarlierResultBehind) {
   std::ofstream(v / "junit.xml") << "<testsuites failures=\"0\"/>\n";
   const Result bad =
       run(fmt::format("verify '{}' --out '{}'", matrix("[[case]]\nscene = \"nope\"\n").string(), v.string()));
-  EXPECT_EQ(bad.code, 2) << bad.out;
+  EXPECT_EQ(bad.code, 2) << bad.output;
   EXPECT_FALSE(fs::exists(v / "report.md"));
   EXPECT_FALSE(fs::exists(v / "junit.xml"));
 }
@@ -181,8 +153,8 @@ TEST_F(Commands, MatrixTimeoutAndMeshOutOfRangeExitTwo) {
     else
       m = matrix(b.body);
     const Result r = run(fmt::format("verify '{}' --out '{}'", m.string(), (tmp_ / "v").string()));
-    EXPECT_EQ(r.code, 2) << b.key << ": " << r.out;
-    EXPECT_NE(r.out.find(fmt::format("key '{}'", b.key)), std::string::npos) << b.key << ": " << r.out;
+    EXPECT_EQ(r.code, 2) << b.key << ": " << r.output;
+    EXPECT_NE(r.output.find(fmt::format("key '{}'", b.key)), std::string::npos) << b.key << ": " << r.output;
   }
 }
 
@@ -190,9 +162,9 @@ TEST_F(Commands, MatrixTimeoutAndMeshOutOfRangeExitTwo) {
 TEST_F(Commands, VerifyOfAnEmptySelectionExitsTwo) {
   const Result r =
       run(fmt::format("verify verification/matrix.toml --only NOMATCH --out '{}'", (tmp_ / "v").string()));
-  EXPECT_EQ(r.code, 2) << r.out;
-  EXPECT_NE(r.out.find("--only"), std::string::npos) << r.out;
-  EXPECT_EQ(r.out.find("passed"), std::string::npos) << r.out;
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("--only"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("passed"), std::string::npos) << r.output;
 }
 
 // sweep: a fraction above the critical step and an --out that is a file are refused before any
@@ -200,14 +172,14 @@ TEST_F(Commands, VerifyOfAnEmptySelectionExitsTwo) {
 TEST_F(Commands, SweepRefusesFractionAboveOneAndAFileAsOut) {
   const std::string s4 = "verification/scenes/paper/s4_oblique_90.toml";
   Result r = run(fmt::format("sweep {} --fraction 0.5,2 --out '{}'", s4, (tmp_ / "f").string()));
-  EXPECT_EQ(r.code, 2) << r.out;
-  EXPECT_NE(r.out.find("expected fractions of the critical step in (0, 1], got 2"), std::string::npos)
-      << r.out;
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("expected fractions of the critical step in (0, 1], got 2"), std::string::npos)
+      << r.output;
   const fs::path file = tmp_ / "a_file";
   std::ofstream(file) << "not a directory\n";
   r = run(fmt::format("sweep verification/scenes/paper/s1_central.toml --dt 0.01 --out '{}'", file.string()));
-  EXPECT_EQ(r.code, 2) << r.out;
-  EXPECT_NE(r.out.find("key '--out'"), std::string::npos) << r.out;
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("key '--out'"), std::string::npos) << r.output;
 }
 
 // A scene path the file system refuses (a name longer than NAME_MAX, found by the matrix fuzz
@@ -225,19 +197,19 @@ gates = [{{ metric = "impulse", tol = 0.01, why = "a scene that cannot exist" }}
 )",
                                         name));
   Result r = run(fmt::format("verify '{}' --out '{}'", m.string(), (tmp_ / "v").string()));
-  EXPECT_EQ(r.code, 2) << r.out;
-  EXPECT_NE(r.out.find("case[0].scene"), std::string::npos) << r.out;
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("case[0].scene"), std::string::npos) << r.output;
   r = run(fmt::format("sweep {} --dt 0.01 --out '{}'", name, (tmp_ / "s").string()));
-  EXPECT_EQ(r.code, 2) << r.out;
-  EXPECT_NE(r.out.find("scene file not found"), std::string::npos) << r.out;
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("scene file not found"), std::string::npos) << r.output;
   // An --out the file system refuses: exit 2, the path cut to 160 characters, no library wording.
   r = run(fmt::format("run verification/scenes/paper/s1_central.toml --out '{}'", (tmp_ / name).string()));
-  EXPECT_EQ(r.code, 2) << r.out;
-  EXPECT_NE(r.out.find("key '--out': expected a directory that can be written: File name too long"),
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("key '--out': expected a directory that can be written: File name too long"),
             std::string::npos)
-      << r.out;
-  EXPECT_EQ(r.out.find("filesystem error"), std::string::npos) << r.out;
-  EXPECT_LT(r.out.size(), 300u) << r.out;
+      << r.output;
+  EXPECT_EQ(r.output.find("filesystem error"), std::string::npos) << r.output;
+  EXPECT_LT(r.output.size(), 300u) << r.output;
 }
 
 // compare: prints every norm with its definition; a directory that is not a run exits 2.
@@ -248,8 +220,8 @@ TEST_F(Commands, CompareRunsAndRejectsNonRuns) {
             0);
   const Result r = run(fmt::format("compare '{}' '{}' --json '{}'", (tmp_ / "a").string(),
                                    (tmp_ / "b").string(), (tmp_ / "c.json").string()));
-  EXPECT_EQ(r.code, 0) << r.out;
-  EXPECT_NE(r.out.find("I.rel_linf: max_t |a-b| / max_t |b|"), std::string::npos) << r.out;
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("I.rel_linf: max_t |a-b| / max_t |b|"), std::string::npos) << r.output;
   EXPECT_TRUE(fs::exists(tmp_ / "c.json"));
   // --json DIR: DIR/compare.json, and no compare.json.partial or DIR.partial left beside it
   fs::create_directories(tmp_ / "cdir");
@@ -260,8 +232,8 @@ TEST_F(Commands, CompareRunsAndRejectsNonRuns) {
   EXPECT_EQ(read(tmp_ / "cdir" / "compare.json"), read(tmp_ / "c.json"));
   EXPECT_FALSE(fs::exists(tmp_ / "cdir.partial"));
   const Result bad = run(fmt::format("compare '{}' '{}'", tmp_.string(), (tmp_ / "b").string()));
-  EXPECT_EQ(bad.code, 2) << bad.out;
-  EXPECT_NE(bad.out.find("summary.json"), std::string::npos) << bad.out;
+  EXPECT_EQ(bad.code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("summary.json"), std::string::npos) << bad.output;
 }
 
 // sweep: one row per dt with wall time and the norms against the reference; bad dt exits 2.
@@ -269,7 +241,7 @@ TEST_F(Commands, SweepTabulatesEachStep) {
   const std::string s1 = "verification/scenes/paper/s1_central.toml";
   const Result r = run(fmt::format("sweep {} --dt 0.01,0.005 --reference exact --out '{}' --jobs 2", s1,
                                    (tmp_ / "sw").string()));
-  ASSERT_EQ(r.code, 0) << r.out;
+  ASSERT_EQ(r.code, 0) << r.output;
   const std::string md = read(tmp_ / "sw" / "sweep.md");
   EXPECT_NE(md.find("| 0.01 | scene | 400 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| 0.005 | scene | 800 |"), std::string::npos) << md;
@@ -303,28 +275,29 @@ TEST_F(Commands, BadCompareAndSweepOptionsExitTwo) {
   };
   for (const auto& c : cases) {
     const Result r = run(fmt::format("compare '{}' '{}' {}", a, a, c.args));
-    EXPECT_EQ(r.code, 2) << c.args << ": " << r.out;
-    EXPECT_NE(r.out.find(c.says), std::string::npos) << c.args << ": " << r.out;
+    EXPECT_EQ(r.code, 2) << c.args << ": " << r.output;
+    EXPECT_NE(r.output.find(c.says), std::string::npos) << c.args << ": " << r.output;
   }
   // Runs of different scene files compare, with a warning.
   const Result diff = run(fmt::format("compare '{}' '{}' --json '{}'", a, b, (tmp_ / "c.json").string()));
-  EXPECT_NE(diff.out.find("warning: the runs are of different scene files (scene_sha256 differs"),
+  EXPECT_NE(diff.output.find("warning: the runs are of different scene files (scene_sha256 differs"),
             std::string::npos)
-      << diff.out;
-  EXPECT_EQ(
-      run(fmt::format("compare '{}' '{}' --json '{}'", a, a, (tmp_ / "c.json").string())).out.find("warning"),
-      std::string::npos);
+      << diff.output;
+  EXPECT_EQ(run(fmt::format("compare '{}' '{}' --json '{}'", a, a, (tmp_ / "c.json").string()))
+                .output.find("warning"),
+            std::string::npos);
   const Result mesh = run(fmt::format("sweep {} --dt 0.01 --mesh 0 --out '{}'", s1, (tmp_ / "sw").string()));
-  EXPECT_EQ(mesh.code, 2) << mesh.out;
-  EXPECT_NE(mesh.out.find("key 'mesh': expected an element multiplier 1..64"), std::string::npos) << mesh.out;
+  EXPECT_EQ(mesh.code, 2) << mesh.output;
+  EXPECT_NE(mesh.output.find("key 'mesh': expected an element multiplier 1..64"), std::string::npos)
+      << mesh.output;
   EXPECT_FALSE(fs::exists(tmp_ / "sw" / "runs")) << "nothing runs before the input is checked";
   const Result ref =
       run(fmt::format("sweep {} --dt 0.01 --reference bogus --out '{}'", s1, (tmp_ / "sw").string()));
-  EXPECT_EQ(ref.code, 2) << ref.out;
+  EXPECT_EQ(ref.code, 2) << ref.output;
   EXPECT_NE(
-      ref.out.find("expected a method name (paper, exact, ida, fenicsx, siconos, example), got 'bogus'"),
+      ref.output.find("expected a method name (paper, exact, ida, fenicsx, siconos, example), got 'bogus'"),
       std::string::npos)
-      << ref.out;
+      << ref.output;
 }
 
 }  // namespace

@@ -1,7 +1,6 @@
 // Determinism: the same scene gives byte-identical history.csv and summary.json (apart from the
 // wall time, its own line "wall_seconds", and the cost rates made from it) across reruns and across
 // verify --jobs values.
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -10,17 +9,13 @@
 #include <gtest/gtest.h>
 
 #include <solver/testing/test_scenes.hpp>
+#include <tools/beamimpact/testing/cli_run.hpp>
 
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using beamimpact::testing::read_file;
 
 /// summary.json without its "wall_seconds" line and the cost rates made from it ("ns_per_...":
 /// cost.ns_per_dof_step, cost.ns_per_element_step), the fields that may differ.
@@ -36,16 +31,14 @@ std::string without_wall_time(const std::string& json) {
 void expect_same_run(const fs::path& a, const fs::path& b) {
   ASSERT_TRUE(fs::exists(a / "summary.json")) << a;
   ASSERT_TRUE(fs::exists(b / "summary.json")) << b;
-  EXPECT_EQ(read(a / "history.csv"), read(b / "history.csv")) << a << " vs " << b;
-  const std::string sa = read(a / "summary.json"), sb = read(b / "summary.json");
+  EXPECT_EQ(read_file(a / "history.csv"), read_file(b / "history.csv")) << a << " vs " << b;
+  const std::string sa = read_file(a / "summary.json"), sb = read_file(b / "summary.json");
   EXPECT_NE(sa.find("\"wall_seconds\""), std::string::npos) << "wall time kept in its own field";
   EXPECT_EQ(without_wall_time(sa), without_wall_time(sb)) << a << " vs " << b;
 }
 
-int beamimpact(const std::string& args) {
-  return std::system(
-      fmt::format("cd '{}' && '{}' {} > /dev/null 2>&1", BEAMIMPACT_SOURCE, BEAMIMPACT_EXE, args).c_str());
-}
+/// Runs beamimpact with args in the source root; its exit code.
+int beamimpact(const std::string& args) { return beamimpact::testing::run_cli(args).code; }
 
 TEST(Determinism, RerunsGiveIdenticalFiles) {
   const fs::path dir = beamimpact::testing::temp_path("rerun");

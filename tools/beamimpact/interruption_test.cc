@@ -4,7 +4,6 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <thread>
 
 #include <fcntl.h>
@@ -14,6 +13,7 @@
 #include <sys/wait.h>
 
 #include <solver/testing/test_scenes.hpp>
+#include <tools/beamimpact/testing/cli_run.hpp>
 
 extern char** environ;
 
@@ -21,19 +21,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Processes (other than `except`) whose command line mentions `text`.
-std::vector<int> processes_mentioning(const std::string& text, int except) {
-  std::vector<int> found;
-  for (const auto& e : fs::directory_iterator("/proc")) {
-    const std::string name = e.path().filename();
-    if (name.find_first_not_of("0123456789") != std::string::npos || std::stoi(name) == except) continue;
-    std::ifstream in(e.path() / "cmdline");
-    std::stringstream s;
-    s << in.rdbuf();
-    if (s.str().find(text) != std::string::npos) found.push_back(std::stoi(name));
-  }
-  return found;
-}
+using beamimpact::testing::processes_mentioning;
+using beamimpact::testing::read_file;
 
 TEST(Interruption, SigintToVerifyLeavesNoChildAndMarksTheReport) {
   const fs::path dir = beamimpact::testing::temp_path("interrupt");
@@ -73,13 +62,11 @@ gates = [{{ metric = "impulse", tol = 0.1, why = "never evaluated: interrupted" 
   kill(pid, SIGINT);
   int status = 0;
   ASSERT_EQ(waitpid(pid, &status, 0), pid);
-  std::ifstream log(dir / "log.txt");
-  const std::string text((std::istreambuf_iterator<char>(log)), {});
+  const std::string text = read_file(dir / "log.txt");
   ASSERT_TRUE(WIFEXITED(status)) << text;
   EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT) << text;
   EXPECT_TRUE(processes_mentioning(out, pid).empty()) << "a child run outlived verify";
-  std::ifstream report(fs::path(out) / "report.md");
-  const std::string md((std::istreambuf_iterator<char>(report)), {});
+  const std::string md = read_file(fs::path(out) / "report.md");
   EXPECT_NE(md.find("**INCOMPLETE: interrupted by signal 2"), std::string::npos) << md;
 }
 

@@ -23,6 +23,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <tools/beamimpact/testing/cli_run.hpp>
+
 extern char** environ;
 
 namespace beamimpact {
@@ -30,41 +32,30 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class MpiIdentity : public ::testing::Test {
+class MpiIdentity : public testing::CliTest {
  protected:
   void SetUp() override {
-    tmp_ = fs::temp_directory_path() / fmt::format("beamimpact_mpi_identity_{}", ::getpid());
-    fs::remove_all(tmp_);
-    fs::create_directories(tmp_);
+    CliTest::SetUp();
     if (::geteuid() == 0) {
       ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
       ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
     }
   }
-  void TearDown() override { fs::remove_all(tmp_); }
 
-  /// Runs beamimpact with args (OUT replaced by out) serially or under mpirun -n 2.
-  void run(const std::string& args, const fs::path& out, bool mpi) {
+  /// Runs beamimpact with args (OUT replaced by out) serially or under mpirun -n 2; what it printed.
+  static std::string run(const std::string& args, const fs::path& out, bool mpi) {
     const std::string prefix = mpi ? fmt::format("'{}' --oversubscribe -n 2", MPIEXEC) : "";
     std::string a = args;
     a.replace(a.find("OUT"), 3, out.string());
-    const fs::path log = out.string() + ".log";
-    const int rc = std::system(fmt::format("cd '{}' && {} '{}' {} > '{}' 2>&1", BEAMIMPACT_SOURCE, prefix,
-                                           BEAMIMPACT_EXE, a, log.string())
-                                   .c_str());
-    ASSERT_TRUE(WIFEXITED(rc) && WEXITSTATUS(rc) == 0) << read(log);
+    const testing::CliResult r = testing::run_cli(a, prefix);
+    EXPECT_EQ(r.code, 0) << r.output;
     if (mpi) {
-      EXPECT_NE(read(log).find("rank 1"), std::string::npos) << "rank 1 did no work:\n" << read(log);
+      EXPECT_NE(r.output.find("rank 1"), std::string::npos) << "rank 1 did no work:\n" << r.output;
     }
+    return r.output;
   }
 
  public:
-  static std::string read(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  }
   /// The document without timing fields, start time and command, output directory replaced.
   static nlohmann::json stripped(const fs::path& file, const fs::path& out) {
     std::string text = read(file);
@@ -89,7 +80,6 @@ class MpiIdentity : public ::testing::Test {
       for (auto& e : j) strip(e);
     }
   }
-  fs::path tmp_;
 };
 
 // Subset of the quick tier: every S1 case, ladder and check (23 runs of paper, IDA, exact and
@@ -148,9 +138,9 @@ pid_t rank_process(int rank, const std::string& text) {
   for (const auto& e : fs::directory_iterator("/proc")) {
     const std::string name = e.path().filename();
     if (name.find_first_not_of("0123456789") != std::string::npos) continue;
-    std::string env = MpiIdentity::read(e.path() / "environ");
+    std::string env = testing::read_file(e.path() / "environ");
     std::replace(env.begin(), env.end(), '\0', '\n');
-    if (MpiIdentity::read(e.path() / "cmdline").find(text) != std::string::npos &&
+    if (testing::read_file(e.path() / "cmdline").find(text) != std::string::npos &&
         (env + "\n").find("\n" + tag + "\n") != std::string::npos)
       return std::stoi(name);
   }
@@ -197,10 +187,8 @@ TEST_F(MpiIdentity, StudyWithAKilledRankResumesToTheSameTables) {
   ASSERT_FALSE(fs::exists(out / "study.csv")) << read(tmp_ / "killed.log");
   const int finished = recorded();
   ASSERT_LT(finished, 12);
-  run("study " + study.string() + " --out OUT", out, true);
-  EXPECT_NE(read(out.string() + ".log").find(fmt::format("resumed: {} of 12 points", finished)),
-            std::string::npos)
-      << read(out.string() + ".log");
+  const std::string log = run("study " + study.string() + " --out OUT", out, true);
+  EXPECT_NE(log.find(fmt::format("resumed: {} of 12 points", finished)), std::string::npos) << log;
   for (const char* f : {"study.csv", "study.json"}) EXPECT_EQ(read(out / f), read(tmp_ / "serial" / f)) << f;
 }
 

@@ -1,19 +1,17 @@
 // End to end: while another process holds an output directory (its OutputLock), every command
 // that writes a folder exits 2 with one line naming the directory and the holder's pid, and
 // removes or writes nothing there; after the holder ends the directory is free again.
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <solver/testing/test_scenes.hpp>
 #include <solver/util/OutputLock.hpp>
+#include <tools/beamimpact/testing/cli_run.hpp>
 
 namespace {
 
@@ -21,35 +19,17 @@ namespace fs = std::filesystem;
 using beamimpact::OutputLock;
 using beamimpact::testing::paper_scene;
 
-struct Result {
-  int code;
-  std::string output;  // stdout and stderr
-};
+using beamimpact::testing::CliResult;
+using beamimpact::testing::fresh_dir;
+using beamimpact::testing::read_file;
 
-Result run(const std::string& args) {
+CliResult run(const std::string& args) {
   // timeout: a command that wrongly ignored the lock would otherwise run its whole work here
-  const std::string cmd = "timeout 120 " + std::string(BEAMIMPACT_EXE) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  while (std::fgets(buf.data(), buf.size(), p)) out += buf.data();
-  const int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-
-std::string read(const fs::path& f) {
-  std::ifstream in(f, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = beamimpact::testing::temp_path("lock_cli_" + name);
-  fs::remove_all(d);
-  return d;
+  return beamimpact::testing::run_cli(args, "timeout 120");
 }
 
 /// The refusal every command gives while this test process holds the directory.
-void expect_refused(const Result& r, const fs::path& dir, const std::string& what) {
+void expect_refused(const CliResult& r, const fs::path& dir, const std::string& what) {
   EXPECT_EQ(r.code, 2) << what << ": " << r.output;
   EXPECT_NE(r.output.find(dir.string()), std::string::npos) << what << ": " << r.output;
   EXPECT_NE(r.output.find("pid " + std::to_string(getpid())), std::string::npos) << what << ": " << r.output;
@@ -60,12 +40,12 @@ TEST(OutputLockCli, SecondRunRefusedAndTheFirstRunsOutputsIntact) {
   const fs::path d = fresh_dir("run");
   const std::string cmd = "run " + paper_scene("s1_central") + " --quiet --out " + d.string();
   ASSERT_EQ(run(cmd).code, 0);
-  const std::string summary = read(d / "summary.json"), history = read(d / "history.csv");
+  const std::string summary = read_file(d / "summary.json"), history = read_file(d / "history.csv");
   {
     const OutputLock first(d);  // a first writer still at work in d
     expect_refused(run(cmd), d, "run");
-    EXPECT_EQ(read(d / "summary.json"), summary);
-    EXPECT_EQ(read(d / "history.csv"), history);
+    EXPECT_EQ(read_file(d / "summary.json"), summary);
+    EXPECT_EQ(read_file(d / "history.csv"), history);
   }
   EXPECT_EQ(run(cmd).code, 0) << "the directory is free once its holder has ended";
   EXPECT_NO_THROW(OutputLock{d}) << "and the run released it when it exited";
@@ -94,7 +74,7 @@ TEST(OutputLockCli, EveryCommandWritingAFolderIsRefused) {
   for (const Case& c : cases) {
     std::ofstream(d / c.output) << "earlier " << c.what;
     expect_refused(run(c.args), d, c.what);
-    EXPECT_EQ(read(d / c.output), "earlier " + c.what) << c.what;
+    EXPECT_EQ(read_file(d / c.output), "earlier " + c.what) << c.what;
   }
 }
 

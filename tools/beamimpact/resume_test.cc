@@ -24,6 +24,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <tools/beamimpact/testing/cli_run.hpp>
+
 extern char** environ;
 
 namespace beamimpact {
@@ -31,12 +33,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using testing::read_file;
 
 /// Files in dir whose name ends with `suffix`.
 int count_files(const fs::path& dir, const std::string& suffix) {
@@ -47,35 +44,13 @@ int count_files(const fs::path& dir, const std::string& suffix) {
   return n;
 }
 
-/// Processes (other than `except`) whose command line mentions `text`.
-int processes_mentioning(const std::string& text, int except) {
-  int found = 0;
-  for (const auto& e : fs::directory_iterator("/proc")) {
-    const std::string name = e.path().filename();
-    if (name.find_first_not_of("0123456789") != std::string::npos || std::stoi(name) == except) continue;
-    found += read(e.path() / "cmdline").find(text) != std::string::npos;
-  }
-  return found;
-}
+using testing::processes_mentioning;
 
-class ResumeBase : public ::testing::Test {
+class ResumeBase : public testing::CliTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    tmp_ = fs::temp_directory_path() / fmt::format("beamimpact_resume_{}_{}", ::getpid(),
-                                                   std::regex_replace(info->name(), std::regex("/"), "_"));
-    fs::remove_all(tmp_);
-    fs::create_directories(tmp_);
-  }
-  void TearDown() override { fs::remove_all(tmp_); }
-
-  /// Runs beamimpact with args in the source root; exit code and output.
-  std::pair<int, std::string> run(const std::vector<std::string>& args) {
-    std::string cmd = fmt::format("cd '{}' && '{}'", BEAMIMPACT_SOURCE, BEAMIMPACT_EXE);
-    for (const auto& a : args) cmd += " '" + a + "'";
-    const fs::path log = tmp_ / "out.txt";
-    const int rc = std::system((cmd + " > '" + log.string() + "' 2>&1").c_str());
-    return {WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, read(log)};
+  /// Runs beamimpact with args (one shell word each) in the source root; exit code and output.
+  static testing::CliResult run(const std::vector<std::string>& args) {
+    return testing::run_cli(testing::shell_words(args));
   }
 
   /// Starts beamimpact with args (SIGINT at its default action, as from a terminal), waits until
@@ -112,8 +87,6 @@ class ResumeBase : public ::testing::Test {
     waitpid(pid, &status, 0);
     return status;
   }
-
-  fs::path tmp_;
 };
 
 class Resume : public ResumeBase, public ::testing::WithParamInterface<int> {};
@@ -143,7 +116,7 @@ TEST_P(Resume, StudyKilledHalfWayEndsWithTheTablesOfAnUninterruptedOne) {
   const fs::path out = tmp_ / "o";
   const std::string scene = std::string(BEAMIMPACT_SOURCE) + "/verification/scenes/paper/s4_oblique_90.toml";
   const std::vector<std::string> cmd{"study", write_study(tmp_, scene).string(), "--out", out.string()};
-  auto [code, log] = run(cmd);
+  const auto [code, log] = run(cmd);
   ASSERT_EQ(code, 0) << log;
   const char* tables[] = {"study.csv", "study.json", "study.md"};  // timing.* hold the times
   std::map<std::string, std::string> whole;
@@ -158,11 +131,12 @@ TEST_P(Resume, StudyKilledHalfWayEndsWithTheTablesOfAnUninterruptedOne) {
   ASSERT_LT(finished, 12);
   std::ofstream(out / "points" / "11.json.partial") << "{\"input\": {\"stu";  // a record cut short
 
-  std::tie(code, log) = run(cmd);
-  ASSERT_EQ(code, 0) << log;
-  EXPECT_NE(log.find(fmt::format("resumed: {} of 12 points finished earlier", finished)), std::string::npos)
-      << log;
-  EXPECT_NE(log.find(fmt::format("[{}/12]", finished + 1)), std::string::npos) << log;
+  const auto [again, resumed] = run(cmd);
+  ASSERT_EQ(again, 0) << resumed;
+  EXPECT_NE(resumed.find(fmt::format("resumed: {} of 12 points finished earlier", finished)),
+            std::string::npos)
+      << resumed;
+  EXPECT_NE(resumed.find(fmt::format("[{}/12]", finished + 1)), std::string::npos) << resumed;
   EXPECT_FALSE(fs::exists(out / "points" / "11.json.partial"));
   for (const char* t : tables) EXPECT_EQ(read(out / t), whole[t]) << t;
   const auto timing = nlohmann::json::parse(read(out / "timing.json"));
@@ -171,7 +145,7 @@ TEST_P(Resume, StudyKilledHalfWayEndsWithTheTablesOfAnUninterruptedOne) {
 
 /// Replaces the version a record names (as if another build had written it).
 void set_version(const fs::path& record, const std::string& version) {
-  auto j = nlohmann::json::parse(read(record));
+  auto j = nlohmann::json::parse(read_file(record));
   auto& input = j.at("input");
   (input.contains("study") ? input.at("study") : input).at("program").at("version") = version;
   std::ofstream(record) << j.dump(1);
@@ -262,7 +236,7 @@ TEST_P(Resume, VerifyKilledHalfWayEndsWithTheNormsOfAnUninterruptedOne) {
   const fs::path out = tmp_ / "v";
   const std::vector<std::string> cmd{
       "verify", "verification/matrix.toml", "--tier", "quick", "--only", "s1_central", "--out", out.string()};
-  auto [code, log] = run(cmd);
+  const auto [code, log] = run(cmd);
   ASSERT_EQ(code, 0) << log;
   const auto whole = without_times(nlohmann::json::parse(read(out / "norms.json")));
   const std::string whole_md = without_times(read(out / "report.md"));
@@ -279,15 +253,16 @@ TEST_P(Resume, VerifyKilledHalfWayEndsWithTheNormsOfAnUninterruptedOne) {
   else
     ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << read(tmp_ / "killed.txt");
   // A SIGKILL leaves the run under way to finish alone: wait for it (polled) before the restart.
-  while (processes_mentioning(out.string(), 0) > 0) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  while (!processes_mentioning(out.string()).empty())
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
   const int finished = count_files(out / "runs", "finished.json");
   ASSERT_LT(finished, runs) << "verify ended before the signal: nothing was resumed";
 
-  std::tie(code, log) = run(cmd);
-  ASSERT_EQ(code, 0) << log;
-  EXPECT_NE(log.find(fmt::format("resumed: {} of {} runs finished earlier", finished, runs)),
+  const auto [again, resumed] = run(cmd);
+  ASSERT_EQ(again, 0) << resumed;
+  EXPECT_NE(resumed.find(fmt::format("resumed: {} of {} runs finished earlier", finished, runs)),
             std::string::npos)
-      << log;
+      << resumed;
   EXPECT_EQ(without_times(nlohmann::json::parse(read(out / "norms.json"))), whole);
   EXPECT_EQ(without_times(read(out / "report.md")), whole_md);
 }

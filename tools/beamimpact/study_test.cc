@@ -12,34 +12,15 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <tools/beamimpact/testing/cli_run.hpp>
+
 namespace beamimpact {
 namespace {
 
 namespace fs = std::filesystem;
 
-class StudyCommand : public ::testing::Test {
+class StudyCommand : public testing::CliTest {
  protected:
-  void SetUp() override {
-    tmp_ = fs::temp_directory_path() / fmt::format("beamimpact_study_cmd_{}", ::getpid());
-    fs::remove_all(tmp_);
-    fs::create_directories(tmp_);
-  }
-  void TearDown() override { fs::remove_all(tmp_); }
-
-  /// Runs `prefix beamimpact args` in the source root; exit code and output.
-  std::pair<int, std::string> run(const std::string& args, const std::string& prefix = "") {
-    const fs::path log = tmp_ / "out.txt";
-    const int rc = std::system(fmt::format("cd '{}' && {} '{}' {} > '{}' 2>&1", BEAMIMPACT_SOURCE, prefix,
-                                           BEAMIMPACT_EXE, args, log.string())
-                                   .c_str());
-    return {WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, read(log)};
-  }
-  static std::string read(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  }
   fs::path study(const std::string& body) {
     const fs::path p = tmp_ / "study.toml";
     std::ofstream(p)
@@ -50,7 +31,6 @@ class StudyCommand : public ::testing::Test {
         << body;
     return p;
   }
-  fs::path tmp_;
 };
 
 const char* kGrid = R"(

@@ -4,13 +4,9 @@
 # with `clang-format -i FILE`.
 # Usage: tools/check-format.sh [ROOT]   Exit 1 (one warning per drifting line) when a file drifts.
 set -euo pipefail
+source "$(dirname "$0")/cpp-files.sh"
 root=${1:-$(cd "$(dirname "$0")/.." && pwd)}
 cd "$root"
-if git rev-parse --is-inside-work-tree > /dev/null 2>&1; then
-  mapfile -t files < <(git ls-files '*.cc' '*.hpp' '*.h')
-else
-  mapfile -t files < <(find . -path ./build -prune -o \( -name '*.cc' -o -name '*.hpp' -o -name '*.h' \) -print)
-fi
-((${#files[@]})) || { echo "check-format: no C++ files under $root" >&2; exit 1; }
+cpp_files check-format
 clang-format --dry-run -Werror "${files[@]}"
 echo "check-format: ${#files[@]} files formatted"

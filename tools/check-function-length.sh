@@ -5,15 +5,11 @@
 # own comments.
 # Usage: tools/check-function-length.sh [ROOT] [MAX_LINES]   Exit 1, listing each longer function.
 set -euo pipefail
+source "$(dirname "$0")/cpp-files.sh"
 root=${1:-$(cd "$(dirname "$0")/.." && pwd)}
 max=${2:-80}
 cd "$root"
-if git rev-parse --is-inside-work-tree > /dev/null 2>&1; then
-  mapfile -t files < <(git ls-files '*.cc' '*.hpp' '*.h')
-else
-  mapfile -t files < <(find . -path ./build -prune -o \( -name '*.cc' -o -name '*.hpp' -o -name '*.h' \) -print)
-fi
-((${#files[@]})) || { echo "check-function-length: no C++ files under $root" >&2; exit 1; }
+cpp_files check-function-length
 # One line per function definition: end line, start line, file, name (names may hold spaces).
 tags=$(ctags --languages=C++ --kinds-C++=f --fields=+ne -x --_xformat='%{end} %{line} %F %N' "${files[@]}")
 count=$(wc -l <<< "$tags")

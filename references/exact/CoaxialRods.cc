@@ -24,23 +24,18 @@ CoaxialRods::CoaxialRods(const Rod& a, const Rod& b, double v0, double gap, doub
   solve();
 }
 
-double CoaxialRods::force_at(double s) const {
-  if (s < t0_) return 0.0;
+const RodsSegment& CoaxialRods::piece_at(double s) const {
   auto it = std::upper_bound(segs_.begin(), segs_.end(), s,
                              [](double x, const RodsSegment& g) { return x < g.start; });
-  return std::prev(it)->P;
+  return it == segs_.begin() ? *it : *std::prev(it);
 }
 
-// S_X(s) = sum_{k>=1} sign^(k-1) P(s - k T_X): the force reflected back to the contact end.
-double CoaxialRods::memory(double s, double T, double sign) const {
-  double S = 0.0, w = 1.0;
-  for (double x = s - T; x >= t0_; x -= T, w *= sign) S += w * force_at(x);
-  return S;
-}
-
-// R_X(s) = P(s) + sign S_X(s): the force wave leaving the contact end at time s.
-double CoaxialRods::outgoing(double s, double T, double sign) const {
-  return force_at(s) + sign * memory(s, T, sign);
+// R_X(s) = P(s) + eps_X S_X(s), with S_X(s) = sum_{k>=1} eps_X^(k-1) P(s - k T_X) = R_X(s - T_X):
+// constant on every piece (each piece start echoes after T_A and T_B), zero before the touch.
+double CoaxialRods::wave(double s, bool striker) const {
+  if (s < t0_) return 0.0;
+  const RodsSegment& q = piece_at(s);
+  return striker ? q.ra : q.rb;
 }
 
 void CoaxialRods::solve() {
@@ -61,7 +56,7 @@ void CoaxialRods::solve() {
     const double nb = *pending.begin();
     // P is constant on (s, nb): evaluate the memories at the midpoint, away from any jump.
     const double mid = 0.5 * (s + nb);
-    const double SA = memory(mid, TA, 1.0), SB = memory(mid, TB, eb_);
+    const double SA = wave(mid - TA, true), SB = wave(mid - TB, false);
     double P = 0.0, va = v0_ - 2.0 * SA / ZA, vb = 2.0 * eb_ * SB / ZB;
     if (closed) {
       const double trial = (v0_ - 2.0 * SA / ZA - 2.0 * eb_ * SB / ZB) / (1.0 / ZA + 1.0 / ZB);
@@ -74,7 +69,7 @@ void CoaxialRods::solve() {
         closed = false;  // the ends part: the gap opens at vb - va > 0
       }
     }
-    segs_.push_back({s, P, va, vb, ua, ub, g, closed});
+    segs_.push_back({s, P, va, vb, ua, ub, g, closed, P + SA, P + eb_ * SB, 0.0});
     double end = nb;
     bool recontact = false;
     if (!closed && vb < va) {
@@ -94,6 +89,12 @@ void CoaxialRods::solve() {
     s = end;
     pending.insert({s + TA, s + TB});  // every piece start echoes after each round trip
   }
+  double J = 0.0;  // the impulse at each piece start, summed in time order
+  for (std::size_t i = 0; i + 1 < segs_.size(); ++i) {
+    segs_[i].impulse = J;
+    J += segs_[i].P * (segs_[i + 1].start - segs_[i].start);
+  }
+  segs_.back().impulse = J;
 }
 
 RodsEndState CoaxialRods::state(double t) const {
@@ -113,12 +114,12 @@ RodsEndState CoaxialRods::state(double t) const {
 }
 
 double CoaxialRods::impulse(double t) const {
-  double J = 0.0;
-  for (std::size_t i = 0; i < segs_.size() && segs_[i].start < t; ++i) {
-    const double end = (i + 1 < segs_.size()) ? std::min(segs_[i + 1].start, t) : t;
-    J += segs_[i].P * (end - segs_[i].start);
-  }
-  return J;
+  // The last piece starting before t (none: no impulse yet).
+  auto it = std::lower_bound(segs_.begin(), segs_.end(), t,
+                             [](const RodsSegment& g, double x) { return g.start < x; });
+  if (it == segs_.begin()) return 0.0;
+  const RodsSegment& q = *std::prev(it);
+  return q.impulse + q.P * (t - q.start);
 }
 
 double CoaxialRods::peak_force() const {
@@ -148,19 +149,18 @@ std::vector<std::array<double, 2>> CoaxialRods::force_intervals() const {
 
 // The field in a rod at time t is two piecewise-constant force waves: f(xi) = R(t - xi/c)
 // leaving the contact end and g(xi) = -eps R(t - T + xi/c) coming back after the far-end
-// reflection (xi = distance from the contact end). Their pieces are integrated exactly.
+// reflection (xi = distance from the contact end). R jumps only at piece starts, so the pieces
+// starting in the window [t - T, t] cut the rod into intervals that are integrated exactly.
 RodField CoaxialRods::field(const Rod& rod, double t, bool striker) const {
   const double c = rod.wave_speed(), T = rod.round_trip(), L = rod.length, Z = rod.impedance();
   const double eps = striker ? 1.0 : eb_;
   std::vector<double> xs = {0.0, L};
-  for (std::size_t j = 1; j < segs_.size(); ++j) {
-    // R jumps at s_j + k T; keep those inside the window [t - T, t].
-    const double sj = segs_[j].start;
-    if (sj > t) break;
-    for (double s = sj + T * std::floor((t - sj) / T); s >= t - T && s >= sj; s -= T) {
-      const double xi = (s >= t - 0.5 * T) ? c * (t - s) : c * (s - t + T);
-      if (xi > 0.0 && xi < L) xs.push_back(xi);
-    }
+  auto j = std::lower_bound(segs_.begin() + 1, segs_.end(), t - T,
+                            [](const RodsSegment& g, double x) { return g.start < x; });
+  for (; j != segs_.end() && j->start <= t; ++j) {
+    const double s = j->start;
+    const double xi = (s >= t - 0.5 * T) ? c * (t - s) : c * (s - t + T);
+    if (xi > 0.0 && xi < L) xs.push_back(xi);
   }
   std::sort(xs.begin(), xs.end());
   RodField r;
@@ -169,7 +169,7 @@ RodField CoaxialRods::field(const Rod& rod, double t, bool striker) const {
     const double dx = xs[i + 1] - xs[i];
     if (dx <= 0.0) continue;
     const double xm = 0.5 * (xs[i] + xs[i + 1]);
-    const double f = outgoing(t - xm / c, T, eps), g = -eps * outgoing(t - T + xm / c, T, eps);
+    const double f = wave(t - xm / c, striker), g = -eps * wave(t - T + xm / c, striker);
     // Compressive waves: one moving away from the contact end carries particle velocity -f/Z
     // in the striker (+f/Z in the target); one moving back carries +g/Z (-g/Z).
     const double v = striker ? v0_ + (g - f) / Z : (f - g) / Z;

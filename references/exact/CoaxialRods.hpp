@@ -14,14 +14,17 @@ namespace beamimpact::exact {
 /// @brief One piece of the solution: on [start, next start) the contact force and both end
 /// velocities are constant, so displacements and the gap are linear.
 struct RodsSegment {
-  double start = 0.0;   ///< s
-  double P = 0.0;       ///< N, compressive contact force
-  double va = 0.0;      ///< m/s, striker contact-end velocity (towards B)
-  double vb = 0.0;      ///< m/s, target contact-end velocity (away from A)
-  double ua = 0.0;      ///< m, striker end displacement at `start`
-  double ub = 0.0;      ///< m, target end displacement at `start`
-  double gap = 0.0;     ///< m, gap at `start`
-  bool closed = false;  ///< the gap is closed (force may still be zero)
+  double start = 0.0;    ///< s
+  double P = 0.0;        ///< N, compressive contact force
+  double va = 0.0;       ///< m/s, striker contact-end velocity (towards B)
+  double vb = 0.0;       ///< m/s, target contact-end velocity (away from A)
+  double ua = 0.0;       ///< m, striker end displacement at `start`
+  double ub = 0.0;       ///< m, target end displacement at `start`
+  double gap = 0.0;      ///< m, gap at `start`
+  bool closed = false;   ///< the gap is closed (force may still be zero)
+  double ra = 0.0;       ///< N, force wave R_A leaving the contact end into the striker
+  double rb = 0.0;       ///< N, force wave R_B leaving the contact end into the target
+  double impulse = 0.0;  ///< N s, impulse of P over [0, start]
 };
 
 /// @brief The contact ends' state at one time.
@@ -40,7 +43,10 @@ struct RodField {
 
 /// @brief The exact solution: the force P is piecewise constant between breakpoints
 /// (contact start, re-contacts, and their shifts by multiples of T_A and T_B), so it is
-/// evaluated once per piece, exactly, and every output is a closed-form function of time.
+/// evaluated once per piece, exactly, and every output is a closed-form function of time. So
+/// are the force waves leaving the contact end (R_X(s) = P(s) + eps_X R_X(s - T_X)), stored per
+/// piece: every look-up is a binary search, a piece costs O(log pieces) and an output row
+/// O(pieces within one round trip x log pieces).
 class CoaxialRods {
  public:
   /// @brief Striker a approaches target b (at rest) at v0 (m/s) across gap (m); solved to t_end (s).
@@ -66,9 +72,10 @@ class CoaxialRods {
   double peak_force() const;
 
  private:
-  double force_at(double s) const;
-  double memory(double s, double T, double sign) const;
-  double outgoing(double s, double T, double sign) const;
+  /// The piece holding time s (the last with start <= s; the first piece for s < 0).
+  const RodsSegment& piece_at(double s) const;
+  /// R_X(s): the force wave leaving the contact end into the striker (or the target) at time s.
+  double wave(double s, bool striker) const;
   RodField field(const Rod& rod, double t, bool striker) const;
   void solve();
 

@@ -166,10 +166,14 @@ double RodOnWall::load_work(double t) const {
 
 RodField RodOnWall::field(double t) const {
   const double c = s_.rod.wave_speed(), L = s_.rod.length, w = s_.v0 + s_.g * t;
-  // Breaks in x of the two waves: x = c (t - start) and x = c (start + T2 - t).
+  // Breaks in x of the two waves: x = c (t - start) and x = c (start + T2 - t), inside the rod
+  // only for the pieces starting in (t - T2, t): those found by binary search (with a margin,
+  // the test on x deciding), not every piece for every row.
   std::vector<double> xs = {0.0, L};
-  for (const Piece& p : pieces_)
-    for (double x : {c * (t - p.start), c * (p.start + T2_ - t)})
+  auto p = std::lower_bound(pieces_.begin(), pieces_.end(), t - 1.01 * T2_,
+                            [](const Piece& q, double x) { return q.start < x; });
+  for (; p != pieces_.end() && p->start <= t + 0.01 * T2_; ++p)
+    for (double x : {c * (t - p->start), c * (p->start + T2_ - t)})
       if (x > 0.0 && x < L) xs.push_back(x);
   std::sort(xs.begin(), xs.end());
   RodField f;

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <references/exact/output_times.hpp>
+
 namespace beamimpact::exact {
 namespace {
 
@@ -12,9 +14,8 @@ namespace {
 /// second (13 stages of rhs() each), 2e6 memory evaluations per second (degree-11 Lagrange).
 constexpr double kStateStepsPerSecond = 4e6;
 constexpr double kFieldPointsPerSecond = 2e6;
-/// Bytes per memory sample (time and value, vector growth) and per output row (RodOnBeamRow).
+/// Bytes per memory sample (time and value, vector growth).
 constexpr double kBytesPerSample = 32.0;
-constexpr double kBytesPerRow = 200.0;
 
 }  // namespace
 
@@ -35,7 +36,7 @@ RodOnBeamCost estimate_rod_on_beam_cost(const RodOnBeamSetup& s, const std::vect
   const double T = s.rod.round_trip();
   const double t0 = s.v0 > 0.0 ? s.gap / s.v0 : s.t_end;
   const double span = std::max(0.0, s.t_end - t0);  // integrated from the first touch
-  c.rows = std::floor(s.t_end / s.dt_out * (1.0 + 1e-12)) + 1.0;
+  c.rows = output_row_count(s.dt_out, s.t_end);
   for (int n : mode_counts) {
     const double delta = std::min(0.25 / s.beam.omega(n), T / 32.0);  // as Integration's delta_
     const double samples = span / delta;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include <references/exact/ExactCost.hpp>
 #include <references/exact/RodOnBeam.hpp>
 
 namespace beamimpact::exact {
@@ -25,6 +26,8 @@ struct RodOnBeamCost {
   double seconds() const;
   /// @brief "256 modes: 8.7e+04 integrator stops 3.3e-05 s apart, ...".
   std::string to_string() const;
+  /// @brief The estimate as the limits read it (ExactCost.hpp).
+  ExactCost total() const { return {seconds(), bytes, to_string()}; }
 };
 
 /// @brief The cost of solving `setup` with each mode count in turn (a mode study runs them all
@@ -32,10 +35,5 @@ struct RodOnBeamCost {
 /// @param setup problem data (setup.modes is ignored)
 /// @param mode_counts the runs, each >= 1
 RodOnBeamCost estimate_rod_on_beam_cost(const RodOnBeamSetup& setup, const std::vector<int>& mode_counts);
-
-/// @brief A solution beyond this many seconds of one core (or kOrdinaryBytes of memory) is far
-/// beyond an ordinary run (run_cost.hpp: 1e11 DOF-steps, 8-18 minutes) and needs
-/// time.allow_long_run = true.
-inline constexpr double kOrdinaryExactSeconds = 600.0;
 
 }  // namespace beamimpact::exact

@@ -1,6 +1,7 @@
 #include <references/exact/output_times.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace beamimpact::exact {
 
@@ -12,6 +13,10 @@ std::vector<double> output_times(double dt_out, double t_end) {
     out_t.push_back(std::min(t, t_end));
   }
   return out_t;
+}
+
+double output_row_count(double dt_out, double t_end) {
+  return std::floor(t_end / dt_out * (1.0 + 1e-12)) + 1.0;
 }
 
 }  // namespace beamimpact::exact

@@ -10,4 +10,8 @@ namespace beamimpact::exact {
 /// last one clamped to t_end).
 std::vector<double> output_times(double dt_out, double t_end);
 
+/// @brief How many output_times(dt_out, t_end) there are, without building them (a cost
+/// estimate's rows).
+double output_row_count(double dt_out, double t_end);
+
 }  // namespace beamimpact::exact

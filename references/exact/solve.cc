@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <references/exact/CoaxialRods.hpp>
+#include <references/exact/CoaxialRodsCost.hpp>
 #include <references/exact/RigidRodImpact.hpp>
 #include <references/exact/RodOnBeam.hpp>
 #include <references/exact/RodOnBeamCost.hpp>
@@ -57,6 +58,11 @@ SimulationResult solve_rods(const Scene& scene, const ExactProblem& p, ResultRec
   std::vector<HistoryRow> rows;
   const Rod& A = p.striker_rod;
   const Rod& B = p.target_rod;
+  // Before any piece is solved: a solution far beyond an ordinary run is refused (its pieces grow
+  // with time.end, as its square when the round trips are incommensurate).
+  refuse_extraordinary(scene, "time.end", "the coaxial-rod solution",
+                       estimate_coaxial_rods_cost(A, B, p.v0, p.gap, scene.time.end, r.dt).total(),
+                       "set a shorter time.end, a larger exact.dt_out");
   const CoaxialRods sol(A, B, p.v0, p.gap, scene.time.end, p.target_far_end);
   const double vt = p.target_speed;  // the solution lives in the target's initial rest frame
   const Vec2 d = p.dir;
@@ -252,16 +258,10 @@ void check_beam_cost(const Scene& scene, const RodOnBeamSetup& s, const BeamOpti
     counts.push_back(static_cast<int>(n));
     if (2 * n > o.modes_max || n >= (1L << 30)) break;  // 2^30 modes: refused anyway
   }
-  const RodOnBeamCost c = estimate_rod_on_beam_cost(s, counts);
-  if (scene.time.allow_long_run || (c.seconds() <= kOrdinaryExactSeconds && c.bytes <= kOrdinaryBytes))
-    return;
-  throw SceneError(
-      scene.file, o.modes > 0 ? "exact.modes" : "exact.modes_max",
-      fmt::format("the rod-on-beam solution is far beyond an ordinary run: {}{} (ordinary: at most {:g} "
-                  "min and {:g} GB); set fewer modes (exact.modes or exact.modes_max), a larger "
-                  "exact.dt_out, or time.allow_long_run = true (or --allow-long) to run it",
-                  c.to_string(), o.modes > 0 ? "" : " (the mode study's worst case)",
-                  kOrdinaryExactSeconds / 60.0, kOrdinaryBytes / 1e9));
+  ExactCost c = estimate_rod_on_beam_cost(s, counts).total();
+  if (o.modes == 0) c.text += " (the mode study's worst case)";
+  refuse_extraordinary(scene, o.modes > 0 ? "exact.modes" : "exact.modes_max", "the rod-on-beam solution", c,
+                       "set fewer modes (exact.modes or exact.modes_max), a larger exact.dt_out");
 }
 
 SimulationResult solve_beam(const Scene& scene, const ExactProblem& p, const BeamOptions& o,

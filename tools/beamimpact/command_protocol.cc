@@ -93,9 +93,9 @@ std::string print_score(const std::vector<ScoreRow>& rows) {
                r.outcome.solver_seconds, r.item->reference.settings_label());
     for (const ScoreQuantity& q : r.quantities) {
       ++counts[q.status];
-      fmt::print("    {:<16} error {:<10} tol {:<8} {}\n", q.metric,
-                 q.error ? fmt::format("{:.3g}", *q.error) : "-", q.tol ? fmt::format("{:g}", *q.tol) : "-",
-                 q.status);
+      const auto g3 = [](const std::optional<double>& v) { return v ? fmt::format("{:.3g}", *v) : "-"; };
+      fmt::print("    {:<16} error {:<10} spread {:<10} tol {:<8} {}\n", q.metric, g3(q.error),
+                 g3(q.reference_spread), g3(q.tol), q.status);
     }
   }
   std::string tally;
@@ -127,8 +127,8 @@ void score_command(const ProtocolArgs& a) {
   for (const Method* m : ms) {
     items.push_back(score_items(matrix, m->name, root, a.score));
     for (const ScoreItem& it : items.back())
-      for (const JobSpec* s : {&it.run, &it.reference})
-        if (seen.insert(s->key()).second) specs.push_back(*s);
+      for (const JobSpec* s : {&it.run, &it.reference, it.reference_check ? &*it.reference_check : nullptr})
+        if (s && seen.insert(s->key()).second) specs.push_back(*s);
   }
   const std::string names = fmt::format("{}", fmt::join(a.methods, " "));
   const fs::path out =

@@ -1,6 +1,7 @@
 #include <verification/matrix/scorecard.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include <fmt/format.h>
@@ -33,20 +34,25 @@ int rank(const Case& c, const std::string& method) {
 
 std::string text(const std::optional<double>& v) { return v ? fmt::format("{:.3g}", *v) : "-"; }
 
+/// Whether `ref` sets `key` (as "key=value").
+bool sets_key(const JobSpec& ref, const std::string& key) {
+  return std::any_of(ref.set.begin(), ref.set.end(),
+                     [&](const std::string& s) { return s.rfind(key + "=", 0) == 0; });
+}
+
 /// IDA converged beyond its defaults, keeping the reference's own settings: time tolerances 100
-/// times tighter (rtol 1e-10, atol 1e-13) and a penalty 10 times stiffer (1e4 EA/le), so that
-/// IDA's step and penetration errors fall below the defaults' by about those factors. Every
-/// method's scorecard takes it wherever its reference would be IDA: IDA is never compared with
-/// its own run, and every method meets the same reference on a scene.
-JobSpec converged_ida(JobSpec ref) {
-  const auto has = [&](const std::string& key) {
-    return std::any_of(ref.set.begin(), ref.set.end(),
-                       [&](const std::string& s) { return s.rfind(key + "=", 0) == 0; });
-  };
-  for (const char* s : {"ida.rtol=1e-10", "ida.atol=1e-13", "ida.kn_factor=1e4"}) {
-    const std::string key = std::string(s).substr(0, std::string(s).find('='));
-    if (!has(key) && !(key == "ida.kn_factor" && has("ida.kn"))) ref.set.push_back(s);
-  }
+/// times tighter (rtol 1e-10, atol 1e-13), the friction regularisation at 1e-5 m/s (the matrix's
+/// converged value; no effect on a frictionless contact) and, with `stiffen`, a penalty 10 times
+/// stiffer (1e4 EA/le), so that IDA's step and penetration errors fall below the defaults' by
+/// about those factors. Every method's scorecard takes it wherever its reference would be IDA:
+/// IDA is never compared with its own run, and every method meets the same reference on a scene.
+/// Without `stiffen` it is the reference's check: the same run at the case's penalty.
+JobSpec converged_ida(JobSpec ref, bool stiffen) {
+  const bool own_penalty = sets_key(ref, "ida.kn") || sets_key(ref, "ida.kn_factor");
+  for (const auto& [key, value] : {std::pair{"ida.rtol", "1e-10"}, std::pair{"ida.atol", "1e-13"},
+                                   std::pair{"ida.friction_velocity", "1e-5"}})
+    if (!sets_key(ref, key)) ref.set.push_back(std::string(key) + "=" + value);
+  if (stiffen && !own_penalty) ref.set.push_back("ida.kn_factor=1e4");
   return ref;
 }
 
@@ -88,9 +94,9 @@ const Case* best_case(const VerificationMatrix& matrix, const fs::path& scene, c
 
 std::string ida_reference(const ScoreOptions& o) {
   return o.references == "converged"
-             ? "IDA converged beyond its defaults: rtol 1e-10, atol 1e-13, penalty 1e4 EA/le, with the "
-               "case's own "
-               "settings"
+             ? "IDA converged beyond its defaults: rtol 1e-10, atol 1e-13, friction regularised at 1e-5 "
+               "m/s, penalty 1e4 EA/le, with the case's own settings; its spread against the same run at "
+               "the case's penalty is its uncertainty"
              : "IDA at the matrix case's settings (not converged further: --references matrix)";
 }
 
@@ -114,8 +120,11 @@ void ScoreOptions::validate(const std::string& method) const {
 std::vector<ScoreItem> score_items(const VerificationMatrix& matrix, const std::string& method,
                                    const fs::path& data_root, const ScoreOptions& options) {
   options.validate(method);
-  const auto reference = [&](const JobSpec& ref) {
-    return ref.method == "ida" && options.references == "converged" ? converged_ida(ref) : ref;
+  const bool converge = options.references == "converged";
+  const auto reference = [&](ScoreItem& it, const JobSpec& ref) {
+    it.reference = ref.method == "ida" && converge ? converged_ida(ref, true) : ref;
+    if (ref.method == "ida" && converge && converged_ida(ref, false).key() != it.reference.key())
+      it.reference_check = converged_ida(ref, false);
   };
   std::vector<ScoreItem> items;
   for (const std::string& set : options.sets)
@@ -124,18 +133,87 @@ std::vector<ScoreItem> score_items(const VerificationMatrix& matrix, const std::
       it.run = JobSpec{scene, method, std::nullopt, "", {}, {}};
       if (const Case* best = best_case(matrix, scene, method)) {
         if (best->run.method == method) it.run = best->run;
-        it.reference = reference(best->reference);
+        reference(it, best->reference);
         it.reference_kind = best->reference.method;
         it.gates = best->gates;
         it.source = best->name();
       } else {
-        it.reference = reference(JobSpec{scene, "ida", std::nullopt, "", {}, {}});
+        reference(it, JobSpec{scene, "ida", std::nullopt, "", {}, {}});
         it.reference_kind = "ida";
       }
       items.push_back(std::move(it));
     }
   return items;
 }
+
+std::string verdict(double error, double tol, std::optional<double> spread) {
+  if (!std::isfinite(error)) return "fail";
+  const double s = spread.value_or(0.0);
+  if (error + s <= tol) return "pass";
+  if (error - s > tol) return "fail";
+  return "reference uncertain";
+}
+
+namespace {
+
+using Status = JobOutcome::Status;
+
+/// The reference compared with its check (its spread), or none: no check, or the check did not
+/// finish or compare (said in `note`).
+std::optional<Comparison> reference_spread(const ScoreItem& it, const JobOutcome& ref,
+                                           const std::map<std::string, JobOutcome>& runs, std::string& note) {
+  if (!it.reference_check || ref.status != Status::kOk) return std::nullopt;
+  const JobOutcome& check = runs.at(it.reference_check->key());
+  const std::string label = "reference check " + it.reference_check->settings_label();
+  if (check.status != Status::kOk) {
+    note = label + " " + status_name(check.status) + " (spread unknown): " + check.message;
+    return std::nullopt;
+  }
+  try {
+    return compare_runs(StoredRun::read(ref.dir), StoredRun::read(check.dir));
+  } catch (const std::exception& e) {
+    note = label + " did not compare (spread unknown): " + e.what();
+    return std::nullopt;
+  }
+}
+
+/// One quantity: the run's error, the reference's spread and the verdict under the gate's
+/// tolerance; without a comparison, the row's status and its reason.
+ScoreQuantity quantity(const Gate& g, const std::optional<Comparison>& cmp,
+                       const std::optional<Comparison>& spread, const std::string& status,
+                       const std::string& why, const std::string& spread_note) {
+  ScoreQuantity q{g.metric, std::nullopt, g.tol, std::nullopt, status, why};
+  if (!cmp) return q;
+  const Norm* n = cmp->find(g.metric);
+  q.error = n ? n->value : std::nullopt;
+  const Norm* s = spread ? spread->find(g.metric) : nullptr;
+  q.reference_spread = s ? s->value : std::nullopt;
+  const std::string tail = spread_note.empty() ? "" : "; " + spread_note;
+  if (!g.tol) {
+    q.status = "no tolerance";
+    q.note = "the matrix has no case for this scene: the error is reported, not judged" + tail;
+    return q;
+  }
+  const GateResult r = check_gate(g, *cmp);
+  if (!r.value) {
+    q.status = to_string(r.status);
+    q.note = r.message;
+    return q;
+  }
+  q.status = verdict(*r.value, *g.tol, q.reference_spread);
+  const std::string spread_text =
+      q.reference_spread ? fmt::format("the reference's spread {:.3g}", *q.reference_spread) : "";
+  if (q.status == "pass")
+    q.note = g.why + tail;
+  else if (q.status == "fail")
+    q.note = r.message + (spread_text.empty() ? "" : " by more than " + spread_text) + tail;
+  else
+    q.note = fmt::format("{} = {:.4g} against {:g}: {} could reverse the verdict", g.metric, *r.value, *g.tol,
+                         spread_text);
+  return q;
+}
+
+}  // namespace
 
 std::vector<ScoreRow> score_rows(const std::vector<ScoreItem>& items,
                                  const std::map<std::string, JobOutcome>& runs) {
@@ -148,11 +226,11 @@ std::vector<ScoreRow> score_rows(const std::vector<ScoreItem>& items,
       for (const auto& m : default_metrics())
         gates.push_back(Gate{m, std::nullopt, std::nullopt, "", std::nullopt});
     std::optional<Comparison> cmp;
-    std::string status, why;
-    if (row.outcome.status != JobOutcome::Status::kOk) {
+    std::string status, why, spread_note;
+    if (row.outcome.status != Status::kOk) {
       status = status_name(row.outcome.status);
       why = row.outcome.message;
-    } else if (ref.status != JobOutcome::Status::kOk) {
+    } else if (ref.status != Status::kOk) {
       status = "skipped";
       why = "reference " + it.reference.settings_label() + " " + status_name(ref.status) + ": " + ref.message;
     } else {
@@ -163,21 +241,9 @@ std::vector<ScoreRow> score_rows(const std::vector<ScoreItem>& items,
         why = e.what();
       }
     }
-    for (const Gate& g : gates) {
-      ScoreQuantity q{g.metric, std::nullopt, g.tol, status, why};
-      if (cmp && g.tol) {
-        const GateResult r = check_gate(g, *cmp);
-        q.error = r.value;
-        q.status = to_string(r.status);
-        q.note = r.status == GateStatus::kPass ? g.why : r.message;
-      } else if (cmp) {
-        const Norm* n = cmp->find(g.metric);
-        q.error = n ? n->value : std::nullopt;
-        q.status = "no tolerance";
-        q.note = "the matrix has no case for this scene: the error is reported, not judged";
-      }
-      row.quantities.push_back(std::move(q));
-    }
+    const std::optional<Comparison> spread =
+        cmp ? reference_spread(it, ref, runs, spread_note) : std::nullopt;
+    for (const Gate& g : gates) row.quantities.push_back(quantity(g, cmp, spread, status, why, spread_note));
     rows.push_back(std::move(row));
   }
   return rows;
@@ -193,33 +259,42 @@ void write_scorecard(const fs::path& dir, const ScoreContext& ctx, const std::ve
     nlohmann::json qs = nlohmann::json::array();
     for (const ScoreQuantity& q : r.quantities) {
       ++counts[q.status];
-      qs.push_back({{"metric", q.metric},
-                    {"error", q.error ? nlohmann::json(*q.error) : nlohmann::json()},
-                    {"tol", q.tol ? nlohmann::json(*q.tol) : nlohmann::json()},
-                    {"status", q.status},
-                    {"note", q.note}});
+      qs.push_back(
+          {{"metric", q.metric},
+           {"error", q.error ? nlohmann::json(*q.error) : nlohmann::json()},
+           {"tol", q.tol ? nlohmann::json(*q.tol) : nlohmann::json()},
+           {"reference_spread", q.reference_spread ? nlohmann::json(*q.reference_spread) : nlohmann::json()},
+           {"status", q.status},
+           {"note", q.note}});
       body += fmt::format(
-          "<tr class=\"{}\"><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.3f}</td>"
+          "<tr "
+          "class=\"{}\"><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</"
+          "td><td>{:.3f}</td>"
           "<td>{}</td></tr>\n",
           q.status == "pass"                           ? "pass"
           : q.status == "fail" || q.status == "failed" ? "fail"
+          : q.status == "reference uncertain"          ? "unc"
                                                        : "na",
           xml_escape(it.run.scene_name()), xml_escape(it.reference.settings_label()), xml_escape(q.metric),
-          text(q.error), text(q.tol), xml_escape(q.status), r.outcome.solver_seconds, xml_escape(q.note));
+          text(q.error), text(q.reference_spread), text(q.tol), xml_escape(q.status),
+          r.outcome.solver_seconds, xml_escape(q.note));
     }
-    scenes.push_back({{"scene", it.run.scene_name()},
-                      {"file", it.run.scene.string()},
-                      {"run", it.run.settings_label()},
-                      {"reference", it.reference.settings_label()},
-                      {"reference_kind", it.reference_kind},
-                      {"tolerances_from", it.source},
-                      {"status", status_name(r.outcome.status)},
-                      {"message", r.outcome.message},
-                      {"solver_seconds", r.outcome.solver_seconds},
-                      {"process_seconds", r.outcome.process_seconds},
-                      {"steps", r.outcome.steps},
-                      {"dt", r.outcome.dt},
-                      {"quantities", qs}});
+    scenes.push_back(
+        {{"scene", it.run.scene_name()},
+         {"file", it.run.scene.string()},
+         {"run", it.run.settings_label()},
+         {"reference", it.reference.settings_label()},
+         {"reference_kind", it.reference_kind},
+         {"reference_check",
+          it.reference_check ? nlohmann::json(it.reference_check->settings_label()) : nlohmann::json()},
+         {"tolerances_from", it.source},
+         {"status", status_name(r.outcome.status)},
+         {"message", r.outcome.message},
+         {"solver_seconds", r.outcome.solver_seconds},
+         {"process_seconds", r.outcome.process_seconds},
+         {"steps", r.outcome.steps},
+         {"dt", r.outcome.dt},
+         {"quantities", qs}});
   }
   const nlohmann::json j = {{"method", ctx.method},
                             {"origin", ctx.origin},
@@ -242,16 +317,20 @@ void write_scorecard(const fs::path& dir, const ScoreContext& ctx, const std::ve
       "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>Scorecard: {0}</title>\n<style>\n"
       "body{{font-family:sans-serif;margin:2em}} table{{border-collapse:collapse}} "
       "td,th{{border:1px solid #bbb;padding:3px 8px;text-align:left}} th{{background:#eee}} "
-      ".pass td:nth-child(6){{background:#d8f5d8}} .fail td:nth-child(6){{background:#f8d0d0}} "
-      ".na td:nth-child(6){{background:#eee}}\n</style></head><body>\n"
+      ".pass td:nth-child(7){{background:#d8f5d8}} .fail td:nth-child(7){{background:#f8d0d0}} "
+      ".unc td:nth-child(7){{background:#fff3c4}} .na "
+      "td:nth-child(7){{background:#eee}}\n</style></head><body>\n"
       "<h1>Scorecard: {0}</h1>\n<p>{1}</p>\n<p>Command: <code>{2}</code>; version {3}; made {4} (UTC); "
       "wall time {5:.1f} s.</p>\n<p>Quantities: {6}. Each run is compared with the best reference of its "
       "scene "
       "(exact where the verification matrix has one, else {8}) under the matrix's own tolerance for that "
       "scene; "
       "error: the norm of <code>beamimpact compare</code> (relative unless the metric says otherwise); "
+      "reference spread: the reference against the same run at the case's penalty, its own uncertainty "
+      "(a verdict it could reverse is <em>reference uncertain</em>); "
       "solver s: the method's own time (summary.json wall_seconds).</p>\n"
-      "<table>\n<tr><th>scene</th><th>reference</th><th>quantity</th><th>error</th><th>tolerance</th>"
+      "<table>\n<tr><th>scene</th><th>reference</th><th>quantity</th><th>error</th><th>reference "
+      "spread</th><th>tolerance</th>"
       "<th>status</th><th>solver s</th><th>note</th></tr>\n{7}</table>\n</body></html>\n",
       xml_escape(ctx.method), xml_escape(ctx.origin), xml_escape(ctx.command), xml_escape(ctx.version),
       xml_escape(ctx.made), ctx.wall_seconds, xml_escape(tally), body, ida_reference(ctx.options));

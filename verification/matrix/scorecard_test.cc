@@ -4,7 +4,9 @@
 #include <verification/matrix/scorecard.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -16,7 +18,20 @@ namespace {
 namespace fs = std::filesystem;
 
 /// What converged_ida adds to an IDA reference that sets none of these keys.
-const std::vector<std::string> kConverged = {"ida.rtol=1e-10", "ida.atol=1e-13", "ida.kn_factor=1e4"};
+const std::vector<std::string> kConverged = {"ida.rtol=1e-10", "ida.atol=1e-13", "ida.friction_velocity=1e-5",
+                                             "ida.kn_factor=1e4"};
+
+/// `set` with each converged setting whose key it does not set appended, in kConverged's order.
+std::vector<std::string> with_converged(std::vector<std::string> set, bool stiffen = true) {
+  const auto key = [](const std::string& s) { return s.substr(0, s.find('=')); };
+  const std::vector<std::string> own = set;
+  for (const std::string& c : kConverged) {
+    if (!stiffen && key(c) == "ida.kn_factor") continue;
+    if (std::none_of(own.begin(), own.end(), [&](const std::string& o) { return key(o) == key(c); }))
+      set.push_back(c);
+  }
+  return set;
+}
 
 bool has(const std::vector<std::string>& set, const std::string& s) {
   return std::find(set.begin(), set.end(), s) != set.end();
@@ -99,9 +114,12 @@ TEST(Scorecard, IdaReferencesAreConvergedUnlessMatrixReferencesAreAsked) {
   for (std::size_t i = 0; i < converged.size(); ++i) {
     if (written[i].reference.method != "ida") continue;
     ++ida;
-    std::vector<std::string> expect = written[i].reference.set;
-    expect.insert(expect.end(), kConverged.begin(), kConverged.end());
-    EXPECT_EQ(converged[i].reference.set, expect) << converged[i].run.label();
+    EXPECT_EQ(converged[i].reference.set, with_converged(written[i].reference.set))
+        << converged[i].run.label();
+    // Its check: the same converged run at the case's penalty (no case here sets one).
+    ASSERT_TRUE(converged[i].reference_check) << converged[i].run.label();
+    EXPECT_EQ(converged[i].reference_check->set, with_converged(written[i].reference.set, false));
+    EXPECT_FALSE(written[i].reference_check) << "matrix references have no check";
     const bool in_matrix = std::any_of(m.cases.begin(), m.cases.end(), [&](const Case& c) {
       return fs::absolute(c.run.scene).lexically_normal() == written[i].run.scene &&
              c.reference.method == "ida" && c.reference.set == written[i].reference.set;
@@ -110,6 +128,26 @@ TEST(Scorecard, IdaReferencesAreConvergedUnlessMatrixReferencesAreAsked) {
         << written[i].run.label();
   }
   EXPECT_GE(ida, 10);  // S3 at 10 elements, S4 x3 and the hard scenes without exact answers
+  // An exact reference is taken as exact: no check.
+  for (const ScoreItem& it : converged) {
+    if (it.reference_kind == "exact") {
+      EXPECT_FALSE(it.reference_check) << it.run.label();
+    }
+  }
+}
+
+TEST(Scorecard, AVerdictTheReferenceSpreadCouldReverseIsReferenceUncertain) {
+  // The true error lies within error +- spread when the reference's own error is within its
+  // spread: pass needs error + spread <= tol, fail needs error - spread > tol.
+  EXPECT_EQ(verdict(0.05, 0.08, std::nullopt), "pass");  // no spread: the reference taken as exact
+  EXPECT_EQ(verdict(0.09, 0.08, std::nullopt), "fail");
+  EXPECT_EQ(verdict(0.05, 0.08, 0.02), "pass");                 // 0.07 <= 0.08
+  EXPECT_EQ(verdict(0.07, 0.08, 0.02), "reference uncertain");  // 0.09 > 0.08 >= 0.05
+  EXPECT_EQ(verdict(0.13, 0.08, 0.10), "reference uncertain");  // 0.03 <= 0.08 < 0.23
+  EXPECT_EQ(verdict(0.13, 0.08, 0.01), "fail");                 // 0.12 > 0.08
+  EXPECT_EQ(verdict(0.08, 0.08, 0.0), "pass");                  // the tolerance is inclusive
+  EXPECT_EQ(verdict(std::nan(""), 0.08, 0.01), "fail");         // no number is not a pass
+  EXPECT_EQ(verdict(0.01, 0.08, std::numeric_limits<double>::infinity()), "reference uncertain");
 }
 
 TEST(Scorecard, SetsSelectTheScenesInOrderAndBadOptionsNameTheOption) {

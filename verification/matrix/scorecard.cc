@@ -249,52 +249,89 @@ std::vector<ScoreRow> score_rows(const std::vector<ScoreItem>& items,
   return rows;
 }
 
+namespace {
+
+nlohmann::json number(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); }
+
+/// One quantity in scorecard.json.
+nlohmann::json quantity_json(const ScoreQuantity& q) {
+  return {{"metric", q.metric},   {"error", number(q.error)},
+          {"tol", number(q.tol)}, {"reference_spread", number(q.reference_spread)},
+          {"status", q.status},   {"note", q.note}};
+}
+
+/// One quantity as a row of the page's table.
+std::string quantity_row(const ScoreRow& r, const ScoreQuantity& q) {
+  const std::string cls = q.status == "pass"                           ? "pass"
+                          : q.status == "fail" || q.status == "failed" ? "fail"
+                          : q.status == "reference uncertain"          ? "unc"
+                                                                       : "na";
+  return fmt::format(
+      "<tr class=\"{}\"><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>"
+      "<td>{:.3f}</td><td>{}</td></tr>\n",
+      cls, xml_escape(r.item->run.scene_name()), xml_escape(r.item->reference.settings_label()),
+      xml_escape(q.metric), text(q.error), text(q.reference_spread), text(q.tol), xml_escape(q.status),
+      r.outcome.solver_seconds, xml_escape(q.note));
+}
+
+/// One scored scene in scorecard.json.
+nlohmann::json scene_json(const ScoreRow& r, nlohmann::json quantities) {
+  const ScoreItem& it = *r.item;
+  return {{"scene", it.run.scene_name()},
+          {"file", it.run.scene.string()},
+          {"run", it.run.settings_label()},
+          {"reference", it.reference.settings_label()},
+          {"reference_kind", it.reference_kind},
+          {"reference_check",
+           it.reference_check ? nlohmann::json(it.reference_check->settings_label()) : nlohmann::json()},
+          {"tolerances_from", it.source},
+          {"status", status_name(r.outcome.status)},
+          {"message", r.outcome.message},
+          {"solver_seconds", r.outcome.solver_seconds},
+          {"process_seconds", r.outcome.process_seconds},
+          {"steps", r.outcome.steps},
+          {"dt", r.outcome.dt},
+          {"quantities", std::move(quantities)}};
+}
+
+/// The self-contained page: how it was made, what the columns mean, the table's rows.
+std::string scorecard_page(const ScoreContext& ctx, const std::string& tally, const std::string& body) {
+  return fmt::format(
+      "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>Scorecard: {0}</title>\n<style>\n"
+      "body{{font-family:sans-serif;margin:2em}} table{{border-collapse:collapse}} "
+      "td,th{{border:1px solid #bbb;padding:3px 8px;text-align:left}} th{{background:#eee}} "
+      ".pass td:nth-child(7){{background:#d8f5d8}} .fail td:nth-child(7){{background:#f8d0d0}} "
+      ".unc td:nth-child(7){{background:#fff3c4}} .na td:nth-child(7){{background:#eee}}\n"
+      "</style></head><body>\n"
+      "<h1>Scorecard: {0}</h1>\n<p>{1}</p>\n<p>Command: <code>{2}</code>; version {3}; made {4} (UTC); "
+      "wall time {5:.1f} s.</p>\n<p>Quantities: {6}. Each run is compared with the best reference of its "
+      "scene (exact where the verification matrix has one, else {8}) under the matrix's own tolerance "
+      "for that scene; error: the norm of <code>beamimpact compare</code> (relative unless the metric "
+      "says otherwise); reference spread: the reference against the same run at the case's penalty, "
+      "its own uncertainty (a verdict it could reverse is <em>reference uncertain</em>); solver s: the "
+      "method's own time (summary.json wall_seconds).</p>\n"
+      "<table>\n<tr><th>scene</th><th>reference</th><th>quantity</th><th>error</th><th>reference "
+      "spread</th><th>tolerance</th><th>status</th><th>solver s</th><th>note</th></tr>\n{7}</table>\n"
+      "</body></html>\n",
+      xml_escape(ctx.method), xml_escape(ctx.origin), xml_escape(ctx.command), xml_escape(ctx.version),
+      xml_escape(ctx.made), ctx.wall_seconds, xml_escape(tally), body, ida_reference(ctx.options));
+}
+
+}  // namespace
+
 void write_scorecard(const fs::path& dir, const ScoreContext& ctx, const std::vector<ScoreRow>& rows) {
   fs::create_directories(dir);
   std::map<std::string, int> counts;
   nlohmann::json scenes = nlohmann::json::array();
   std::string body;
   for (const ScoreRow& r : rows) {
-    const ScoreItem& it = *r.item;
     nlohmann::json qs = nlohmann::json::array();
     for (const ScoreQuantity& q : r.quantities) {
       ++counts[q.status];
-      qs.push_back(
-          {{"metric", q.metric},
-           {"error", q.error ? nlohmann::json(*q.error) : nlohmann::json()},
-           {"tol", q.tol ? nlohmann::json(*q.tol) : nlohmann::json()},
-           {"reference_spread", q.reference_spread ? nlohmann::json(*q.reference_spread) : nlohmann::json()},
-           {"status", q.status},
-           {"note", q.note}});
-      body += fmt::format(
-          "<tr "
-          "class=\"{}\"><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</"
-          "td><td>{:.3f}</td>"
-          "<td>{}</td></tr>\n",
-          q.status == "pass"                           ? "pass"
-          : q.status == "fail" || q.status == "failed" ? "fail"
-          : q.status == "reference uncertain"          ? "unc"
-                                                       : "na",
-          xml_escape(it.run.scene_name()), xml_escape(it.reference.settings_label()), xml_escape(q.metric),
-          text(q.error), text(q.reference_spread), text(q.tol), xml_escape(q.status),
-          r.outcome.solver_seconds, xml_escape(q.note));
+      qs.push_back(quantity_json(q));
+      body += quantity_row(r, q);
     }
-    scenes.push_back(
-        {{"scene", it.run.scene_name()},
-         {"file", it.run.scene.string()},
-         {"run", it.run.settings_label()},
-         {"reference", it.reference.settings_label()},
-         {"reference_kind", it.reference_kind},
-         {"reference_check",
-          it.reference_check ? nlohmann::json(it.reference_check->settings_label()) : nlohmann::json()},
-         {"tolerances_from", it.source},
-         {"status", status_name(r.outcome.status)},
-         {"message", r.outcome.message},
-         {"solver_seconds", r.outcome.solver_seconds},
-         {"process_seconds", r.outcome.process_seconds},
-         {"steps", r.outcome.steps},
-         {"dt", r.outcome.dt},
-         {"quantities", qs}});
+    scenes.push_back(scene_json(r, std::move(qs)));
   }
   const nlohmann::json j = {{"method", ctx.method},
                             {"origin", ctx.origin},
@@ -308,33 +345,13 @@ void write_scorecard(const fs::path& dir, const ScoreContext& ctx, const std::ve
                             {"scenes", scenes},
                             {"units",
                              {{"solver_seconds", "s, summary.json wall_seconds: the method's own time"},
-                              {"process_seconds", "s, the process from start to end"}}}};
+                              {"process_seconds", "s, the process from start to end"},
+                              {"reference_spread", "the error's norm: the reference against its check"}}}};
   write_file_atomic(dir / "scorecard.json", j.dump(1) + "\n");
   std::string tally;
-  for (const auto& [status, n] : counts) tally += fmt::format("{} {}, ", n, status);
-  if (!tally.empty()) tally.resize(tally.size() - 2);
-  const std::string html = fmt::format(
-      "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>Scorecard: {0}</title>\n<style>\n"
-      "body{{font-family:sans-serif;margin:2em}} table{{border-collapse:collapse}} "
-      "td,th{{border:1px solid #bbb;padding:3px 8px;text-align:left}} th{{background:#eee}} "
-      ".pass td:nth-child(7){{background:#d8f5d8}} .fail td:nth-child(7){{background:#f8d0d0}} "
-      ".unc td:nth-child(7){{background:#fff3c4}} .na "
-      "td:nth-child(7){{background:#eee}}\n</style></head><body>\n"
-      "<h1>Scorecard: {0}</h1>\n<p>{1}</p>\n<p>Command: <code>{2}</code>; version {3}; made {4} (UTC); "
-      "wall time {5:.1f} s.</p>\n<p>Quantities: {6}. Each run is compared with the best reference of its "
-      "scene "
-      "(exact where the verification matrix has one, else {8}) under the matrix's own tolerance for that "
-      "scene; "
-      "error: the norm of <code>beamimpact compare</code> (relative unless the metric says otherwise); "
-      "reference spread: the reference against the same run at the case's penalty, its own uncertainty "
-      "(a verdict it could reverse is <em>reference uncertain</em>); "
-      "solver s: the method's own time (summary.json wall_seconds).</p>\n"
-      "<table>\n<tr><th>scene</th><th>reference</th><th>quantity</th><th>error</th><th>reference "
-      "spread</th><th>tolerance</th>"
-      "<th>status</th><th>solver s</th><th>note</th></tr>\n{7}</table>\n</body></html>\n",
-      xml_escape(ctx.method), xml_escape(ctx.origin), xml_escape(ctx.command), xml_escape(ctx.version),
-      xml_escape(ctx.made), ctx.wall_seconds, xml_escape(tally), body, ida_reference(ctx.options));
-  write_file_atomic(dir / "scorecard.html", html);
+  for (const auto& [status, n] : counts)
+    tally += fmt::format("{}{} {}", tally.empty() ? "" : ", ", n, status);
+  write_file_atomic(dir / "scorecard.html", scorecard_page(ctx, tally, body));
 }
 
 }  // namespace beamimpact::verification

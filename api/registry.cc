@@ -31,7 +31,7 @@ std::deque<Method> built_in() {
   Method exact;
   exact.name = "exact";
   exact.summary =
-      "exact and semi-analytic solutions: d'Alembert rods, rod on a simply supported beam, rigid rod "
+      "exact and semi-analytic solutions: d'Alembert rods, rod or Hertz ball on a simply supported beam, rigid rod "
       "(references/exact/)";
   exact.options_table = "exact";
   exact.accepts.mesh_factor = false;  // an exact solution has no mesh
@@ -39,7 +39,7 @@ std::deque<Method> built_in() {
   exact.accepts.search = false;
   exact.accepts.several_contacts = false;
   exact.accepts.timoshenko = false;  // the solutions are of Euler-Bernoulli beams and rods
-  exact.accepts.hertz = false;       // and of the hard contact law
+  exact.accepts.hertz = true;        // a rigid striker on a beam only (its recogniser refuses the rest)
   exact.solve = exact::solve;
   t.push_back(exact);
 #endif

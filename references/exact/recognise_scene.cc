@@ -63,6 +63,18 @@ void check_one_frictionless_undamped_contact(const Scene& scene) {
     refuse(scene, "model.rayleigh_mass", "damping is not zero; the exact solutions are undamped");
 }
 
+/// @brief Refuses the Hertz law in a scene that is not a rigid striker on a flexible target.
+void refuse_hertz_unless_ball_on_beam(const Scene& scene) {
+  for (std::size_t i = 0; i < scene.contacts.size(); ++i) {
+    const Contact& c = scene.contacts[i];
+    if (c.law != ContactLaw::kHertz) continue;
+    if (!scene.bodies[c.striker].rigid || scene.bodies[c.target].rigid)
+      refuse(scene, fmt::format("contacts[{}].law", i),
+             "its Hertz-law solution is of a rigid striker on a simply supported flexible beam (ball on "
+             "beam); expected law = \"hard\", or a rigid striker (rigid = true) on a flexible target");
+  }
+}
+
 /// @brief The striker's frame, common to both problems, and what the recognisers check against.
 struct Frame {
   const Body& A;            ///< striker
@@ -257,6 +269,8 @@ ExactProblem recognise_rod_on_wall(const Scene& scene) {
 }
 
 ExactProblem recognise_scene(const Scene& scene) {
+  refuse_hertz_unless_ball_on_beam(scene);
+  const bool hertz = !scene.contacts.empty() && scene.contacts[0].law == ContactLaw::kHertz;
   if (scene.bodies.size() == 2 && scene.contacts.size() == 1 &&
       !scene.bodies[scene.contacts[0].striker].rigid && scene.bodies[scene.contacts[0].target].rigid)
     return recognise_rod_on_wall(scene);
@@ -264,8 +278,9 @@ ExactProblem recognise_scene(const Scene& scene) {
     refuse(scene, "loads",
            "external loads (gravity, point forces) enter its rod-on-a-rigid-wall solution only; expected no "
            "[loads] table, or a method that applies them (paper, ida)");
-  for (const Body& b : scene.bodies)
-    if (b.rigid) return recognise_rigid_rod(scene);
+  if (!hertz)  // a rigid striker with the Hertz law is a ball on a beam (below)
+    for (const Body& b : scene.bodies)
+      if (b.rigid) return recognise_rigid_rod(scene);
   check_one_frictionless_undamped_contact(scene);
   const Contact& c = scene.contacts[0];
   ExactProblem p;
@@ -286,10 +301,19 @@ ExactProblem recognise_scene(const Scene& scene) {
     refuse(scene, ka + ".velocity", "the striker's velocity is not along its own axis");
   p.striker_rod = as_rod(A);
   const Frame f{A, B, ka, kb, pc, unit(sub(B.end, B.start)), scale, va_norm, vb_norm};
-  if (B.supports.empty() || std::abs(cross(f.eb, p.dir)) <= kTol)  // free, or on the striker's axis
+  const bool coaxial = B.supports.empty() || std::abs(cross(f.eb, p.dir)) <= kTol;  // free, or on the axis
+  if (hertz && coaxial)
+    refuse(scene, kb + ".supports",
+           "its Hertz-law solution is of a striker across a simply supported beam (ball on beam)");
+  if (coaxial)
     recognise_coaxial_rods(scene, f, p);
   else
     recognise_rod_on_beam(scene, f, p);
+  if (hertz) {
+    p.kind = ExactKind::kBallOnBeam;
+    p.mass = A.rho * A.area * A.length();
+    p.hertz_stiffness = c.hertz_stiffness;
+  }
   return p;
 }
 

@@ -21,6 +21,7 @@ enum class ExactKind {
   kRodOnBeam,    ///< a free rod end-on onto a simply supported beam (references.md section 2)
   kRigidRod,     ///< a rigid rod onto an immovable rigid surface, with friction (references.md section 3)
   kRodOnWall,    ///< a free elastic rod end-on onto an immovable rigid body, gravity along it (RodOnWall.hpp)
+  kBallOnBeam,  ///< a free rigid striker onto a simply supported beam through a Hertz spring (BallOnBeam.hpp)
 };
 
 /// @brief The 1D problem a scene describes, in the frame of its contact.
@@ -34,8 +35,10 @@ struct ExactProblem {
   Rod striker_rod;                        ///< the striker as a rod
   Rod target_rod;                         ///< the target as a rod (kCoaxialRods)
   FarEnd target_far_end = FarEnd::kFree;  ///< kCoaxialRods: the target's far end free or fixed
-  SimpleBeam beam;                        ///< the target as a beam (kRodOnBeam)
-  double x_c = 0.0;                       ///< m, struck point from the target's start node (kRodOnBeam)
+  SimpleBeam beam;                        ///< the target as a beam (kRodOnBeam, kBallOnBeam)
+  double x_c = 0.0;              ///< m, struck point from the target's start node (kRodOnBeam, kBallOnBeam)
+  double mass = 0.0;             ///< kg, kBallOnBeam: the rigid striker's mass rho A L
+  double hertz_stiffness = 0.0;  ///< N/m^1.5, kBallOnBeam: k of the contact's Hertz spring
   ContactKind contact_kind = ContactKind::kEndToEnd;  ///< string forms in schema/output_schema.hpp
   Vec2 normal{};       ///< kRigidRod: unit normal of the surface, toward the rod
   double theta = 0.0;  ///< kRigidRod: rad, angle between the rod and the surface

@@ -1,6 +1,8 @@
 // Scene recognition: what the exact method accepts, and the condition named when it refuses.
 #include <references/exact/recognise_scene.hpp>
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include <solver/scene/SceneError.hpp>
@@ -115,6 +117,37 @@ TEST(RecogniseScene, CoaxialTargetClampedAtItsFarEnd) {
   s = clamped;
   s.bodies[1].velocity = {0.3, 0.0};
   expect_refused(s, "bodies[1].velocity", "fixed at its far end but not at rest");
+}
+
+}  // namespace
+}  // namespace beamimpact::exact
+
+namespace beamimpact::exact {
+namespace {
+
+// Timoshenko's ball on a beam: a rigid striker with the Hertz law on a simply supported beam. Its
+// mass is rho A L of the rigid body (4/3 pi r^3 rho for r = 20 mm of steel) and k = 4/3 E* sqrt(r)
+// from the contact's radius and modulus (Johnson 1985, Eq. 4.22).
+TEST(RecogniseScene, BallOnBeamWithTheHertzLaw) {
+  const Scene scene =
+      load_scene((testing::source_dir() / "verification/scenes/extra/ball_on_beam.toml").string());
+  const ExactProblem p = recognise_scene(scene);
+  EXPECT_EQ(p.kind, ExactKind::kBallOnBeam);
+  const double r = 0.02, rho = 7800.0, pi = 3.14159265358979323846;
+  EXPECT_NEAR(p.mass, 4.0 / 3.0 * pi * r * r * r * rho, 1e-12);
+  EXPECT_NEAR(p.hertz_stiffness, 4.0 / 3.0 * 2.1e11 / (2.0 * (1.0 - 0.09)) * std::sqrt(r),
+              1e-6 * p.hertz_stiffness);
+  EXPECT_NEAR(p.x_c, 0.5, 1e-15);
+  EXPECT_NEAR(p.gap, 1e-4, 1e-15);
+  EXPECT_DOUBLE_EQ(p.v0, 1.0);
+  EXPECT_EQ(p.contact_kind, ContactKind::kNodeToNode);
+  // The Hertz law anywhere else has no exact solution here: a flexible striker (S2), or a rigid
+  // striker on a rigid target.
+  expect_refused(
+      load_scene(paper_scene("s2_transverse"), {"contacts[0].law=hertz", "contacts[0].stiffness=50"}),
+      "contacts[0].law", "rigid striker");
+  expect_refused(load_scene((testing::source_dir() / "verification/scenes/extra/hertz_drop.toml").string()),
+                 "contacts[0].law", "rigid striker");
 }
 
 }  // namespace

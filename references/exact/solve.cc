@@ -10,8 +10,11 @@
 #include <references/exact/RodOnBeam.hpp>
 #include <references/exact/RodOnBeamCost.hpp>
 #include <references/exact/RodOnWall.hpp>
+#include <references/exact/beam_mode_options.hpp>
+#include <references/exact/finish_summary.hpp>
 #include <references/exact/output_times.hpp>
 #include <references/exact/recognise_scene.hpp>
+#include <references/exact/solve_ball_on_beam.hpp>
 #include <solver/record/ResultRecorder.hpp>
 #include <solver/scene/SceneError.hpp>
 #include <solver/scene/TableReader.hpp>
@@ -19,39 +22,6 @@
 
 namespace beamimpact::exact {
 namespace {
-
-const char* kMergeRule =
-    "exact event times: an interval runs from the first to the last instant of positive force; "
-    "a zero-force phase with the gap still closed is not a separation (no merging of real gaps)";
-
-Vec2 along(Vec2 d, double s) { return {d[0] * s, d[1] * s}; }
-
-// Records the rows (energies, momentum drift, output-grid contact statistics) and then reports
-// what the exact solution knows exactly: its event times, impulse and peak force. The
-// output-grid values are kept too (comparable with a stepping method's sampling).
-SimulationResult finish_summary(ResultRecorder& rec, std::vector<HistoryRow> rows,
-                                const std::vector<std::array<double, 2>>& intervals, double impulse,
-                                double peak, double first, ContactKind kind, nlohmann::json contact_extra) {
-  rec.set_merge_rule(0.0, kMergeRule);
-  const double dt = rec.result().dt;
-  for (HistoryRow& row : rows) {
-    rec.sample(0, row.t, row.contacts[0].R, 0.0, dt, row.contacts[0].state);
-    rec.track_real_gap(0, row.t, row.contacts[0].gap);  // the exact solution's gap is the real one
-    rec.track_momentum(row.momentum);
-    rec.add_row(std::move(row));
-  }
-  SimulationResult r = rec.finish({kind});
-  ContactSummary& s = r.contacts[0];
-  contact_extra["intervals_on_output_grid"] = s.intervals;
-  contact_extra["impulse_on_output_grid"] = s.impulse_normal;
-  s.intervals = intervals;
-  s.interval_impulses.clear();  // known exactly only where the solution says (rods, wall)
-  s.impulse_normal = impulse;
-  s.peak_R = peak;
-  s.first_step_R = first;
-  s.extra = std::move(contact_extra);
-  return r;
-}
 
 SimulationResult solve_rods(const Scene& scene, const ExactProblem& p, ResultRecorder& rec) {
   SimulationResult& r = rec.result();
@@ -242,16 +212,10 @@ SimulationResult solve_rigid(const Scene& scene, const ExactProblem& p, ResultRe
   return out;
 }
 
-struct BeamOptions {
-  long modes = 0;  // 0: convergence study
-  long modes_min = 16, modes_max = 512;
-  double tol = 1e-3, rtol = 1e-10;
-};
-
 /// Before any mode is integrated: a solution (or the worst case of a mode study, every doubling
 /// up to modes_max) far beyond an ordinary run is refused with its estimate, unless
 /// time.allow_long_run is set.
-void check_beam_cost(const Scene& scene, const RodOnBeamSetup& s, const BeamOptions& o) {
+void check_beam_cost(const Scene& scene, const RodOnBeamSetup& s, const BeamModeOptions& o) {
   std::vector<int> counts;
   if (o.modes > 0) counts.push_back(static_cast<int>(std::min<long>(o.modes, 1L << 30)));
   for (long n = std::max(1L, o.modes_min); o.modes == 0; n *= 2) {
@@ -264,7 +228,7 @@ void check_beam_cost(const Scene& scene, const RodOnBeamSetup& s, const BeamOpti
                        "set fewer modes (exact.modes or exact.modes_max), a larger exact.dt_out");
 }
 
-SimulationResult solve_beam(const Scene& scene, const ExactProblem& p, const BeamOptions& o,
+SimulationResult solve_beam(const Scene& scene, const ExactProblem& p, const BeamModeOptions& o,
                             ResultRecorder& rec) {
   SimulationResult& r = rec.result();
   std::vector<HistoryRow> rows;
@@ -363,8 +327,8 @@ SimulationResult solve(const Scene& scene) {
     r.assumed["exact.dt_out"] = fmt::format("{} s (time.end / 2000, as time.dt is auto)", r.dt);
   }
   check_run_cost(scene, r.dt);  // one row per output time: refuses 1e300 rows (was a hang)
-  BeamOptions o;
-  if (p.kind == ExactKind::kRodOnBeam) {
+  BeamModeOptions o;
+  if (p.kind == ExactKind::kRodOnBeam || p.kind == ExactKind::kBallOnBeam) {
     if (in.has("modes")) {
       o.modes = in.integer("modes", "a positive number of beam modes");
       if (o.modes < 1) in.fail("modes", "expected a positive number of beam modes");
@@ -384,6 +348,7 @@ SimulationResult solve(const Scene& scene) {
   in.finish();
   if (p.kind == ExactKind::kRigidRod) return solve_rigid(scene, p, rec);
   if (p.kind == ExactKind::kRodOnWall) return solve_wall(scene, p, rec);
+  if (p.kind == ExactKind::kBallOnBeam) return solve_ball_on_beam_scene(scene, p, o, rec);
   return p.kind == ExactKind::kCoaxialRods ? solve_rods(scene, p, rec) : solve_beam(scene, p, o, rec);
 }
 

@@ -31,7 +31,8 @@ std::deque<Method> built_in() {
   Method exact;
   exact.name = "exact";
   exact.summary =
-      "exact and semi-analytic solutions: d'Alembert rods, rod or Hertz ball on a simply supported beam, rigid rod "
+      "exact and semi-analytic solutions: d'Alembert rods, rod or Hertz ball on a simply supported beam, "
+      "rigid rod "
       "(references/exact/)";
   exact.options_table = "exact";
   exact.accepts.mesh_factor = false;  // an exact solution has no mesh

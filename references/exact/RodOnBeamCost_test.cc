@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <references/exact/rod_on_beam_testing.hpp>
 #include <references/exact/solve.hpp>
 #include <solver/scene/SceneError.hpp>
 #include <solver/testing/test_scenes.hpp>
@@ -15,28 +16,13 @@
 namespace beamimpact::exact {
 namespace {
 
-// S2 (shared/spec/scenes.md): rod 5 m, E 100 Pa, rho 1, A 0.4 (c = 10 m/s, T = 1 s); beam 10 m
-// pinned at both ends, I = 0.4^3 / 12 m^4 (a = sqrt(E I / (rho A)) = 1.1547 m^2/s); struck at
-// midspan at 1 m/s across a 0.1 m gap (first touch 0.1 s); 3 s, rows every 0.01 s.
-RodOnBeamSetup s2() {
-  RodOnBeamSetup s;
-  s.rod = Rod{5.0, 100.0, 1.0, 0.4};
-  s.beam = SimpleBeam{10.0, 100.0, 1.0, 0.4, 0.4 * 0.4 * 0.4 / 12.0};
-  s.x_c = 5.0;
-  s.v0 = 1.0;
-  s.gap = 0.1;
-  s.t_end = 3.0;
-  s.dt_out = 0.01;
-  return s;
-}
-
 TEST(RodOnBeamCost, S2At4096ModesByHand) {
   // Omega_4096 = (4096 pi / 10)^2 a = 1.9120e6 rad/s; samples a quarter radian apart:
   // 1.3075e-7 s, over 3 - 0.1 = 2.9 s: 2.2180e7 stops of 2 x 4096 + 3 = 8195 states each.
   const double a = std::sqrt(100.0 * (0.4 * 0.4 * 0.4 / 12.0) / 0.4);
   const double omega = std::pow(4096.0 * std::numbers::pi / 10.0, 2) * a;
   const double samples = 2.9 / (0.25 / omega);
-  const RodOnBeamCost c = estimate_rod_on_beam_cost(s2(), {4096});
+  const RodOnBeamCost c = estimate_rod_on_beam_cost(s2_rod_on_beam(), {4096});
   EXPECT_NEAR(omega, 1.9120e6, 1e2);  // the hand value above, to its 5 digits
   EXPECT_NEAR(c.samples, samples, 1e-9 * samples);
   EXPECT_NEAR(c.state_steps, samples * 8195.0, 1e-9 * samples * 8195.0);
@@ -50,7 +36,7 @@ TEST(RodOnBeamCost, PredictsTheIntegratorStopsOfARun) {
   // Every memory sample is a stop of the rk8pd driver, a quarter radian of the top mode apart,
   // where one rk8pd step at rtol 1e-10 suffices; the extra steps (piece ends, output rows,
   // rejected steps, root finding at the re-contact) stay below 10 %.
-  RodOnBeamSetup s = s2();
+  RodOnBeamSetup s = s2_rod_on_beam();
   s.modes = 64;
   s.rod_fields = false;
   const RodOnBeam run(s);
@@ -75,7 +61,7 @@ TEST(RodOnBeamCost, ExactRefusesAnExtraordinaryModeCountBeforeStarting) {
   }
   std::vector<int> study;
   for (int n = 16; n <= 512; n *= 2) study.push_back(n);
-  EXPECT_LT(estimate_rod_on_beam_cost(s2(), study).seconds(), kOrdinaryExactSeconds);
+  EXPECT_LT(estimate_rod_on_beam_cost(s2_rod_on_beam(), study).seconds(), kOrdinaryExactSeconds);
 }
 
 }  // namespace

@@ -8,28 +8,14 @@
 #include <gtest/gtest.h>
 
 #include <references/exact/erfcx.hpp>
+#include <references/exact/rod_on_beam_testing.hpp>
 
 namespace beamimpact::exact {
 namespace {
 
-// The paper's soft material and S2 geometry: rod 5 m (T_A = 1 s, Z_A = 4 N s/m),
-// beam 10 m, I = 0.4^3/12 m^4.
-RodOnBeamSetup s2_setup(int modes, double t_end) {
-  RodOnBeamSetup s;
-  s.rod = Rod{5.0, 100.0, 1.0, 0.4};
-  s.beam = SimpleBeam{10.0, 100.0, 1.0, 0.4, 0.4 * 0.4 * 0.4 / 12.0};
-  s.x_c = 5.0;
-  s.v0 = 1.0;
-  s.gap = 0.1;
-  s.modes = modes;
-  s.t_end = t_end;
-  s.dt_out = 0.01;
-  return s;
-}
-
 TEST(RodOnBeam, ForceJustAfterFirstTouchIsRodImpedanceTimesSpeed) {
   // At touch the beam is at rest and no wave has come back: P = Z_A v0 exactly.
-  const RodOnBeam r(s2_setup(16, 0.5));
+  const RodOnBeam r(s2_rod_on_beam(16, 0.5));
   EXPECT_NEAR(r.solution().first_P, 4.0, 1e-14);
   ASSERT_FALSE(r.solution().intervals.empty());
   EXPECT_NEAR(r.solution().intervals[0][0], 0.1, 1e-14);  // g0 / v0
@@ -40,7 +26,7 @@ TEST(RodOnBeam, EarlyForceFollowsInfiniteBeamErfcx) {
   // keeps the support images 40 m away: their share of the response is ~2 a tau / x^2 < 5e-4
   // for tau <= 0.35 s (a = sqrt(EI/rhoA) = 1.15 m^2/s). 512 modes reach 1.9e3 rad/s, so
   // Omega_N tau > 90 and the truncation ripple measured at this N is below 1e-3; 3e-3 bounds both.
-  RodOnBeamSetup s = s2_setup(512, 0.35);
+  RodOnBeamSetup s = s2_rod_on_beam(512, 0.35);
   s.beam.length = 40.0;
   s.x_c = 20.0;
   s.gap = 0.0;
@@ -62,7 +48,7 @@ TEST(RodOnBeam, EarlyForceFollowsInfiniteBeamErfcx) {
 TEST(RodOnBeam, HeavyStiffBeamActsAsRigidWall) {
   // Beam 1e4 times denser and 1e8 times stiffer: b sqrt(T_A) ~ 2e-4, so the rod sees a wall:
   // P = Z_A v0 for one round trip, impulse 2 m_A v0, rebound at -v0 (to ~1e-3).
-  RodOnBeamSetup s = s2_setup(16, 2.0);
+  RodOnBeamSetup s = s2_rod_on_beam(16, 2.0);
   s.beam.rho = 1e4;
   s.beam.E = 1e10;
   const RodOnBeam r(s);
@@ -80,7 +66,7 @@ TEST(RodOnBeam, MomentumAndEnergyBalance) {
   // and rod field energy + beam modal energy equals m_A v0^2 / 2. The field comes from the
   // interpolated memory (error ~1e-9 of P) and 3-point Gauss panels: 1e-7 relative is ample.
   // The beam's modal energy equals the work of P on it up to the rk8pd tolerance (1e-10 x scales).
-  const RodOnBeam r(s2_setup(32, 3.0));
+  const RodOnBeam r(s2_rod_on_beam(32, 3.0));
   const auto& sol = r.solution();
   const double m = 2.0, E0 = 0.5 * m;  // rod mass rho A L = 2 kg, v0 = 1 m/s
   for (const RodOnBeamRow& row : sol.rows) {
@@ -97,7 +83,7 @@ TEST(RodOnBeam, MomentumAndEnergyBalance) {
 TEST(RodOnBeam, ImpulseAndContactTimesConvergeWithModes) {
   // Each doubling must shrink the change of impulse and contact times; by 128 modes the
   // change is below 1e-3 of the impulse and of the first contact's duration.
-  const ModeStudy st = converge_modes(s2_setup(16, 2.3), 16, 128, 1e-3);
+  const ModeStudy st = converge_modes(s2_rod_on_beam(16, 2.3), 16, 128, 1e-3);
   ASSERT_GE(st.table.size(), 3u);
   std::vector<double> dJ;
   for (std::size_t i = 1; i < st.table.size(); ++i)

@@ -7,15 +7,13 @@
 #include <gtest/gtest.h>
 
 #include <solver/model/Model.hpp>
-#include <solver/testing/test_scenes.hpp>
+#include <solver/testing/turned_chord.hpp>
 
 namespace beamimpact::paper {
 namespace {
 
-// S3 with the striker over the first element of B, 0.5 m from B's pinned start (0.1 m above it).
-Scene strike_next_to_the_pin() {
-  return testing::load_paper_scene("s3_surface_10", {"bodies.A.start=[0.5, 5.1]", "bodies.A.end=[0.5, 0.1]"});
-}
+using testing::strike_next_to_the_pin;
+using testing::turned_chord;
 
 // B's first element turned about the pin (node 1 down by 0.6 m: 31 deg) and the striker d below
 // that chord, straight under its reference position (a prediction that penetrates). Along n (up)
@@ -28,11 +26,8 @@ TEST(ContactPair, StrikerBelowATurnedChordKeepsThePointUnderIt) {
   const Model model(s, true);
   ContactPair pair(model, s, 0);
   ASSERT_EQ(pair.element(), 0);
-  const double w = -0.6, d = 0.01;
-  Eigen::VectorXd U = Eigen::VectorXd::Zero(model.size());
-  U(model.equation(model.node_id(1, 1), 1)) = w;
-  const Vec2 X = model.node_position(pair.striker_node());
-  U(model.equation(pair.striker_node(), 1)) = (0.5 * w - d) - X[1];
+  const double d = 0.01;
+  const Eigen::VectorXd U = turned_chord(model, pair.striker_node(), -0.6, 0.0, d);
   pair.relocate(U);
   EXPECT_EQ(pair.element(), 0);
   EXPECT_NEAR(pair.xi2(), 0.5, 1e-14);
@@ -45,12 +40,7 @@ TEST(ContactPair, StrikerOnATurnedChordIsClosedWhereItStands) {
   const Scene s = strike_next_to_the_pin();
   const Model model(s, true);
   ContactPair pair(model, s, 0);
-  const double w = -0.6;
-  Eigen::VectorXd U = Eigen::VectorXd::Zero(model.size());
-  U(model.equation(model.node_id(1, 1), 1)) = w;
-  const Vec2 X = model.node_position(pair.striker_node());
-  U(model.equation(pair.striker_node(), 0)) = 0.2;
-  U(model.equation(pair.striker_node(), 1)) = 0.7 * w - X[1];
+  const Eigen::VectorXd U = turned_chord(model, pair.striker_node(), -0.6, 0.2, 0.0);
   EXPECT_TRUE(pair.relocate(U));
   EXPECT_NEAR(pair.xi2(), 0.7, 1e-14);
   EXPECT_NEAR(pair.g0() + ContactPair::eval(pair.normal_row(), U), 0.0, 1e-14);

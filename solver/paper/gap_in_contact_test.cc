@@ -10,15 +10,12 @@
 
 #include <solver/integrator/ExplicitContactIntegrator.hpp>
 #include <solver/paper/solve.hpp>
-#include <solver/testing/test_scenes.hpp>
+#include <solver/testing/turned_chord.hpp>
 
 namespace beamimpact::paper {
 namespace {
 
-// S3 with the striker over B's first element, 0.5 m from the pinned start.
-Scene strike_next_to_the_pin() {
-  return testing::load_paper_scene("s3_surface_10", {"bodies.A.start=[0.5, 5.1]", "bodies.A.end=[0.5, 0.1]"});
-}
+using testing::strike_next_to_the_pin;
 
 // Frictionless, lumped mass, a vertical striker: the step's correction moves the striker and B's
 // nodes along the normal only, so with the struck point on the striker's line along the normal
@@ -68,12 +65,7 @@ TEST(GapInContact, ReportsAndWarnsAPenetrationUnderForce) {
   const Model model(s, true);
   const std::vector<ContactPair> pairs{ContactPair(model, s, 0)};
   GapInContact gap(model, s, pairs, SurfaceInterpolation::kLinear);
-  auto below = [&](double d) {
-    Eigen::VectorXd U = Eigen::VectorXd::Zero(model.size());
-    U(model.equation(model.node_id(1, 1), 1)) = -0.6;
-    U(model.equation(pairs[0].striker_node(), 1)) = -0.3 - d - 0.1;  // 0.1 m: the reference gap
-    return U;
-  };
+  auto below = [&](double d) { return testing::turned_chord(model, pairs[0].striker_node(), -0.6, 0.0, d); };
   std::vector<ContactForce> f(1);
   gap.track(0, {0}, f, below(5e-3), 0.3);  // open (R = 0): not counted
   f[0].R = 1.0;

@@ -25,7 +25,7 @@ void write_file_atomic(const std::filesystem::path& file, const std::string& tex
 void remove_stale_outputs(const std::filesystem::path& dir, std::initializer_list<const char*> names) {
   if (dir.empty()) return;  // no output directory: nothing is written, nothing to remove
   for (const char* name : names)
-    for (const std::filesystem::path f : {dir / name, dir / (std::string(name) + ".partial")}) {
+    for (const std::filesystem::path& f : {dir / name, dir / (std::string(name) + ".partial")}) {
       std::error_code ec;
       if (!std::filesystem::exists(std::filesystem::symlink_status(f, ec)))
         continue;  // absent, or dir not one

@@ -1,6 +1,7 @@
 #include <references/exact/solve.hpp>
 
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -212,6 +213,9 @@ SimulationResult solve_rigid(const Scene& scene, const ExactProblem& p, ResultRe
   return out;
 }
 
+/// The most beam modes: the solution's state, 2 N + 3 numbers, is indexed by int.
+constexpr long kMostModes = (std::numeric_limits<int>::max() - 3L) / 2;
+
 /// Before any mode is integrated: a solution (or the worst case of a mode study, every doubling
 /// up to modes_max) far beyond an ordinary run is refused with its estimate, unless
 /// time.allow_long_run is set.
@@ -331,7 +335,8 @@ SimulationResult solve(const Scene& scene) {
   if (p.kind == ExactKind::kRodOnBeam || p.kind == ExactKind::kBallOnBeam) {
     if (in.has("modes")) {
       o.modes = in.integer("modes", "a positive number of beam modes");
-      if (o.modes < 1) in.fail("modes", "expected a positive number of beam modes");
+      if (o.modes < 1 || o.modes > kMostModes)
+        in.fail("modes", fmt::format("expected a positive number of beam modes, at most {}", kMostModes));
     } else {
       o.modes_min = in.integer_or("modes_min", o.modes_min, "the first mode count of the convergence study");
       o.modes_max =
@@ -340,6 +345,8 @@ SimulationResult solve(const Scene& scene) {
           in.number_or("mode_tolerance", o.tol, "relative change of impulse and contact times per doubling");
       if (o.modes_min < 1 || o.modes_max < o.modes_min)
         in.fail("modes_max", "expected 1 <= modes_min <= modes_max");
+      if (o.modes_max > kMostModes)
+        in.fail("modes_max", fmt::format("expected at most {} modes", kMostModes));
       if (!(o.tol > 0.0)) in.fail("mode_tolerance", "expected a positive tolerance");
     }
     o.rtol = in.number_or("rtol", o.rtol, "rk8pd relative tolerance");

@@ -123,6 +123,22 @@ TEST(RunExact, ExactTableIsChecked) {
   EXPECT_EQ(r.history.size(), 9u);
 }
 
+// The beam solution's state is 2 N + 3 numbers indexed by int: a mode count above
+// (2^31 - 1 - 3) / 2 = 1073741822 is refused naming its key, also with time.allow_long_run (which
+// lifts the cost limit only). 2^31 was cast to a negative int: modes_max ran a 16-mode study.
+TEST(RunExact, ModeCountsAnIntCannotHoldAreRefusedEvenForALongRun) {
+  for (const std::string key : {"exact.modes", "exact.modes_max"}) {
+    try {
+      exact::solve(
+          load_scene(paper_scene("s2_transverse"), {"time.allow_long_run=true", key + "=2147483648"}));
+      ADD_FAILURE() << key << " = 2^31 ran";
+    } catch (const SceneError& e) {
+      EXPECT_EQ(e.key(), key) << e.what();
+      EXPECT_NE(std::string(e.what()).find("1073741822"), std::string::npos) << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace beamimpact
 

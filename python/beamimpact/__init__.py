@@ -238,16 +238,20 @@ def sweep(scene: SceneLike, dts: Sequence[float], method: str = "paper",
 
 
 def verify(matrix: Union[str, os.PathLike] = "verification/matrix.toml", out: Union[str, os.PathLike] = "out/verify", *,
-           tier: str = "quick", only: str = "", jobs: int = 1, exe: Optional[Union[str, os.PathLike]] = None) -> dict:
+           tier: str = "quick", only: str = "", jobs: int = 1, exe: Optional[Union[str, os.PathLike]] = None,
+           fresh: bool = False) -> dict:
     """`beamimpact verify` as a call: runs the matrix's `tier` (items whose name contains `only`)
     with `jobs` runs in parallel, each a process of the `beamimpact` executable `exe` (default
     $BEAMIMPACT_EXE, else `beamimpact` on PATH), writes runs/, junit.xml, norms.json and report.md
     under `out`, and returns norms.json's dict: result["verdict"] is "PASS" or "FAIL" by the
-    library's one pass rule (complete, no gate failed); each gate has "passed" and "margin"."""
+    library's one pass rule (complete, no gate failed); each gate has "passed" and "margin".
+    A run recorded as finished under `out`/runs with the same input (an interrupted verify's) is
+    taken as it is, as the command does (docs/resuming.md); `fresh=True` runs everything again
+    (`--fresh`)."""
     exe = exe or os.environ.get("BEAMIMPACT_EXE") or shutil.which("beamimpact")
     if not exe:
         raise FileNotFoundError("verify: no beamimpact executable (pass exe= or set BEAMIMPACT_EXE)")
-    return _core.verify(str(matrix), str(out), tier, only, jobs, str(exe))
+    return _core.verify(str(matrix), str(out), tier, only, jobs, str(exe), fresh)
 
 
 def methods() -> list[str]:

@@ -147,13 +147,14 @@ py::object compare(const std::map<std::string, std::vector<double>>& a, const py
 /// norms.json's dict.
 py::object verify(const std::filesystem::path& matrix, const std::filesystem::path& out,
                   const std::string& tier, const std::string& only, int jobs,
-                  const std::filesystem::path& exe) {
+                  const std::filesystem::path& exe, bool fresh) {
   verification::VerifyOptions o;
   o.matrix = matrix;
   o.out = out;
   o.tier = tier;
   o.only = only;
   o.jobs = jobs;
+  o.fresh = fresh;
   std::optional<verification::VerifyResult> r;
   {
     py::gil_scoped_release release;
@@ -237,7 +238,7 @@ PYBIND11_MODULE(_core, m) {
         "The compare command's norms of run a against reference b, as the dict compare --json writes");
   m.def("sweep_norms", &verification::sweep_norms, "The norms the sweep command tabulates");
   m.def("verify", &verify, py::arg("matrix"), py::arg("out"), py::arg("tier"), py::arg("only"),
-        py::arg("jobs"), py::arg("exe"),
+        py::arg("jobs"), py::arg("exe"), py::arg("fresh") = false,
         "The verify command as a library call (runs started with exe); writes its reports to out and "
         "returns norms.json's dict");
   m.def("contact_stats", &contact_stats, py::arg("t"), py::arg("R"), py::arg("tau"), py::arg("dt"),

@@ -28,3 +28,20 @@ def test_verify_call_equals_the_command(tmp_path):
     # The verdict is the gates' (a complete run): PASS exactly when every gate passed, as the exit status.
     every_gate = all(g["passed"] for item in py["items"] for g in item["gates"])
     assert (py["verdict"] == "PASS") == every_gate == (p.returncode == 0)
+
+
+def test_verify_resumes_unless_fresh(tmp_path, capfd):
+    """Again into the same `out`, verify takes every run recorded as finished with the same input
+    (as the command does); fresh=True (the command's --fresh) runs them all again and says so in
+    the command line it records."""
+    only = "s1_central paper dt=0.01 vs"
+    first = beamimpact.verify(MATRIX, tmp_path, only=only)
+    assert "resumed:" not in capfd.readouterr().err
+    runs = sorted((tmp_path / "runs").glob("*/finished.json"))
+    assert len(runs) >= 2  # the case's run and its reference
+    again = beamimpact.verify(MATRIX, tmp_path, only=only)
+    assert f"resumed: {len(runs)} of {len(runs)} runs finished earlier" in capfd.readouterr().err
+    fresh = beamimpact.verify(MATRIX, tmp_path, only=only, fresh=True)
+    assert "resumed:" not in capfd.readouterr().err
+    assert "--fresh" in fresh["command"] and "--fresh" not in again["command"]
+    assert dict(leaves(fresh["items"])) == dict(leaves(again["items"])) == dict(leaves(first["items"]))

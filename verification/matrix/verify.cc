@@ -96,9 +96,10 @@ std::optional<VerifyResult> verify(const VerifyOptions& o, const std::filesystem
   for (const auto* c : s.checks) r.items.push_back(evaluate_check(*c, *ran));
   ReportContext& ctx = r.context;
   ctx.command = !o.command.empty() ? o.command
-                                   : fmt::format("beamimpact verify {} --tier {} --out {} --jobs {}{}",
+                                   : fmt::format("beamimpact verify {} --tier {} --out {} --jobs {}{}{}",
                                                  o.matrix.string(), o.tier, o.out.string(), o.jobs,
-                                                 o.only.empty() ? "" : " --only '" + o.only + "'");
+                                                 o.only.empty() ? "" : " --only '" + o.only + "'",
+                                                 o.fresh ? " --fresh" : "");
   ctx.matrix = o.matrix.string();
   ctx.tier = o.tier;
   ctx.version = kVersion;

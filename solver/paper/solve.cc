@@ -158,33 +158,51 @@ void write_fields(const ExplicitContactIntegrator& in, double t, FieldWriter& fi
   fields.write(t, in.U(), in.V(), fc, ends);
 }
 
-/// Above this turn (rad) of the target under a closed sliding contact the reference normal's
-/// force does work R x turn x slide that the run cannot hold (summary.json "warnings").
-constexpr double kWarnTurn = 0.1;
+/// Above this part of the run's energy the work of a contact's force on its slide along the
+/// turned target warns (summary.json "warnings"): 0.1 % (docs/energy.md).
+constexpr double kWarnSlideWork = 1e-3;
 
-/// Per scene contact: the largest turn (rad) of the target's deformed centreline under the
-/// struck point while a sliding pair of it carries a force.
+/// Per scene contact, over the steps in which a sliding pair carries a force: the largest turn of
+/// the target under the struck point, and the work of the force along the target's reference
+/// normal on the slide.
+struct TurnedSlide {
+  double turn_max = 0.0;  ///< rad
+  double work = 0.0;      ///< J, so far (signed: > 0 put into the bodies)
+  double work_max = 0.0;  ///< J, the largest |work| so far
+};
+
+/// Adds the step's turn and work to `slide`. The striker is held on the turned chord, so it slides
+/// relative to the target along the chord's tangent t' = cos(turn) t + sin(turn) n: at v_t along
+/// the reference tangent t, the force R n does R n.t' v_t / cos(turn) = R tan(turn) v_t per
+/// second. Nothing slides (v_t = 0): no work, whatever the turn.
 void track_turn(const ExplicitContactIntegrator& in, const std::vector<int>& group,
-                std::vector<DeformedSurface>& surfaces, double& turn_max) {
+                std::vector<DeformedSurface>& surfaces, TurnedSlide& slide) {
   for (int q : group) {
-    if (!in.pairs()[q].can_slide() || in.forces()[q].R <= 0.0) continue;
+    const ContactPair& pair = in.pairs()[q];
+    const double R = in.forces()[q].R;
+    if (!pair.can_slide() || R <= 0.0) continue;
     const RealGap g = surfaces[q].gap(in.U());
     if (g.beyond_end) continue;
-    turn_max = std::max(turn_max, std::abs(surfaces[q].turn(in.U(), g.element, g.xi)));
+    const double turn = surfaces[q].turn(in.U(), g.element, g.xi);
+    slide.turn_max = std::max(slide.turn_max, std::abs(turn));
+    slide.work += R * std::tan(turn) * ContactPair::eval(pair.tangent_row(), in.V()) * in.dt();
+    slide.work_max = std::max(slide.work_max, std::abs(slide.work));
   }
 }
 
-/// The warning of a contact whose target turned beyond kWarnTurn (empty otherwise).
-std::string turn_warning(const Scene& scene, std::size_t c, double turn_max) {
-  if (turn_max <= kWarnTurn) return {};
+/// The warning of a contact whose force worked on its slide along the turned target beyond
+/// kWarnSlideWork of the energy `energy` (J; empty otherwise).
+std::string turn_warning(const Scene& scene, std::size_t c, const TurnedSlide& slide, double energy) {
+  if (!(slide.work_max > kWarnSlideWork * energy)) return {};
   const Contact& k = scene.contacts[c];
   return fmt::format(
-      "contact {} -> {}: the target turned by up to {:.3g} rad under the sliding contact; the "
-      "contact force keeps the target's reference normal (linear contact kinematics), so on a "
-      "turned target it works on the slide and energy is created or lost (see dissipated and "
-      "energy_final); keep the target's turn under the contact below {} rad (a stiffer target, "
-      "a lighter or slower striker) for the energy to hold",
-      scene.bodies[k.striker].name, scene.bodies[k.target].name, turn_max, kWarnTurn);
+      "contact {} -> {}: the contact slid along its target turned by up to {:.3g} rad; the contact "
+      "force keeps the target's reference normal (linear contact kinematics), so it works on the "
+      "slide: up to {:.3g} J ({:.3g} % of the energy) created or lost (see dissipated and "
+      "energy_final); keep that below {:g} % (a stiffer target, a lighter or slower striker, less "
+      "slide) for the energy to hold",
+      scene.bodies[k.striker].name, scene.bodies[k.target].name, slide.turn_max, slide.work_max,
+      100.0 * slide.work_max / energy, 100.0 * kWarnSlideWork);
 }
 
 /// Records the complete step p: contact samples, real gaps and the gap under force every step, a
@@ -192,13 +210,13 @@ std::string turn_warning(const Scene& scene, std::size_t c, double turn_max) {
 /// when the energy is no longer finite or has grown 1e6-fold.
 void record_step(const ExplicitContactIntegrator& integ, long p, long N, const Scene& scene,
                  double critical_dt, std::vector<DeformedSurface>& surfaces, ResultRecorder& rec,
-                 FieldWriter* fields, std::vector<double>& turn_max, GapInContact& in_contact) {
+                 FieldWriter* fields, std::vector<TurnedSlide>& slides, GapInContact& in_contact) {
   const auto& groups = integ.pair_groups();
   for (std::size_t c = 0; c < groups.size(); ++c) {
     const ContactForce f = view(integ, groups[c]).f;
     rec.sample(c, integ.time(), f.R, f.tau, integ.dt(), f.state);
     for (int q : groups[c]) rec.track_real_gap(c, integ.time(), surfaces[q].gap(integ.U()).gap);
-    track_turn(integ, groups[c], surfaces, turn_max[c]);
+    track_turn(integ, groups[c], surfaces, slides[c]);
     in_contact.track(c, groups[c], integ.forces(), integ.U(), integ.time());
   }
   if (p % scene.time.output_every != 0 && p != N) return;
@@ -262,10 +280,10 @@ SimulationResult solve(const Scene& scene_in, const std::filesystem::path& field
   if (!fields_dir.empty()) fields.emplace(model, fields_dir, scene.output.field_format);
   Progress progress("paper", scene.time.end);
   progress.set_dofs_per_update(model.size());
-  std::vector<double> turn_max(scene.contacts.size(), 0.0);
+  std::vector<TurnedSlide> slides(scene.contacts.size());
   GapInContact in_contact(model, scene, integ.pairs(), options.surface);
   for (long p = 0;; ++p) {
-    record_step(integ, p, N, scene, cs.dt, surfaces, rec, fields ? &*fields : nullptr, turn_max, in_contact);
+    record_step(integ, p, N, scene, cs.dt, surfaces, rec, fields ? &*fields : nullptr, slides, in_contact);
     if (p == N) break;
     integ.step();
     progress.update(integ.time());
@@ -283,8 +301,10 @@ SimulationResult solve(const Scene& scene_in, const std::filesystem::path& field
   for (const auto& group : integ.pair_groups()) kinds.push_back(integ.pairs()[group.front()].kind());
   SimulationResult result = rec.finish(kinds);
   for (std::size_t c = 0; c < scene.contacts.size(); ++c) {
-    result.contacts[c].extra["target_turn_max"] = turn_max[c];
-    if (const std::string w = turn_warning(scene, c, turn_max[c]); !w.empty())
+    result.contacts[c].extra["target_turn_max"] = slides[c].turn_max;
+    result.contacts[c].extra["turned_slide_work"] = slides[c].work_max;
+    const double energy = std::max(result.energy_initial, result.energy_final);
+    if (const std::string w = turn_warning(scene, c, slides[c], energy); !w.empty())
       result.extra["warnings"].push_back(w);
   }
   in_contact.report(scene, result);

@@ -59,7 +59,7 @@ TEST(Api, RefusesWhatTheMethodDoesNotTakeNamingFileKeyAndExpected) {
   };
   for (const Case& c : cases) {
     try {
-      run(testing::paper_scene("s1_central"), c.method, RunOptions{c.set});
+      run(testing::paper_scene("s1_central"), c.method, RunOptions{c.set, std::nullopt});
       ADD_FAILURE() << c.method << " ran " << c.key;
     } catch (const SceneError& e) {
       const std::string what = e.what();

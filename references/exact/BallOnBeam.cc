@@ -1,4 +1,5 @@
 #include <references/exact/BallOnBeam.hpp>
+#include <references/exact/gsl_ode_impl.hpp>
 #include <references/exact/output_times.hpp>
 
 #include <algorithm>
@@ -56,15 +57,9 @@ int ball_rhs(double, const double y[], double f[], void* params) {
   return GSL_SUCCESS;
 }
 
-struct DriverDeleter {
-  void operator()(gsl_odeiv2_driver* d) const { gsl_odeiv2_driver_free(d); }
-};
-using Driver = std::unique_ptr<gsl_odeiv2_driver, DriverDeleter>;
+using detail::Driver;
 
-void check(int status, const char* what) {
-  if (status != GSL_SUCCESS)
-    throw std::runtime_error(std::string("ball-on-beam: ") + what + ": " + gsl_strerror(status));
-}
+void check(int status, const char* what) { detail::check_gsl(status, "ball-on-beam", what); }
 
 /// @brief Brent's root of f in (a, b), f(a) and f(b) of opposite signs (or f(b) == 0).
 /// @return the end of the final bracket on b's side (f there has f(b)'s sign)

@@ -1,4 +1,5 @@
 #include <references/exact/RodOnBeam.hpp>
+#include <references/exact/gsl_ode_impl.hpp>
 #include <references/exact/output_times.hpp>
 
 #include <algorithm>
@@ -67,15 +68,9 @@ int rhs(double t, const double y[], double dydt[], void* params) {
   return GSL_SUCCESS;
 }
 
-struct DriverDeleter {
-  void operator()(gsl_odeiv2_driver* d) const { gsl_odeiv2_driver_free(d); }
-};
-using Driver = std::unique_ptr<gsl_odeiv2_driver, DriverDeleter>;
+using detail::Driver;
 
-void check(int status, const char* what) {
-  if (status != GSL_SUCCESS)
-    throw std::runtime_error(std::string("rod-on-beam: ") + what + ": " + gsl_strerror(status));
-}
+void check(int status, const char* what) { detail::check_gsl(status, "rod-on-beam", what); }
 
 /// @brief Modal data of the beam at the struck point and the rod's constants, for rhs().
 /// @param s problem data

@@ -26,7 +26,7 @@ void check_ball_cost(const Scene& scene, const BallOnBeamSetup& s, const BeamMod
   double state_steps = 0.0;
   long top = o.modes;
   const auto add = [&](long n) {
-    state_steps += span / ball_stop_spacing(s, static_cast<int>(n)) * (2.0 * n + 3.0);
+    state_steps += span / ball_stop_spacing(s, static_cast<int>(n)) * (2.0 * static_cast<double>(n) + 3.0);
   };
   if (o.modes > 0) add(std::min<long>(o.modes, 1L << 30));
   for (long n = std::max(1L, o.modes_min); o.modes == 0; n *= 2) {

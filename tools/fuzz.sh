@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# @brief Fuzzing (issue 16): builds the libFuzzer targets of fuzz/ with clang + ASan + UBSan (the
+# @brief Fuzzing: builds the libFuzzer targets of fuzz/ with clang + ASan + UBSan (the
 # build of tools/sanitize.sh, build-asan/) and runs each from its seed corpus (the shipped scenes, matrix and fuzz/corpus/).
 # Usage: tools/fuzz.sh            each target for 12 s, one after the other (CI: a minute in all)
 #        tools/fuzz.sh --long     a campaign: the targets side by side (nice 19), each until

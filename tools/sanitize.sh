@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# @brief The sanitizer check (issue 16): builds with clang, AddressSanitizer and
+# @brief The sanitizer check: builds with clang, AddressSanitizer and
 # UndefinedBehaviorSanitizer (incl. float-cast-overflow) into build-asan/, then runs the unit and
 # CLI tests and the quick verification tier there. Any sanitizer report fails the test.
 # Built without MPI (OpenMPI's own allocations and progress threads are not ours to sanitize): the

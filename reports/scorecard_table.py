@@ -32,10 +32,11 @@ converged beyond its defaults (rtol 1e-10, atol 1e-13, friction regularised at 1
 never scored against its own run, and IDA's row shows how far its defaults are from converged.
 Such a reference carries its own uncertainty, `± spread`: its difference from the same run at
 the case's penalty (1e3 EA/le). A verdict that the spread could reverse (|error - tol| below the
-spread) is `reference uncertain`: the reference cannot decide at that tolerance. Made with:
+spread) is `reference uncertain`: the reference cannot decide at that tolerance; `skipped`: the
+reference did not finish within `--timeout` (its reason in scorecard.json). Made with:
 
 ```sh
-build/beamimpact score paper ida fenicsx siconos example --out /tmp/scores --jobs 2 --timeout 5400
+build/beamimpact score paper ida fenicsx siconos example --out /tmp/scores --jobs 2 --timeout 3600
 for m in paper ida fenicsx siconos example; do
   /usr/bin/python3 reports/scorecard_figures.py /tmp/scores/$m     # scorecard.html with the diagrams
 done

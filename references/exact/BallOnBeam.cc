@@ -188,12 +188,7 @@ class BallIntegration {
   }
 
   const std::vector<double>& integrate_copy(double ta, const std::vector<double>& ya, double tb) {
-    tmp_ = ya;
-    gsl_odeiv2_driver_reset(aux_.get());
-    double t = ta;
-    if (tb > ta) check(gsl_odeiv2_driver_apply(aux_.get(), &t, tb, tmp_.data()), "integration");
-    sol_.steps += static_cast<long>(aux_->e->count);
-    return tmp_;
+    return detail::integrate_copy(aux_.get(), ta, ya, tb, tmp_, sol_.steps, "ball-on-beam");
   }
 
   void open_interval() {

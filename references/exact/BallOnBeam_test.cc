@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <references/exact/recognise_scene.hpp>
+#include <references/exact/solve_ball_on_beam.hpp>
 #include <solver/scene/scene_io.hpp>
 #include <solver/testing/test_scenes.hpp>
 
@@ -20,13 +21,7 @@ namespace {
 BallOnBeamSetup scene_setup(int modes) {
   const ExactProblem p = recognise_scene(
       load_scene((testing::source_dir() / "verification/scenes/extra/ball_on_beam.toml").string()));
-  BallOnBeamSetup s;
-  s.mass = p.mass;
-  s.stiffness = p.hertz_stiffness;
-  s.beam = p.beam;
-  s.x_c = p.x_c;
-  s.v0 = p.v0;
-  s.gap = p.gap;
+  BallOnBeamSetup s = ball_on_beam_setup(p);
   s.modes = modes;
   s.t_end = 1.2e-3;
   s.dt_out = 1e-5;

@@ -15,6 +15,27 @@ namespace beamimpact::exact {
 /// @brief The vector s d (d a unit direction, s a signed length or speed along it).
 inline Vec2 along(Vec2 d, double s) { return {d[0] * s, d[1] * s}; }
 
+/// @brief One row's contact sample of a 1D solution along the impact direction d: closed
+/// while the force is positive.
+/// @param d unit vector, striker towards target
+/// @param R N, contact force
+/// @param gap m
+/// @param ua striker contact point's displacement along d (m)
+/// @param va its velocity along d (m/s)
+/// @param ub struck point's displacement along d (m)
+/// @param vb its velocity along d (m/s)
+inline ContactSample along_sample(Vec2 d, double R, double gap, double ua, double va, double ub, double vb) {
+  ContactSample c;
+  c.R = R;
+  c.gap = gap;
+  c.ua = along(d, ua);
+  c.va = along(d, va);
+  c.ub = along(d, ub);
+  c.vb = along(d, vb);
+  c.state = R > 0.0 ? ContactState::kClosed : ContactState::kOpen;
+  return c;
+}
+
 /// @brief Records the rows (energies, momentum drift, output-grid contact statistics) and then
 /// reports the exact solution's event times, impulse and peak force; the output-grid values are
 /// kept in the contact's extra (comparable with a stepping method's sampling).

@@ -42,15 +42,7 @@ SimulationResult solve_rods(const Scene& scene, const ExactProblem& p, ResultRec
     const RodField fa = sol.striker_field(t), fb = sol.target_field(t);
     HistoryRow row;
     row.t = t;
-    ContactSample c;
-    c.R = e.P;
-    c.gap = e.gap;
-    c.ua = along(d, e.ua + vt * t);
-    c.va = along(d, e.va + vt);
-    c.ub = along(d, e.ub + vt * t);
-    c.vb = along(d, e.vb + vt);
-    c.state = e.P > 0.0 ? ContactState::kClosed : ContactState::kOpen;
-    row.contacts.push_back(c);
+    row.contacts.push_back(along_sample(d, e.P, e.gap, e.ua + vt * t, e.va + vt, e.ub + vt * t, e.vb + vt));
     // Back to the ground frame: KE = KE' + vt p' + m vt^2 / 2 for each rod.
     row.kinetic =
         fa.kinetic + fb.kinetic + vt * (fa.momentum + fb.momentum) + 0.5 * (A.mass() + B.mass()) * vt * vt;
@@ -102,7 +94,7 @@ SimulationResult solve_wall(const Scene& scene, const ExactProblem& p, ResultRec
     const RodField f = sol.field(t);
     HistoryRow row;
     row.t = t;
-    ContactSample c;
+    ContactSample c;  // the wall does not move: no struck-point motion
     c.R = e.R;
     c.gap = e.gap;
     c.ua = along(d, e.u);
@@ -260,15 +252,7 @@ SimulationResult solve_beam(const Scene& scene, const ExactProblem& p, const Bea
   for (const RodOnBeamRow& q : sol.rows) {
     HistoryRow row;
     row.t = q.t;
-    ContactSample c;
-    c.R = q.P;
-    c.gap = q.gap;
-    c.ua = along(d, q.u);
-    c.va = along(d, q.du);
-    c.ub = along(d, q.w);
-    c.vb = along(d, q.dw);
-    c.state = q.P > 0.0 ? ContactState::kClosed : ContactState::kOpen;
-    row.contacts.push_back(c);
+    row.contacts.push_back(along_sample(d, q.P, q.gap, q.u, q.du, q.w, q.dw));
     row.kinetic = q.beam_kinetic + q.rod.kinetic;
     row.strain = q.beam_strain + q.rod.strain;
     row.momentum = along(d, mA * p.v0 - q.impulse + q.beam_momentum);

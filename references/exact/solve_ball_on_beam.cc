@@ -51,15 +51,7 @@ std::vector<HistoryRow> history_rows(const BallOnBeamSolution& sol, const ExactP
   for (const BallOnBeamRow& q : sol.rows) {
     HistoryRow row;
     row.t = q.t;
-    ContactSample c;
-    c.R = q.R;
-    c.gap = q.gap;
-    c.ua = along(d, q.z);
-    c.va = along(d, q.dz);
-    c.ub = along(d, q.w);
-    c.vb = along(d, q.dw);
-    c.state = q.R > 0.0 ? ContactState::kClosed : ContactState::kOpen;
-    row.contacts.push_back(c);
+    row.contacts.push_back(along_sample(d, q.R, q.gap, q.z, q.dz, q.w, q.dw));
     row.kinetic = 0.5 * p.mass * q.dz * q.dz + q.beam_kinetic;
     row.strain = q.beam_strain + q.spring;
     row.momentum = along(d, p.mass * q.dz + q.beam_momentum);
@@ -70,9 +62,7 @@ std::vector<HistoryRow> history_rows(const BallOnBeamSolution& sol, const ExactP
 
 }  // namespace
 
-SimulationResult solve_ball_on_beam_scene(const Scene& scene, const ExactProblem& p, const BeamModeOptions& o,
-                                          ResultRecorder& rec) {
-  SimulationResult& r = rec.result();
+BallOnBeamSetup ball_on_beam_setup(const ExactProblem& p) {
   BallOnBeamSetup s;
   s.mass = p.mass;
   s.stiffness = p.hertz_stiffness;
@@ -80,6 +70,13 @@ SimulationResult solve_ball_on_beam_scene(const Scene& scene, const ExactProblem
   s.x_c = p.x_c;
   s.v0 = p.v0;
   s.gap = p.gap;
+  return s;
+}
+
+SimulationResult solve_ball_on_beam_scene(const Scene& scene, const ExactProblem& p, const BeamModeOptions& o,
+                                          ResultRecorder& rec) {
+  SimulationResult& r = rec.result();
+  BallOnBeamSetup s = ball_on_beam_setup(p);
   s.t_end = scene.time.end;
   s.dt_out = r.dt;
   s.rtol = o.rtol;

@@ -4,11 +4,16 @@
 /// Euler-Bernoulli beam through a Hertz spring): BallOnBeam's converged modal solution as the
 /// run's history and summary.
 
+#include <references/exact/BallOnBeam.hpp>
 #include <references/exact/beam_mode_options.hpp>
 #include <references/exact/recognise_scene.hpp>
 #include <solver/record/ResultRecorder.hpp>
 
 namespace beamimpact::exact {
+
+/// @brief The physical data of the recognised problem p (kind kBallOnBeam): striker, spring,
+/// beam, struck point, approach speed and gap; the caller sets modes, span and tolerance.
+BallOnBeamSetup ball_on_beam_setup(const ExactProblem& p);
 
 /// @brief Solves the recognised problem p (kind kBallOnBeam) with the [exact] options o; the
 /// mode study (or the fixed count) and the cost estimate are written into the summary.

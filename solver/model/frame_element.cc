@@ -2,10 +2,7 @@
 
 namespace beamimpact {
 
-Mat6 frame_stiffness_local(double E, double A, double I, double L) {
-  const double ea = E * A / L;
-  const double ei = E * I;
-  const double k1 = 12.0 * ei / (L * L * L), k2 = 6.0 * ei / (L * L), k3 = 4.0 * ei / L, k4 = 2.0 * ei / L;
+Mat6 frame_stiffness_from_terms(double ea, double k1, double k2, double k3, double k4) {
   Mat6 k;
   // clang-format off
   k <<  ea,   0,   0, -ea,   0,   0,
@@ -16,6 +13,12 @@ Mat6 frame_stiffness_local(double E, double A, double I, double L) {
          0,  k2,  k4,   0, -k2,  k3;
   // clang-format on
   return k;
+}
+
+Mat6 frame_stiffness_local(double E, double A, double I, double L) {
+  const double ei = E * I;
+  return frame_stiffness_from_terms(E * A / L, 12.0 * ei / (L * L * L), 6.0 * ei / (L * L), 4.0 * ei / L,
+                                    2.0 * ei / L);
 }
 
 Vec6 frame_mass_lumped(double rho, double A, double I, double L, RotaryInertia rotary) {

@@ -15,6 +15,12 @@ using Mat6 = Eigen::Matrix<double, 6, 6>;
 /// @brief 6-vector (diagonal of a lumped mass, element DOF values).
 using Vec6 = Eigen::Matrix<double, 6, 1>;
 
+/// @brief The local stiffness of a two-node plane frame element from its five distinct terms
+/// (DOFs u1, v1, theta1, u2, v2, theta2): the bar's ea and the bending block's k1 (shear
+/// force per deflection), k2 (per rotation), k3 (moment at a node per its own rotation) and k4
+/// (per the other node's rotation). The Euler-Bernoulli and Timoshenko elements share it.
+Mat6 frame_stiffness_from_terms(double ea, double k1, double k2, double k3, double k4);
+
 /// @brief Local stiffness: EA/L bar plus the Hermite bending block with EI.
 Mat6 frame_stiffness_local(double E, double A, double I, double L);
 

@@ -29,17 +29,7 @@ double shear_parameter(double I, double A, double L, double kappa, double nu) {
 Mat6 timoshenko_stiffness_local(double E, double A, double I, double L, double phi) {
   const double ea = E * A / L;
   const double b = E * I / ((1.0 + phi) * L * L * L);
-  const double k1 = 12 * b, k2 = 6 * b * L, k3 = (4 + phi) * b * L * L, k4 = (2 - phi) * b * L * L;
-  Mat6 k;
-  // clang-format off
-  k <<  ea,   0,   0, -ea,   0,   0,
-         0,  k1,  k2,   0, -k1,  k2,
-         0,  k2,  k3,   0, -k2,  k4,
-       -ea,   0,   0,  ea,   0,   0,
-         0, -k1, -k2,   0,  k1, -k2,
-         0,  k2,  k4,   0, -k2,  k3;
-  // clang-format on
-  return k;
+  return frame_stiffness_from_terms(ea, 12 * b, 6 * b * L, (4 + phi) * b * L * L, (2 - phi) * b * L * L);
 }
 
 Mat6 timoshenko_mass_consistent_local(double rho, double A, double I, double L, double phi) {

@@ -22,8 +22,9 @@ namespace {
 // What the right-hand side needs: modal data, the contact mode and the delayed memory.
 struct Dynamics {
   int N = 0;
-  std::vector<double> phi, omega2;
-  double M = 0.0, Z = 0.0, v0 = 0.0, T = 0.0, g0 = 0.0;
+  std::vector<double> phi, omega2, mass, momentum;  // per mode: shape at x_c, omega^2, modal mass, momentum
+  double top_omega = 0.0;                           // rad/s, the highest mode's frequency
+  double Z = 0.0, v0 = 0.0, T = 0.0, g0 = 0.0;
   bool closed = false;
   long past = -1;  // memory piece holding R(t - T); -1: before the first touch
   const DelayMemory* mem = nullptr;
@@ -59,7 +60,7 @@ int rhs(double t, const double y[], double dydt[], void* params) {
   const double P = d.closed ? d.Z * (d.v0 - d.beam_velocity(y)) - 2.0 * rho : 0.0;
   for (int n = 0; n < N; ++n) {
     dydt[n] = y[N + n];
-    dydt[N + n] = -d.omega2[n] * y[n] + d.phi[n] * P / d.M;
+    dydt[N + n] = -d.omega2[n] * y[n] + d.phi[n] * P / d.mass[n];
   }
   const double du = d.v0 - (P + 2.0 * rho) / d.Z;
   dydt[2 * N] = du;
@@ -74,19 +75,22 @@ void check(int status, const char* what) { detail::check_gsl(status, "rod-on-bea
 
 /// @brief Modal data of the beam at the struck point and the rod's constants, for rhs().
 /// @param s problem data
+/// @param modes the beam's modes (BeamModes.hpp)
 /// @param mem the rod's reflection memory the dynamics reads the delayed wave from
-Dynamics make_dynamics(const RodOnBeamSetup& s, const DelayMemory& mem) {
+Dynamics make_dynamics(const RodOnBeamSetup& s, const std::vector<BeamMode>& modes, const DelayMemory& mem) {
   Dynamics d;
-  d.N = s.modes;
-  d.M = s.beam.modal_mass();
+  d.N = static_cast<int>(modes.size());
   d.Z = s.rod.impedance();
   d.v0 = s.v0;
   d.T = s.rod.round_trip();
   d.g0 = s.gap;
   d.mem = &mem;
-  for (int n = 1; n <= d.N; ++n) {
-    d.phi.push_back(s.beam.shape(n, s.x_c));
-    d.omega2.push_back(s.beam.omega(n) * s.beam.omega(n));
+  for (const BeamMode& m : modes) {
+    d.phi.push_back(m.shape);
+    d.omega2.push_back(m.omega * m.omega);
+    d.mass.push_back(m.mass);
+    d.momentum.push_back(m.momentum);
+    d.top_omega = std::max(d.top_omega, m.omega);
   }
   return d;
 }
@@ -104,14 +108,14 @@ class Integration {
       : s_(s),
         sol_(sol),
         mem_(mem),
-        d_(make_dynamics(s, mem)),
+        d_(make_dynamics(s, beam_modes(s.beam, s.shear, s.x_c, s.modes), mem)),
         N_(d_.N),
         dim_(static_cast<std::size_t>(2 * N_ + 3)) {
     sol_.modes = N_;
     t0_ = s_.v0 > 0.0 ? s_.gap / s_.v0 : std::numeric_limits<double>::infinity();
     T_ = d_.T;
     // Memory samples a quarter radian of the highest mode apart (see DelayMemory::value).
-    delta_ = std::min(0.25 / s_.beam.omega(N_), T_ / 32.0);
+    delta_ = std::min(0.25 / d_.top_omega, T_ / 32.0);
     sol_.sample_dt = delta_;
     out_t_ = output_times(s_.dt_out, s_.t_end);
   }
@@ -376,11 +380,10 @@ class Integration {
 
   /// @brief Adds the beam's modal kinetic and strain energy (J) and momentum (N s) to r.
   void add_beam_energies(const double* y, RodOnBeamRow& r) const {
-    const SimpleBeam& beam = s_.beam;
     for (int n = 0; n < N_; ++n) {
-      r.beam_kinetic += 0.5 * d_.M * y[N_ + n] * y[N_ + n];
-      r.beam_strain += 0.5 * d_.M * d_.omega2[n] * y[n] * y[n];
-      r.beam_momentum += beam.rho * beam.area * beam.shape_integral(n + 1) * y[N_ + n];
+      r.beam_kinetic += 0.5 * d_.mass[n] * y[N_ + n] * y[N_ + n];
+      r.beam_strain += 0.5 * d_.mass[n] * d_.omega2[n] * y[n] * y[n];
+      r.beam_momentum += d_.momentum[n] * y[N_ + n];
     }
   }
 

@@ -1,13 +1,14 @@
 #pragma once
 /// @file RodOnBeam.hpp
 /// @brief Semi-analytic solution of an elastic rod striking a simply supported Euler-Bernoulli
-/// beam end-on (references.md section 2): exact rod waves with reflection memory, a truncated
-/// modal sum for the beam, integrated by GSL's rk8pd between breakpoints, with contact onset,
-/// separation and re-contact located by Brent root finding on the event functions.
+/// or Timoshenko beam end-on (references.md section 2): exact rod waves with reflection memory, a
+/// truncated modal sum for the beam (BeamModes.hpp), integrated by GSL's rk8pd between breakpoints, with
+/// contact onset, separation and re-contact located by Brent root finding on the event functions.
 
 #include <array>
 #include <vector>
 
+#include <references/exact/BeamModes.hpp>
 #include <references/exact/CoaxialRods.hpp>
 #include <references/exact/DelayMemory.hpp>
 #include <references/exact/Rod.hpp>
@@ -17,12 +18,13 @@ namespace beamimpact::exact {
 
 /// @brief Problem data and numerical settings.
 struct RodOnBeamSetup {
-  Rod rod;                 ///< striker, moving along its axis towards the beam
-  SimpleBeam beam;         ///< target, pinned at both ends for transverse motion
-  double x_c = 0.0;        ///< m, struck point measured from the beam's first end, 0 < x_c < L
-  double v0 = 0.0;         ///< m/s, rod speed towards the beam
-  double gap = 0.0;        ///< m, initial gap between rod end and beam axis
-  int modes = 32;          ///< number of beam modes kept
+  Rod rod;           ///< striker, moving along its axis towards the beam
+  SimpleBeam beam;   ///< target, pinned at both ends for transverse motion
+  BeamShear shear;   ///< the target's shear data when it is a Timoshenko beam (default: Euler-Bernoulli)
+  double x_c = 0.0;  ///< m, struck point measured from the beam's first end, 0 < x_c < L
+  double v0 = 0.0;   ///< m/s, rod speed towards the beam
+  double gap = 0.0;  ///< m, initial gap between rod end and beam axis
+  int modes = 32;  ///< number of beam modes kept, the lowest by frequency (both Timoshenko branches counted)
   double t_end = 0.0;      ///< s
   double dt_out = 0.0;     ///< s, output rows at k dt_out, k = 0, 1, ... while <= t_end
   double rtol = 1e-10;     ///< rk8pd relative tolerance (absolute: rtol x natural scales)

@@ -38,7 +38,8 @@ RodOnBeamCost estimate_rod_on_beam_cost(const RodOnBeamSetup& s, const std::vect
   const double span = std::max(0.0, s.t_end - t0);  // integrated from the first touch
   c.rows = output_row_count(s.dt_out, s.t_end);
   for (int n : mode_counts) {
-    const double delta = std::min(0.25 / s.beam.omega(n), T / 32.0);  // as Integration's delta_
+    const double delta =
+        std::min(0.25 / top_frequency(s.beam, s.shear, n), T / 32.0);  // as Integration's delta_
     const double samples = span / delta;
     c.state_steps += samples * (2.0 * n + 3.0);
     if (n < c.modes) continue;

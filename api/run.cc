@@ -1,6 +1,9 @@
 #include <api/run.hpp>
 
+#include <sstream>
+
 #include <fmt/format.h>
+#include <toml++/toml.h>
 
 #include <api/accepts.hpp>
 #include <api/external_method.hpp>
@@ -62,14 +65,36 @@ SimulationResult run_method(const Scene& scene, const Method& m,
   return r;
 }
 
+/// Refuses a thread count below 1, naming --threads.
+void check_threads(const std::optional<int>& threads, const std::string& file) {
+  if (threads && *threads < 1)
+    throw SceneError(file, "--threads",
+                     fmt::format("expected a whole number of threads >= 1, got {}", *threads));
+}
+
+/// The scene with [paper] threads set (its other [paper] keys kept).
+Scene with_threads(const Scene& scene, int threads) {
+  Scene s = scene;
+  const auto it = s.method_tables.find("paper");
+  toml::table t = it == s.method_tables.end() ? toml::table{} : toml::parse(it->second);
+  t.insert_or_assign("threads", threads);
+  std::ostringstream text;
+  text << t;
+  s.method_tables["paper"] = text.str();
+  return s;
+}
+
 }  // namespace
 
 SimulationResult run(const Scene& scene, std::string_view method_name, const RunOptions& options) {
   if (!options.set.empty() || options.dt || !options.mesh.empty())
     throw SceneError(scene.file, "set",
                      "expected no overrides, dt or mesh for a loaded scene; pass them to load_scene()");
+  check_threads(options.threads, scene.file);
   const OutputLock lock(options.out.value_or(std::filesystem::path()));
-  return run_method(scene, method(method_name, scene.file, "--method"), options.out, "");
+  const Method& m = method(method_name, scene.file, "--method");
+  if (options.threads) return run_method(with_threads(scene, *options.threads), m, options.out, "");
+  return run_method(scene, m, options.out, "");
 }
 
 SimulationResult run(const std::filesystem::path& scene_file, std::string_view method_name,
@@ -78,6 +103,8 @@ SimulationResult run(const std::filesystem::path& scene_file, std::string_view m
   if (options.out) remove_run_outputs(*options.out);                     // before anything can refuse
   const Method& m = method(method_name, scene_file.string(), "--method");
   std::vector<std::string> set = options.set;
+  check_threads(options.threads, scene_file.string());
+  if (options.threads) set.push_back(fmt::format("paper.threads={}", *options.threads));
   if (options.dt) {
     if (!(*options.dt > 0.0))
       throw SceneError(scene_file.string(), "--dt",

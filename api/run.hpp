@@ -32,6 +32,10 @@ struct RunOptions {
   /// @brief The mesh asked for: an element multiplier ("2") for a method with
   /// accepts.mesh_factor, else the method's own preset name ("coarse"); "" for the scene's.
   std::string mesh = {};
+  /// @brief Threads of the paper integrator's step (as [paper] threads; >= 1): unset, the
+  /// machine's hardware threads, 1 for a model below kThreadsMinDofs equations. The results
+  /// are the same bits at any count; summary.json says how many were used ("threads").
+  std::optional<int> threads = std::nullopt;
 };
 
 /// @brief Runs a scene file with a method of the registry (in-process, or an external program
@@ -49,7 +53,7 @@ SimulationResult run(const std::filesystem::path& scene_file, std::string_view m
                      const RunOptions& options = {});
 
 /// @brief Runs a scene already loaded (options.set, dt and mesh must be empty: overrides are
-/// applied by load_scene()).
+/// applied by load_scene(); options.threads is taken).
 SimulationResult run(const Scene& scene, std::string_view method, const RunOptions& options = {});
 
 }  // namespace beamimpact

@@ -11,12 +11,20 @@
 /// process still pay for cold caches and page faults). The first set-up is reported too. The
 /// set-up in steps counts the model, the critical step and the integrator; reading the scene
 /// file (TOML parse, the same at every size) is reported beside it.
+/// A second table times the step on 1 thread and on 2 (and on the machine's hardware threads
+/// when more) from 1e3 DOFs up, interleaved, with the machine's load average at each row, and
+/// checks in the same run that every thread count gives the bits of one thread (U and Vbar after
+/// the same number of steps); a difference is an error (exit 1).
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "step_kernel.hpp"
 
@@ -50,6 +58,62 @@ double per_call(F&& f, int rounds = 3, double min_seconds = 0.2) {
     best = std::min(best, t / static_cast<double>(calls));
   }
   return best;
+}
+
+/// The 1-minute load average (/proc/loadavg), -1 when unknown.
+double load_average() {
+  std::FILE* f = std::fopen("/proc/loadavg", "r");
+  double l = -1.0;
+  if (f) {
+    if (std::fscanf(f, "%lf", &l) != 1) l = -1.0;
+    std::fclose(f);
+  }
+  return l;
+}
+
+/// True when a and b hold the same bits.
+bool same_bits(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0;
+}
+
+/// The threads table at about `target` DOFs (S2 refined, dt = 0.5 x critical): the step on each
+/// thread count, best of 3 interleaved rounds, and the bits of each against one thread after the
+/// same number of steps. False when some count gives other bits.
+bool thread_rows(double target) {
+  const int n = std::max(2, static_cast<int>(target / 6));
+  const Scene s =
+      load_scene(std::string(BEAMIMPACT_SOURCE_DIR) + "/verification/scenes/paper/s2_transverse.toml",
+                 {"bodies.A.elements=" + std::to_string(n), "bodies.B.elements=" + std::to_string(n),
+                  "time.dt=\"auto\""});
+  const Effects fx = derive_effects(s);
+  const Model m(s, fx.bending);
+  const double dt = 0.5 * critical_step(m).dt;
+  std::vector<int> counts = {1, 2};
+  if (const int hw = static_cast<int>(std::thread::hardware_concurrency()); hw > 2) counts.push_back(hw);
+  std::vector<std::unique_ptr<paper::ExplicitContactIntegrator>> in;
+  std::vector<int> used;
+  for (int c : counts) {
+    in.push_back(std::make_unique<paper::ExplicitContactIntegrator>(m, s, fx, dt));
+    used.push_back(in.back()->set_threads(c));
+  }
+  std::vector<double> best(counts.size(), 1e300);
+  const double load = load_average();
+  for (int round = 0; round < 3; ++round)
+    for (std::size_t k = 0; k < counts.size(); ++k)
+      best[k] = std::min(best[k], per_call([&] { in[k]->step(); }, 1));
+  long steps = 0;
+  for (const auto& p : in) steps = std::max(steps, p->step_index());
+  for (const auto& p : in)
+    while (p->step_index() < steps) p->step();
+  bool all_same = true;
+  for (std::size_t k = 0; k < counts.size(); ++k) {
+    const bool same = same_bits(in[k]->U(), in[0]->U()) && same_bits(in[k]->Vbar(), in[0]->Vbar());
+    all_same = all_same && same;
+    std::printf("| %d | %d | %d | %.2f | %.2f | %ld | %s | %.2f |\n", m.size(), counts[k], used[k],
+                best[k] / m.size() * 1e9, best[0] / best[k], steps, same ? "yes" : "NO", load);
+  }
+  std::fflush(stdout);
+  return all_same;
 }
 
 }  // namespace
@@ -112,6 +176,19 @@ int main(int argc, char** argv) {
                 ns_ker, ns_int, ns_int / ns_ker, setup, setup / t_int, t_model / t_int, t_crit / t_int,
                 t_integ / t_int, t_first / t_int, t_scene / t_int);
     std::fflush(stdout);
+  }
+  std::printf(
+      "\nThe step on threads (the same scene; best of 3 interleaved rounds of at least 0.2 s; same "
+      "bits: U and Vbar against 1 thread after the same steps; load: 1-minute load average)\n\n");
+  std::printf(
+      "| DOFs | threads asked | threads used | ns/DOF-step | speed-up | steps | same bits | load |\n");
+  std::printf("|---:|---:|---:|---:|---:|---:|:---:|---:|\n");
+  bool same = true;
+  for (double target = 1e3; target <= max_dofs * 1.0001; target *= std::sqrt(10.0))  // 1e3, 3.2e3, 1e4, ...
+    same = thread_rows(target) && same;
+  if (!same) {
+    std::fprintf(stderr, "step_loop_benchmark: some thread count changed the bits of one thread\n");
+    return 1;
   }
   return 0;
 }

@@ -153,17 +153,25 @@ class _Progress:
 
 def run(scene: SceneLike, method: str = "paper", overrides: Optional[Overrides] = None, *,
         out: Optional[Union[str, os.PathLike]] = None, history: bool = True, fields: bool = False,
-        progress: Union[bool, ProgressFn] = True, set: Optional[Overrides] = None) -> Run:
+        progress: Union[bool, ProgressFn] = True, set: Optional[Overrides] = None,
+        threads: Optional[int] = None) -> Run:
     """Runs a scene (a Scene or a path) with a method of the registry (methods()).
 
     overrides: {"time.dt": 0.005} as --set time.dt=0.005 (`set` is its deprecated name); out: also write the run directory there (as
     `beamimpact run --out`); history=False keeps no rows (memory independent of the steps; the
     summary still has the energies); fields=True writes VTK fields into `out`; progress: True
     (a line on stderr, shown in notebooks), False, or a function (label, value, total).
+    threads: the paper integrator's threads (an int >= 1, as `beamimpact run --threads`); None:
+    the machine's, 1 for small models; the results are the same bits at any count, and
+    summary["threads"] says how many were used.
     The GIL is released while the run goes on.
     """
     s = _as_scene(scene)
     settings = dict(_overrides(overrides, set, "run") or {})
+    if threads is not None:
+        if isinstance(threads, bool) or not isinstance(threads, int) or not 1 <= threads <= 1024:
+            raise InputError(f"threads: expected a whole number of threads 1..1024, got {threads!r}")
+        settings["paper.threads"] = threads
     if not history:
         settings["output.history"] = False
     if fields:

@@ -210,3 +210,37 @@ def test_fields_from_python_read_back(tmp_path):
     assert all(len(f["points"]) == 22 for _, f in frames)
     with pytest.raises(beamimpact.SceneError, match="output.fields.*output directory"):
         beamimpact.run(PAPER / "s1_central.toml", fields=True, progress=False)
+
+
+def test_threads_change_no_bit_and_are_reported(tmp_path):
+    """threads=2 and 3 split the paper integrator's element sweep with the one-thread sums: the
+    same history bits (S2 refined to 20 + 40 elements, through its contact), the count used in
+    the summary, and the same run as the CLI's --threads."""
+    scene = beamimpact.load_scene(PAPER / "s2_transverse.toml",
+                                  {"bodies.A.elements": 20, "bodies.B.elements": 40, "time.dt": "auto"})
+    one = beamimpact.run(scene, progress=False, threads=1)
+    assert one.summary["threads"] == 1
+    for threads in (2, 3):
+        r = beamimpact.run(scene, progress=False, threads=threads)
+        assert r.summary["threads"] == threads
+        for name, column in one.columns.items():
+            assert np.array_equal(column, r.columns[name]), (threads, name)
+    out = tmp_path / "cli"
+    p = cli("run", PAPER / "s2_transverse.toml", "--out", out, "--quiet", "--threads", 2,
+            "--set", "bodies.A.elements=20", "--set", "bodies.B.elements=40", "--set", 'time.dt="auto"')
+    assert p.returncode == 0, p.stderr
+    assert json.loads((out / "summary.json").read_text())["threads"] == 2
+    assert beamimpact.read_run(out).columns["R"].tolist() == one.columns["R"].tolist()
+
+
+def test_threads_default_is_written(tmp_path):
+    """Without threads the default is used and written: 1 for a model of 66 equations."""
+    r = beamimpact.run(PAPER / "s1_central.toml", progress=False)
+    assert r.summary["threads"] == 1
+    assert r.summary["assumed"]["paper.threads"].startswith("1: the machine's")
+
+
+@pytest.mark.parametrize("bad", [0, -1, 1.5, "2", True])
+def test_bad_threads_raise_input_error_naming_it(bad):
+    with pytest.raises(beamimpact.InputError, match="threads: expected a whole number of threads 1..1024"):
+        beamimpact.run(PAPER / "s1_central.toml", progress=False, threads=bad)

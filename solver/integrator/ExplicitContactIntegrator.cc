@@ -1,6 +1,7 @@
 #include <solver/integrator/ExplicitContactIntegrator.hpp>
 
 #include <algorithm>
+#include <thread>
 
 #include <solver/model/load_vector.hpp>
 
@@ -62,6 +63,11 @@ void velocity_sweep(int lo, int hi, double dt, const double* __restrict un, cons
 }
 
 }  // namespace
+
+int default_threads(int dofs) {
+  if (dofs < kThreadsMinDofs) return 1;
+  return std::max(1u, std::thread::hardware_concurrency());
+}
 
 ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const Scene& scene,
                                                      const Effects& effects, double dt,
@@ -242,13 +248,12 @@ void ExplicitContactIntegrator::advance_fused() {
   if (load_.size()) {  // f_int - F^P on each range before the sweep reads it
     double* fnet = fint_next_.data();
     const double* F = load_.data();
-    fint_.apply_streamed(U_next_, fint_next_, [=](int lo, int hi) {
+    sweep_f_int([=](int lo, int hi) {
       for (int i = lo; i < hi; ++i) fnet[i] -= F[i];
       velocity_sweep(lo, hi, dt, un, fn, fu, inv, vb, ub);
     });
   } else {
-    fint_.apply_streamed(U_next_, fint_next_,
-                         [=](int lo, int hi) { velocity_sweep(lo, hi, dt, un, fn, fu, inv, vb, ub); });
+    sweep_f_int([=](int lo, int hi) { velocity_sweep(lo, hi, dt, un, fn, fu, inv, vb, ub); });
   }
   if (force)
     for (std::size_t k = 0; k < fc_dofs_.size(); ++k) {
@@ -261,6 +266,30 @@ void ExplicitContactIntegrator::advance_fused() {
   std::swap(U_, U_next_);
   std::swap(fint_U_, fint_next_);
   ++p_;
+}
+
+int ExplicitContactIntegrator::set_threads(int threads) {
+  team_.reset();
+  threads_note_.clear();
+  if (threads <= 1) return 1;
+  if (!fused_) {
+    threads_note_ =
+        "one thread: only the lumped, undamped, linear step is split over threads (this run has " +
+        std::string(damped_  ? "damping"
+                    : cmass_ ? "a consistent mass that rotates"
+                             : "a consistent mass") +
+        ")";
+    return 1;
+  }
+  const int used = fint_.set_parts(threads);
+  if (used < threads) {
+    threads_note_ = used == 1 ? "one thread: the element product is not split here (corotational bodies, a "
+                                "sparse product, or fewer than two elements per thread)"
+                              : "fewer threads: two elements per thread at least";
+    if (used == 1) return 1;
+  }
+  team_ = std::make_unique<ThreadTeam>(used);
+  return used;
 }
 
 double ExplicitContactIntegrator::damper_strain_share() {

@@ -15,14 +15,25 @@
 #include <vector>
 
 #include <memory>
+#include <string>
 
 #include <solver/contact/ContactSolver.hpp>
 #include <solver/integrator/CorotationalMass.hpp>
 #include <solver/integrator/InternalForce.hpp>
 #include <solver/model/Effects.hpp>
 #include <solver/model/MassSolver.hpp>
+#include <solver/util/ThreadTeam.hpp>
 
 namespace beamimpact::paper {
+
+/// @brief Equations below which a second thread does not pay for its barrier (the step at
+/// 2 threads is not faster than at 1; measured in docs/threads.md).
+inline constexpr int kThreadsMinDofs = 20000;
+
+/// @brief The thread count a run takes unless told: std::thread::hardware_concurrency() (1 when
+/// unknown), and 1 for a model of fewer than kThreadsMinDofs equations.
+/// @param dofs the model's equations
+int default_threads(int dofs);
 
 /// @brief One run of the paper's integrator on a model. The state of step p is always complete:
 /// U^p, Vbar^p and the contact forces R^p, tau^p that act on U^{p+1}; the physical V^p is formed
@@ -51,6 +62,16 @@ class ExplicitContactIntegrator {
     advance();
     solve_contacts();
   }
+
+  /// @brief Runs the step's element sweep on `threads` threads (made here, kept for the run),
+  /// with the same bits as one thread (InternalForce::set_parts). Only the fused step (lumped,
+  /// undamped, fixed mass) is split; any other runs on one thread, and so does a model with
+  /// fewer than two elements per thread.
+  /// @param threads the number asked for (>= 1)
+  /// @return the number used; threads_note() says why when it is fewer
+  int set_threads(int threads);
+  /// @brief Why fewer threads are used than were asked for ("" when as asked).
+  const std::string& threads_note() const { return threads_note_; }
 
   /// @brief How a closure step's stick test measures the tangential increment (ClosureSlip;
   /// the paper's whole step unless set).
@@ -109,6 +130,19 @@ class ExplicitContactIntegrator {
   /// mass: the same operations on each entry in the same order (bit-for-bit the same results),
   /// in one sweep over memory: f_int is streamed into the update (InternalForce::apply_streamed).
   void advance_fused();
+  /// f_int(U^{p+1}) into fint_next_, calling done(lo, hi) on each range as soon as it is final:
+  /// on the team's threads when the sweep is split (each part's ranges on its own thread, the
+  /// boundary equations after them on this one).
+  template <class Done>
+  void sweep_f_int(const Done& done) {
+    if (!team_) {
+      fint_.apply_streamed(U_next_, fint_next_, done);
+      return;
+    }
+    auto part = [&](int t) { fint_.apply_part(t, U_next_, fint_next_, done); };
+    team_->run(part);
+    fint_.finish_parts(fint_next_, done);
+  }
   /// Moves from p to p+1 with the forces of the last solve_contacts().
   void advance();
   void apply_Minv(const Eigen::VectorXd& in, Eigen::VectorXd& out) const { minv_.apply(in, out); }
@@ -152,6 +186,8 @@ class ExplicitContactIntegrator {
   bool hertz_ = false;         ///< some contact has the Hertz law
   double hertz_energy_ = 0.0;  ///< J, in the Hertz springs (ContactSolver::hertz_energy)
   double initial_energy_ = 0.0;
+  std::unique_ptr<ThreadTeam> team_;  ///< the sweep's threads when split (set_threads)
+  std::string threads_note_;
   mutable bool v_stale_ = false;  ///< V_ is still to be formed from Vbar_ and fc_
 };
 

@@ -3,10 +3,12 @@
 #include <solver/integrator/ExplicitContactIntegrator.hpp>
 
 #include <cmath>
+#include <cstring>
 
 #include <gtest/gtest.h>
 #include <Eigen/Dense>
 
+#include <solver/model/critical_dt.hpp>
 #include <solver/paper/solve.hpp>
 #include <solver/scene/scene_io.hpp>
 #include <solver/testing/test_scenes.hpp>
@@ -232,6 +234,88 @@ TEST(Transverse, InterpolatedModelGivesTheSmallerMaximalDisplacement) {
   const double d10 = max_defl(run("s3_surface_10")), d20 = max_defl(run("s3_surface_20"));
   EXPECT_LT(d10, d20);
   EXPECT_NEAR(d10, d20, 0.1 * d20);  // "close": within 10 %
+}
+
+// ---- Threads: the same bits as one thread -------------------------------------------------
+
+/// True when a and b hold the same bits.
+bool same_bits(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0;
+}
+
+/// Steps the scene on one thread and on `threads` side by side (dt half the critical step) and
+/// expects the same bits of U, Vbar, V, the contact forces and the dissipated energy after every
+/// step, with a contact force in some of them. Returns the steps with contact.
+int expect_threads_change_no_bit(const std::string& path, const std::vector<std::string>& sets, int threads,
+                                 int steps) {
+  const Scene s = load_scene(path, sets);
+  const Effects fx = derive_effects(s);
+  const Model m(s, fx.bending);
+  const double dt = 0.5 * critical_step(m).dt;
+  ExplicitContactIntegrator one(m, s, fx, dt), many(m, s, fx, dt);
+  EXPECT_EQ(many.set_threads(threads), threads) << many.threads_note();
+  int contact = 0;
+  for (int p = 1; p <= steps; ++p) {
+    one.step();
+    many.step();
+    contact += one.forces()[0].R > 0.0;
+    const bool same = same_bits(one.U(), many.U()) && same_bits(one.Vbar(), many.Vbar()) &&
+                      same_bits(one.V(), many.V()) && one.forces()[0].R == many.forces()[0].R &&
+                      one.dissipated() == many.dissipated();
+    if (!same) {
+      ADD_FAILURE() << path << " " << ::testing::PrintToString(sets) << ", " << threads
+                    << " threads: not the bits of one thread at step " << p;
+      break;
+    }
+  }
+  EXPECT_GT(contact, 0) << path << ": the steps compared must include contact";
+  return contact;
+}
+
+TEST(Threads, RodsGiveTheBitsOfOneThread) {
+  // S1 with the gap closed to 1 mm (contact from the first steps, the rods' W = 2 product).
+  // 40 + 41 elements: 2 parts split at the bodies' edge (element 40), 3 parts inside A and
+  // inside B; 41 + 40: 2 parts split next to A's end element.
+  for (const char* elements : {"40", "41"})
+    for (int threads : {2, 3})
+      expect_threads_change_no_bit(testing::paper_scene("s1_central"),
+                                   {std::string("bodies.A.elements=") + elements,
+                                    std::string("bodies.B.elements=") + (elements[1] == '0' ? "41" : "40"),
+                                    "bodies.B.start=[10.001, 0.0]", "bodies.B.end=[20.001, 0.0]"},
+                                   threads, 150);
+}
+
+TEST(Threads, FramesGiveTheBitsOfOneThread) {
+  // S2 (frames, W = 6; B pinned and on a roller: spans of one element at its ends). 20 + 40
+  // elements: 2 parts split inside B's chain, 3 parts at the bodies' edge and inside B; 30 + 30:
+  // 2 parts at the edge. The striker's node sits on B's midspan, inside a part.
+  for (const auto& [a, b] : {std::pair{"20", "40"}, std::pair{"30", "30"}})
+    for (int threads : {2, 3})
+      expect_threads_change_no_bit(
+          testing::paper_scene("s2_transverse"),
+          {std::string("bodies.A.elements=") + a, std::string("bodies.B.elements=") + b}, threads, 250);
+}
+
+TEST(Threads, LoadsGiveTheBitsOfOneThread) {
+  // The bouncing bar 5 cm above the ground (gravity: the load path of the sweep), 41 elements.
+  expect_threads_change_no_bit(
+      testing::benchmark_scene("bouncing_bar"),
+      {"bodies.bar.start=[0.0, 0.05]", "bodies.bar.end=[0.0, 10.05]", "bodies.bar.elements=41"}, 2, 120);
+}
+
+TEST(Threads, OtherStepsRunOnOneThreadAndSayWhy) {
+  for (const auto& [scene, sets] :
+       {std::pair{testing::paper_scene("s4_oblique_45"), std::vector<std::string>{}},  // corotational
+        std::pair{testing::paper_scene("s2_transverse"), std::vector<std::string>{"model.mass=consistent"}},
+        std::pair{(testing::source_dir() / "verification/scenes/extra/s2_damped.toml").string(),
+                  std::vector<std::string>{}}}) {
+    const Scene s = load_scene(scene, sets);
+    const Effects fx = derive_effects(s);
+    const Model m(s, fx.bending);
+    ExplicitContactIntegrator in(m, s, fx, 0.5 * critical_step(m).dt);
+    EXPECT_EQ(in.set_threads(2), 1) << scene;
+    EXPECT_FALSE(in.threads_note().empty()) << scene;
+  }
 }
 
 }  // namespace

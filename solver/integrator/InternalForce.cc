@@ -1,7 +1,9 @@
 #include <solver/integrator/InternalForce.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include <solver/model/timoshenko_element.hpp>
 
@@ -188,6 +190,107 @@ bool InternalForce::build_spans(const std::vector<std::array<int, 6>>& eqs, cons
     }
     spans_.push_back(s);
   }
+  return true;
+}
+
+const std::vector<std::array<int, 2>> InternalForce::kNone;
+
+int InternalForce::set_parts(int parts) {
+  parts_.clear();
+  boundary_.clear();
+  if (!use_blocks_ || parts < 2 || !build_parts(parts)) {
+    parts_.clear();
+    boundary_.clear();
+    return 1;
+  }
+  // Kept only when the parts, run one after the other, give apply_streamed()'s bits on a vector
+  // with no special structure and finish every equation exactly once.
+  const int n = model_.size();
+  const Eigen::VectorXd x = spread_vector(n);
+  Eigen::VectorXd whole(n), split(n);
+  apply_streamed(x, whole, [](int, int) {});
+  std::vector<int> finished(n, 0);
+  auto count = [&](int lo, int hi) {
+    for (int i = lo; i < hi; ++i) ++finished[i];
+  };
+  for (int t = 0; t < parts; ++t) apply_part(t, x, split, count);
+  finish_parts(split, count);
+  bool same = std::all_of(finished.begin(), finished.end(), [](int c) { return c == 1; });
+  for (int i = 0; same && i < n; ++i)
+    same = std::bit_cast<std::uint64_t>(whole[i]) == std::bit_cast<std::uint64_t>(split[i]);
+  if (!same) {
+    parts_.clear();
+    boundary_.clear();
+    return 1;
+  }
+  return parts;
+}
+
+bool InternalForce::build_parts(int parts) {
+  const int per = model_.dofs_per_node(), w = 2 * per, n = model_.size();
+  int ne = 0;
+  for (const Span& sp : spans_) ne += sp.count;
+  if (ne < 2 * parts) return false;
+  auto eq_of = [per](const Span& sp, int k, int i) { return sp.eq[i] >= 0 ? sp.eq[i] + k * per : -1; };
+  // The first and the last element touching each equation.
+  std::vector<int> first(n, -1), last(n, -1);
+  int g = 0;
+  for (const Span& sp : spans_)
+    for (int k = 0; k < sp.count; ++k, ++g)
+      for (int i = 0; i < w; ++i)
+        if (const int q = eq_of(sp, k, i); q >= 0) {
+          if (first[q] < 0) first[q] = g;
+          last[q] = g;
+        }
+  // Part t: elements [start[t], start[t + 1]).
+  std::vector<int> start(parts + 1);
+  for (int t = 0; t <= parts; ++t) start[t] = static_cast<int>(static_cast<long>(t) * ne / parts);
+  auto part_of = [&](int e) {
+    return static_cast<int>(std::upper_bound(start.begin(), start.end(), e) - start.begin()) - 1;
+  };
+  parts_.assign(parts, Part{});
+  g = 0;
+  for (const Span& sp : spans_)
+    for (int k = 0; k < sp.count; ++k, ++g) {
+      const int t = part_of(g), k0 = start[t];
+      Part& p = parts_[t];
+      unsigned apart = 0;  // rows of equations an earlier part touches first
+      for (int i = 0; i < w; ++i)
+        if (const int q = eq_of(sp, k, i); q >= 0 && first[q] < k0) apart |= 1u << i;
+      if (apart == 0 && g > k0 && k > 0 && p.pieces.back().apart == 0) {
+        ++p.pieces.back().count;  // the same span's next element
+        continue;
+      }
+      Span piece = sp;
+      const int o = k * per;
+      piece.count = 1;
+      for (int i = 0; i < w; ++i) piece.eq[i] = eq_of(sp, k, i);
+      if (piece.zero_lo < piece.zero_hi) piece.zero_lo += o, piece.zero_hi += o;
+      if (piece.done_lo < piece.done_hi) piece.done_lo += o, piece.done_hi += o;
+      if (apart != 0) {
+        piece.chain = false;
+        piece.apart = apart;
+        piece.side_at = static_cast<int>(p.side_eq.size());
+        for (int i = 0; i < w; ++i)
+          if (apart >> i & 1u) p.side_eq.push_back(piece.eq[i]);
+        // It finishes only the equations its own part started (the rest are boundary ones).
+        int lo = n, hi = -1, members = 0;
+        for (int q = piece.done_lo; q < piece.done_hi; ++q)
+          if (first[q] >= k0) lo = std::min(lo, q), hi = std::max(hi, q), ++members;
+        if (members > 0 && hi + 1 - lo != members) return false;
+        piece.done_lo = members > 0 ? lo : 0;
+        piece.done_hi = members > 0 ? hi + 1 : 0;
+      }
+      p.pieces.push_back(piece);
+    }
+  for (Part& p : parts_) p.side.assign(p.side_eq.size(), 0.0);
+  for (int q = 0; q < n; ++q)
+    if (first[q] >= 0 && part_of(first[q]) != part_of(last[q])) {
+      if (!boundary_.empty() && boundary_.back()[1] == q)
+        ++boundary_.back()[1];
+      else
+        boundary_.push_back({q, q + 1});
+    }
   return true;
 }
 

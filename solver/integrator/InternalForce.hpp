@@ -30,6 +30,25 @@ class InternalForce {
   /// @param done callable (int lo, int hi): f[lo, hi) is final
   template <class Done>
   void apply_streamed(const Eigen::VectorXd& U, Eigen::VectorXd& f, Done&& done) const;
+  /// @brief Splits apply_streamed() into `parts` parts that may run at the same time, one per
+  /// consecutive range of elements, with the same bits as apply_streamed(): an equation that
+  /// elements of two parts touch (a node at a range boundary) is summed in element order, the
+  /// later parts' terms kept apart and added after all parts (finish_parts). Needs
+  /// element_blocks(); otherwise, or with fewer than 2 elements a part, nothing is split.
+  /// @param parts the number of parts asked for
+  /// @return the number of parts made (1: apply_part(0, ...) is apply_streamed())
+  int set_parts(int parts);
+  /// @brief The number of parts (set_parts; 1 unless split).
+  int parts() const { return parts_.empty() ? 1 : static_cast<int>(parts_.size()); }
+  /// @brief Part t of f = f_int(U): writes f on the equations only its elements touch (and the
+  /// first part's sums of the boundary equations), calling done(lo, hi) on those it finishes.
+  /// Parts may run concurrently; then finish_parts(). No allocation.
+  template <class Done>
+  void apply_part(int t, const Eigen::VectorXd& U, Eigen::VectorXd& f, Done&& done) const;
+  /// @brief After every part: adds the later parts' terms of the boundary equations in element
+  /// order and calls done(lo, hi) on them. No allocation.
+  template <class Done>
+  void finish_parts(Eigen::VectorXd& f, Done&& done) const;
   /// @brief End forces of element e at U in its own frame: axial force N (N, tension > 0) and
   /// the end moments M1, M2 (N m) the element exerts on its nodes' rotations, the same ones
   /// apply() assembles: the corotational element's for corotational bodies, the linear
@@ -72,6 +91,17 @@ class InternalForce {
     /// A chain's interior: eq[i] = eq[0] + i (one block of memory), and each element starts
     /// its second node (zero range) and finishes its first (done range).
     bool chain;
+    /// Only in a part (set_parts), a single element whose rows i with bit i set are summed
+    /// into the part's side values from side_at on, in row order, instead of into f.
+    unsigned apart = 0;
+    int side_at = 0;
+  };
+  /// One part of the split product: its pieces of spans in element order, and the values it
+  /// keeps apart (side_eq: their equations, in the order the pieces make them).
+  struct Part {
+    std::vector<Span> pieces;
+    std::vector<int> side_eq;
+    mutable std::vector<double> side;  ///< this call's values, written by apply_part only
   };
   /// Builds the element blocks of K when nothing is corotational; keeps them only when they
   /// reassemble K (to roundoff): then apply() is element by element, as the hand kernel.
@@ -82,11 +112,21 @@ class InternalForce {
   /// The span product for W = 2 x DOFs per node (apply_streamed without the fallback).
   template <int W, class Done>
   void apply_spans(const Eigen::VectorXd& U, Eigen::VectorXd& f, Done&& done) const;
+  /// The product over pieces [begin, end) (zeroing and finishing `untouched` first), with the
+  /// rows kept apart written to side. apply_spans and apply_part.
+  template <int W, class Done>
+  void sweep_pieces(const Span* begin, const Span* end, const std::vector<std::array<int, 2>>& untouched,
+                    const double* u, double* out, double* side, Done&& done) const;
+  /// The parts of elements [k0, k1) for every range; false when some piece cannot be made.
+  bool build_parts(int parts);
   const Model& model_;
   const SparseMatrix* K_;
   std::vector<double> blocks_;  ///< distinct element blocks, W x W row-major each
   std::vector<Span> spans_;
   std::vector<std::array<int, 2>> untouched_;  ///< equation ranges no element touches (f = 0)
+  std::vector<Part> parts_;                    ///< empty unless split (set_parts)
+  std::vector<std::array<int, 2>> boundary_;   ///< equations touched by two parts, as ranges
+  static const std::vector<std::array<int, 2>> kNone;
   bool use_blocks_ = false;
   SparseMatrix K_linear_;  ///< used only when some elements are corotational
   std::vector<int> corot_elements_;

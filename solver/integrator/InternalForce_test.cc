@@ -1,7 +1,9 @@
 // The corotational element against the linear one (small motion) and against rigid motion (large).
 #include <solver/integrator/InternalForce.hpp>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include <gtest/gtest.h>
 
@@ -72,6 +74,60 @@ TEST(InternalForce, StreamedProductHandsOverEachEquationOnceAndFinal) {
     });
     for (int i = 0; i < m.size(); ++i) EXPECT_EQ(handed[i], 1) << "equation " << i;
     EXPECT_LE(worst, 1e-13 * scale);
+  }
+}
+
+/// The layouts of the streamed test: supports at both ends and a clamp mid-span, a free rigid
+/// body, several inclined bodies (spans of one element between chains); S1's rods; S2 refined.
+std::vector<Model> split_layouts() {
+  Scene s;
+  s.file = "test";
+  Body a = soft_body("A", {0, 0}, {4, 3}, 8);
+  a.supports = {Support{0, true, true, false}, Support{3, true, true, true}, Support{8, false, true, false}};
+  Body r = soft_body("R", {10, 0}, {11, 0}, 2);
+  r.rigid = true;
+  s.bodies = {a, r, soft_body("C", {0, 5}, {6, 9}, 6)};
+  std::vector<Model> m;
+  m.emplace_back(s, true);
+  m.emplace_back(load_scene(testing::paper_scene("s1_central")), false);
+  m.emplace_back(
+      load_scene(testing::paper_scene("s2_transverse"), {"bodies.A.elements=7", "bodies.B.elements=9"}),
+      true);
+  return m;
+}
+
+TEST(InternalForce, EverySplitGivesTheBitsOfTheWholeProduct) {
+  // Each entry of f is 0.0 plus its elements' row sums in element order, whatever the split: the
+  // first part touching an equation sums its own terms, the later parts' are added after them
+  // in part order. So the split product has the same bits (no tolerance), for every number of
+  // parts, i.e. every position of a range boundary: inside a chain, at a chain's first or last
+  // element, at a support, between bodies. The parts run here in reverse order (they may run in
+  // any), into an f of NaN: every entry must be written, each handed over exactly once.
+  for (const Model& m : split_layouts()) {
+    InternalForce f(m, std::vector<bool>(m.num_bodies(), false));
+    ASSERT_TRUE(f.element_blocks());
+    Eigen::VectorXd U(m.size()), whole(m.size());
+    for (int i = 0; i < m.size(); ++i) U(i) = std::sin(1.7 * i + 0.3);
+    f.apply_streamed(U, whole, [](int, int) {});
+    int elastic = 0;
+    for (int e = 0; e < static_cast<int>(m.elements().size()); ++e) elastic += m.element_group(e) >= 0;
+    for (int parts = 2; 2 * parts <= elastic; ++parts) {
+      ASSERT_EQ(f.set_parts(parts), parts) << m.size() << " DOFs";
+      Eigen::VectorXd split = Eigen::VectorXd::Constant(m.size(), std::nan(""));
+      std::vector<int> handed(m.size(), 0);
+      auto count = [&](int lo, int hi) {
+        for (int i = lo; i < hi; ++i) ++handed[i];
+      };
+      for (int t = parts - 1; t >= 0; --t) f.apply_part(t, U, split, count);
+      f.finish_parts(split, count);
+      for (int i = 0; i < m.size(); ++i) {
+        EXPECT_EQ(handed[i], 1) << parts << " parts, equation " << i;
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(split(i)), std::bit_cast<std::uint64_t>(whole(i)))
+            << parts << " parts, equation " << i << ": " << split(i) << " vs " << whole(i);
+      }
+    }
+    EXPECT_EQ(f.set_parts(elastic / 2 + 1), 1) << "fewer than two elements a part";
+    EXPECT_EQ(f.set_parts(1), 1);
   }
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -234,6 +235,20 @@ void record_step(const ExplicitContactIntegrator& integ, long p, long N, const S
   rec.add_row(std::move(row));
 }
 
+/// The threads asked for (or the default, then written into assumed), and those used, with the
+/// reason when fewer, into summary.json ("threads", "threads_note").
+void set_threads(const Options& o, int dofs, ExplicitContactIntegrator& integ, SimulationResult& r) {
+  int asked = o.threads;
+  if (asked == 0) {
+    asked = default_threads(dofs);
+    r.assumed["paper.threads"] =
+        fmt::format("{}: the machine's {} hardware threads, 1 below {} equations (this model: {})", asked,
+                    std::max(1u, std::thread::hardware_concurrency()), kThreadsMinDofs, dofs);
+  }
+  r.extra["threads"] = integ.set_threads(asked);
+  if (!integ.threads_note().empty()) r.extra["threads_note"] = integ.threads_note();
+}
+
 }  // namespace
 
 Options Options::read(const Scene& scene, std::map<std::string, std::string>* assumed) {
@@ -250,6 +265,12 @@ Options Options::read(const Scene& scene, std::map<std::string, std::string>* as
   o.closure_slip = in.choice_or("closure_slip", "step", {"step", "from_closure"}) == "step"
                        ? ClosureSlip::kWholeStep
                        : ClosureSlip::kFromClosure;
+  if (in.has("threads")) {  // else the default, written once the model's size is known
+    const long t = in.integer("threads", "a whole number of threads 1..1024");
+    if (t < 1 || t > 1024)
+      in.fail("threads", fmt::format("expected a whole number of threads 1..1024, got {}", t));
+    o.threads = static_cast<int>(t);
+  }
   in.finish();
   return o;
 }
@@ -272,6 +293,7 @@ SimulationResult solve(const Scene& scene_in, const std::filesystem::path& field
 
   ExplicitContactIntegrator integ(model, scene, effects, r.dt, options.surface);
   integ.set_closure_slip(options.closure_slip);
+  set_threads(options, model.size(), integ, r);
   rec.set_initial_energy(integ.initial_energy());
   std::vector<DeformedSurface> surfaces;  // the real gap of each pair, from the deformed geometry
   for (const ContactPair& pair : integ.pairs())

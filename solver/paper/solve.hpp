@@ -18,6 +18,7 @@ struct Options {
   double merge_gap = 0.0;  ///< s; when > 0, phases closer than this are merged instead (dt-independent)
   SurfaceInterpolation surface = SurfaceInterpolation::kLinear;  ///< "linear" (paper) or "hermite"
   ClosureSlip closure_slip = ClosureSlip::kWholeStep;            ///< "step" (paper) or "from_closure"
+  int threads = 0;  ///< threads of the step's element sweep; 0 = default_threads() of the model
 
   /// @brief Reads [paper] of `scene`; defaults not given are recorded in `assumed`. Throws
   /// SceneError naming the file and key for a bad value or an unknown key.

@@ -1,6 +1,7 @@
 #include "command_run.hpp"
 #include "methods_option.hpp"
 
+#include <cstdlib>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -16,6 +17,7 @@ namespace {
 struct RunArgs {
   std::string scene, out, method = "paper", mesh;
   double dt = 0.0;  // s, 0: the scene's
+  int threads = 0;  // 0: the default (RunOptions::threads)
   std::vector<std::string> sets;
   bool quiet = false;
   bool allow_long = false;
@@ -48,10 +50,25 @@ void simulate(const RunArgs& a) {
   if (a.fields) sets.push_back("output.fields=true");
   RunOptions o{sets, a.out, std::nullopt, a.mesh};
   if (a.dt != 0.0) o.dt = a.dt;
+  if (a.threads != 0) o.threads = a.threads;
   const SimulationResult r = beamimpact::run(a.scene, a.method, o);
   if (!a.quiet) print_result(r, a.out);
   if (const auto w = r.extra.find("warnings"); w != r.extra.end())  // also when quiet: on stderr
     for (const auto& text : *w) fmt::print(stderr, "warning: {}\n", text.get<std::string>());
+}
+
+/// --threads: a whole number 1..1024, checked before conversion so that every bad value gets the
+/// same message naming the option (exit 2).
+CLI::Validator threads_validator() {
+  return CLI::Validator(
+      [](std::string& v) -> std::string {
+        char* end = nullptr;
+        const long n = std::strtol(v.c_str(), &end, 10);
+        if (v.empty() || *end != '\0' || n < 1 || n > 1024)
+          return "expected a whole number of threads 1..1024, got '" + v + "'";
+        return {};
+      },
+      "1..1024");
 }
 
 }  // namespace
@@ -70,6 +87,10 @@ void add_command_run(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   sub->add_option("--mesh", args->mesh,
                   "Mesh: an element multiplier (1..64) for the beam methods, or an external method's preset");
+  sub->add_option("--threads", args->threads,
+                  "Threads of the paper integrator's step (1..1024; as --set paper.threads=N); default: the "
+                  "machine's, 1 for small models. The results are the same bits at any count")
+      ->check(threads_validator());
   add_methods_option(sub);
   sub->add_option("--set", args->sets, "Override a scene key, e.g. --set time.dt=0.005 (repeatable)");
   sub->add_flag("--quiet", args->quiet, "Print nothing on success (no progress either)");

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <solver/testing/test_scenes.hpp>
 #include <tools/beamimpact/testing/cli_run.hpp>
@@ -25,6 +26,15 @@ std::string without_wall_time(const std::string& json) {
   for (std::string line; std::getline(in, line);)
     if (line.find("\"wall_seconds\"") == std::string::npos && line.find("\"ns_per_") == std::string::npos)
       out += line + "\n";
+  return out;
+}
+
+/// The lines of a summary that name the threads (asked for: overrides; used: "threads").
+std::string without_threads(const std::string& json) {
+  std::istringstream in(json);
+  std::string out;
+  for (std::string line; std::getline(in, line);)
+    if (line.find("threads") == std::string::npos) out += line + "\n";
   return out;
 }
 
@@ -52,6 +62,36 @@ TEST(Determinism, RerunsGiveIdenticalFiles) {
                                        scene, method, out.string())),
                 0);
     expect_same_run(a, b);
+  }
+}
+
+TEST(Determinism, ThreadsDoNotChangeTheRuns) {
+  // The element sweep split over 2 and 3 threads sums every entry in the one-thread order:
+  // history.csv is the same bytes, summary.json too apart from the threads asked for and used.
+  // Rods (S1, 40 + 41 elements: splits at the bodies' edge and inside both) and frames (S2, 20 +
+  // 40: inside B's chain and at the edge), each through its contact.
+  const fs::path dir = beamimpact::testing::temp_path("threads");
+  for (const auto& [scene, sets] :
+       {std::pair{"s1_central",
+                  "--set bodies.A.elements=40 --set bodies.B.elements=41 --set 'time.dt=\"auto\"'"},
+        std::pair{"s2_transverse",
+                  "--set bodies.A.elements=20 --set bodies.B.elements=40 --set 'time.dt=\"auto\"'"}}) {
+    std::vector<fs::path> outs;
+    for (int threads : {1, 2, 3}) {
+      outs.push_back(dir / fmt::format("{}_{}", scene, threads));
+      ASSERT_EQ(
+          beamimpact(fmt::format("run verification/scenes/paper/{}.toml {} --threads {} --out '{}' --quiet",
+                                 scene, sets, threads, outs.back().string())),
+          0);
+      const auto j = nlohmann::json::parse(read_file(outs.back() / "summary.json"));
+      EXPECT_EQ(j["threads"], threads) << scene;
+    }
+    for (int k : {1, 2}) {
+      EXPECT_EQ(read_file(outs[0] / "history.csv"), read_file(outs[k] / "history.csv")) << outs[k];
+      EXPECT_EQ(without_threads(without_wall_time(read_file(outs[0] / "summary.json"))),
+                without_threads(without_wall_time(read_file(outs[k] / "summary.json"))))
+          << outs[k];
+    }
   }
 }
 

@@ -1,0 +1,62 @@
+#pragma once
+/// @file ThreadTeam.hpp
+/// @brief A fixed team of threads made once and reused for every job: run(job) calls job(t) once
+/// for each part t = 0 .. size() - 1 and returns when all have returned (a barrier). The caller
+/// and the persistent workers claim the parts one at a time, so a worker that the system has not
+/// scheduled yet (an oversubscribed machine) leaves its part to the caller instead of making it
+/// wait; which thread runs a part never matters to a job whose parts write apart. Made for a step
+/// loop that runs up to millions of short jobs: no allocation and no thread creation per job, and
+/// a wait that spins briefly and then sleeps (std::atomic::wait, a futex on Linux).
+
+#include <atomic>
+#include <cstdint>
+#include <thread>
+#include <vector>
+
+namespace beamimpact {
+
+/// @brief Persistent worker threads and a reusable barrier.
+class ThreadTeam {
+ public:
+  /// @brief Starts size - 1 workers (none for size <= 1: run() then calls job(0) inline).
+  /// @param size the number of parts a job is split into (the caller runs part 0)
+  explicit ThreadTeam(int size);
+  /// @brief Stops and joins the workers.
+  ~ThreadTeam();
+  ThreadTeam(const ThreadTeam&) = delete;
+  ThreadTeam& operator=(const ThreadTeam&) = delete;
+
+  /// @brief The number of parts.
+  int size() const { return size_; }
+
+  /// @brief Calls job(t) once for every part t, on this thread or a worker, and returns when all
+  /// have returned: what they wrote is then visible to the caller. No allocation.
+  /// @param job callable (int t); must not throw
+  template <class Job>
+  void run(Job& job) {
+    start(&call<Job>, &job);
+  }
+
+ private:
+  template <class Job>
+  static void call(void* job, int t) {
+    (*static_cast<Job*>(job))(t);
+  }
+  /// Publishes the job, runs the parts it claims, waits for the others.
+  void start(void (*fn)(void*, int), void* job);
+  /// Claims and runs parts of job `generation` until none is left.
+  void run_parts(std::uint32_t generation);
+  /// A worker's loop: waits for the next generation, runs the parts it claims.
+  void work();
+
+  int size_;
+  std::vector<std::thread> workers_;
+  void (*fn_)(void*, int) = nullptr;
+  void* job_ = nullptr;
+  std::atomic<std::uint32_t> generation_{0};  ///< bumped once per job (and to stop); waited on
+  std::atomic<std::uint64_t> claim_{0};       ///< generation << 32 | the next part to claim
+  std::atomic<int> finished_{0};              ///< parts of the current job that have returned
+  std::atomic<bool> stop_{false};
+};
+
+}  // namespace beamimpact

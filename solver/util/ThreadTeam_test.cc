@@ -1,0 +1,109 @@
+// The thread team: every part of every job runs exactly once, parts run at the same time on
+// different threads, and run() returns only when all parts have returned (the barrier), also
+// after the workers have gone to sleep.
+#include <solver/util/ThreadTeam.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace beamimpact {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// Busy for about `us` microseconds (a part that is still running when the others are done).
+void busy(int us) {
+  const auto until = Clock::now() + std::chrono::microseconds(us);
+  while (Clock::now() < until) {
+  }
+}
+
+/// Waits (busy) until `flag` is set or 5 s have passed (a machine too loaded to schedule the
+/// worker at all): true when it was set.
+bool wait_for(const std::atomic<bool>& flag) {
+  const auto until = Clock::now() + std::chrono::seconds(5);
+  while (!flag.load() && Clock::now() < until) {
+  }
+  return flag.load();
+}
+
+TEST(ThreadTeam, EveryPartRunsOncePerJob) {
+  for (int size : {1, 2, 3}) {
+    ThreadTeam team(size);
+    EXPECT_EQ(team.size(), size);
+    std::vector<long> runs(size, 0);
+    auto job = [&](int t) { ++runs[t]; };  // each part writes only its own entry
+    for (int j = 0; j < 2000; ++j) team.run(job);
+    for (int t = 0; t < size; ++t) EXPECT_EQ(runs[t], 2000) << "part " << t << " of " << size;
+  }
+}
+
+TEST(ThreadTeam, PartsRunAtTheSameTimeOnDifferentThreads) {
+  // The caller claims part 0 first and holds it until part 1 has started: only a worker can have
+  // started it.
+  ThreadTeam team(2);
+  std::atomic<bool> started{false};
+  std::thread::id caller = std::this_thread::get_id(), part1;
+  bool seen = false;
+  auto job = [&](int t) {
+    if (t == 0) {
+      seen = wait_for(started);
+    } else {
+      part1 = std::this_thread::get_id();
+      started = true;
+    }
+  };
+  team.run(job);
+  EXPECT_TRUE(seen) << "part 1 did not start while part 0 ran";
+  EXPECT_NE(part1, caller);
+}
+
+TEST(ThreadTeam, RunReturnsOnlyWhenEveryPartHasReturned) {
+  // Part 1 (on a worker: part 0 waits until it has started) takes 300 us after part 0 is done:
+  // without the barrier, run() returns before its result is there.
+  ThreadTeam team(2);
+  for (int j = 1; j <= 20; ++j) {
+    std::atomic<bool> started{false};
+    int done = 0;
+    auto job = [&](int t) {
+      if (t == 0) {
+        (void)wait_for(started);
+        return;
+      }
+      started = true;
+      busy(300);
+      done = j;
+    };
+    team.run(job);
+    EXPECT_EQ(done, j);
+  }
+}
+
+TEST(ThreadTeam, SleepingWorkersWakeForTheNextJob) {
+  // After an idle pause far beyond the spin (the workers sleep in a futex), the next jobs still
+  // run every part on a worker, and return after them.
+  ThreadTeam team(3);
+  for (int j = 1; j <= 3; ++j) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    std::atomic<int> started{0};
+    std::vector<int> done(3, 0);
+    auto job = [&](int t) {
+      ++started;
+      const auto until = Clock::now() + std::chrono::seconds(5);
+      while (started.load() < 3 && Clock::now() < until) {  // all three parts at once
+      }
+      busy(100);
+      done[t] = j;
+    };
+    team.run(job);
+    EXPECT_EQ(started.load(), 3);
+    for (int t = 0; t < 3; ++t) EXPECT_EQ(done[t], j) << "part " << t;
+  }
+}
+
+}  // namespace
+}  // namespace beamimpact

@@ -39,8 +39,8 @@ std::deque<Method> built_in() {
   exact.accepts.rotation = false;
   exact.accepts.search = false;
   exact.accepts.several_contacts = false;
-  exact.accepts.timoshenko = false;  // the solutions are of Euler-Bernoulli beams and rods
-  exact.accepts.hertz = true;        // a rigid striker on a beam only (its recogniser refuses the rest)
+  exact.accepts.timoshenko = true;  // a rod on a Timoshenko beam only (its recogniser refuses the rest)
+  exact.accepts.hertz = true;       // a rigid striker on a beam only (its recogniser refuses the rest)
   exact.solve = exact::solve;
   t.push_back(exact);
 #endif

@@ -75,6 +75,19 @@ void refuse_hertz_unless_ball_on_beam(const Scene& scene) {
   }
 }
 
+/// @brief Refuses a Timoshenko body unless the scene is a rod striking a beam end-on (the only
+/// problem solved with Timoshenko modes: the target's; the striker, struck end-on, carries axial
+/// waves only, the same in either theory); the other problems learn of it here.
+/// @param rod_on_beam the scene was recognised as a rod on a simply supported beam
+void refuse_timoshenko_unless_rod_on_beam(const Scene& scene, bool rod_on_beam) {
+  for (std::size_t i = 0; i < scene.bodies.size() && !rod_on_beam; ++i)
+    if (scene.bodies[i].theory == BeamTheory::kTimoshenko)
+      refuse(scene, fmt::format("bodies[{}].theory", i),
+             "its Timoshenko-beam solution is of an elastic rod striking a simply supported beam end-on "
+             "(rod on beam); the coaxial-rod, rigid-rod, rod-on-wall and ball-on-beam solutions are of "
+             "Euler-Bernoulli bodies: expected theory = \"euler-bernoulli\" (or no theory)");
+}
+
 /// @brief The striker's frame, common to both problems, and what the recognisers check against.
 struct Frame {
   const Body& A;            ///< striker
@@ -163,6 +176,8 @@ void recognise_rod_on_beam(const Scene& scene, const Frame& f, ExactProblem& p) 
   p.gap = std::abs(h);
   p.v0 = dot(f.A.velocity, p.dir);
   p.beam = SimpleBeam{Lb, B.E, B.rho, B.area, B.inertia};
+  if (B.theory == BeamTheory::kTimoshenko)
+    p.shear = BeamShear{B.shear_coefficient, B.E / (2.0 * (1.0 + B.poisson))};
   p.x_c = x_c;
   const double le = Lb / B.elements, k = x_c / le;
   p.contact_kind =
@@ -268,7 +283,10 @@ ExactProblem recognise_rod_on_wall(const Scene& scene) {
   return p;
 }
 
-ExactProblem recognise_scene(const Scene& scene) {
+namespace {
+
+/// @brief The problem the scene describes, whatever its bodies' beam theory.
+ExactProblem recognise_problem(const Scene& scene) {
   refuse_hertz_unless_ball_on_beam(scene);
   const bool hertz = !scene.contacts.empty() && scene.contacts[0].law == ContactLaw::kHertz;
   if (scene.bodies.size() == 2 && scene.contacts.size() == 1 &&
@@ -314,6 +332,14 @@ ExactProblem recognise_scene(const Scene& scene) {
     p.mass = A.rho * A.area * A.length();
     p.hertz_stiffness = c.hertz_stiffness;
   }
+  return p;
+}
+
+}  // namespace
+
+ExactProblem recognise_scene(const Scene& scene) {
+  const ExactProblem p = recognise_problem(scene);
+  refuse_timoshenko_unless_rod_on_beam(scene, p.kind == ExactKind::kRodOnBeam);
   return p;
 }
 

@@ -2,13 +2,16 @@
 /// @file recognise_scene.hpp
 /// @brief Decides whether a scene has an exact (or semi-analytic) counterpart and extracts
 /// its 1D data; any other scene is refused with the condition that failed ("the exact method
-/// cannot solve this scene: ..."). What the method never takes (a contact search, Timoshenko
-/// beams, the Hertz law) is the registry's to refuse (Method::Accepts, checked by api::run).
+/// cannot solve this scene: ..."). What the method never takes (a contact search, several
+/// contacts, large rotation) is the registry's to refuse (Method::Accepts, checked by api::run);
+/// what it takes for one problem only (the Hertz law: ball on beam; a Timoshenko beam: rod on
+/// beam) the recogniser refuses for the others.
 
 #include <string>
 
 #include <references/exact/Rod.hpp>
 #include <references/exact/SimpleBeam.hpp>
+#include <references/exact/TimoshenkoBeam.hpp>
 #include <solver/scene/Scene.hpp>
 #include <solver/schema/output_schema.hpp>
 
@@ -36,6 +39,7 @@ struct ExactProblem {
   Rod target_rod;                         ///< the target as a rod (kCoaxialRods)
   FarEnd target_far_end = FarEnd::kFree;  ///< kCoaxialRods: the target's far end free or fixed
   SimpleBeam beam;                        ///< the target as a beam (kRodOnBeam, kBallOnBeam)
+  BeamShear shear;                        ///< kRodOnBeam: a Timoshenko target's kappa and G (else zero)
   double x_c = 0.0;              ///< m, struck point from the target's start node (kRodOnBeam, kBallOnBeam)
   double mass = 0.0;             ///< kg, kBallOnBeam: the rigid striker's mass rho A L
   double hertz_stiffness = 0.0;  ///< N/m^1.5, kBallOnBeam: k of the contact's Hertz spring

@@ -152,3 +152,30 @@ TEST(RecogniseScene, BallOnBeamWithTheHertzLaw) {
 
 }  // namespace
 }  // namespace beamimpact::exact
+
+namespace beamimpact::exact {
+namespace {
+
+// A rod end-on onto a simply supported Timoshenko beam is solved with the Timoshenko beam's
+// modes: the target's shear coefficient and G = E / (2 (1 + nu)) are passed on; the striker's
+// theory does not enter (struck end-on it carries axial waves only). A Timoshenko body in any other
+// problem is refused naming its theory.
+TEST(RecogniseScene, RodOnTimoshenkoBeam) {
+  const std::string file =
+      (testing::source_dir() / "verification/scenes/extra/s2_stocky_timoshenko.toml").string();
+  const ExactProblem p = recognise_scene(load_scene(file));
+  EXPECT_EQ(p.kind, ExactKind::kRodOnBeam);
+  EXPECT_DOUBLE_EQ(p.shear.kappa, 5.0 / 6.0);
+  EXPECT_DOUBLE_EQ(p.shear.G, 50.0);  // E / 2 with nu = 0
+  EXPECT_FALSE(recognise_scene(load_scene(paper_scene("s2_transverse"))).shear.timoshenko());
+  const std::string stocky = (testing::source_dir() / "verification/scenes/extra/s2_stocky.toml").string();
+  EXPECT_EQ(recognise_scene(load_scene(stocky, {"bodies.B.theory=timoshenko"})).shear.G, 100.0 / 2.6);
+  expect_refused(load_scene(paper_scene("s1_central"), {"bodies.B.theory=timoshenko"}), "bodies[1].theory",
+                 "rod striking a simply supported beam");
+  expect_refused(load_scene((testing::source_dir() / "verification/scenes/extra/ball_on_beam.toml").string(),
+                            {"bodies.B.theory=timoshenko"}),
+                 "bodies[1].theory", "ball-on-beam");
+}
+
+}  // namespace
+}  // namespace beamimpact::exact

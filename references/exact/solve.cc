@@ -224,6 +224,24 @@ void check_beam_cost(const Scene& scene, const RodOnBeamSetup& s, const BeamMode
                        "set fewer modes (exact.modes or exact.modes_max), a larger exact.dt_out");
 }
 
+/// summary.json exact.solution of the rod on a beam, Euler-Bernoulli or Timoshenko.
+const char* rod_on_beam_note(const BeamShear& shear) {
+  return shear.timoshenko()
+             ? "rod end-on onto a simply supported Timoshenko beam: exact rod waves with reflection memory + "
+               "modal sum of both frequency branches, GSL rk8pd, Brent-located events (RodOnBeam.hpp, "
+               "TimoshenkoBeam.hpp)"
+             : "rod end-on onto a simply supported Euler-Bernoulli beam: exact rod waves with "
+               "reflection memory + modal sum, GSL rk8pd, Brent-located events (references.md 2)";
+}
+
+/// summary.json contacts[0].extra.timoshenko: the shear data of a Timoshenko target and what
+/// `modes` counts.
+nlohmann::json timoshenko_note(const BeamShear& shear) {
+  return {{"shear_coefficient", shear.kappa},
+          {"shear_modulus", shear.G},
+          {"modes", "the lowest by frequency, both branches of the frequency equation counted"}};
+}
+
 SimulationResult solve_beam(const Scene& scene, const ExactProblem& p, const BeamModeOptions& o,
                             ResultRecorder& rec) {
   SimulationResult& r = rec.result();
@@ -231,6 +249,7 @@ SimulationResult solve_beam(const Scene& scene, const ExactProblem& p, const Bea
   RodOnBeamSetup s;
   s.rod = p.striker_rod;
   s.beam = p.beam;
+  s.shear = p.shear;
   s.x_c = p.x_c;
   s.v0 = p.v0;
   s.gap = p.gap;
@@ -280,9 +299,8 @@ SimulationResult solve_beam(const Scene& scene, const ExactProblem& p, const Bea
                           {"deflection_min", sol.w_min},
                           {"events", sol.events},
                           {"pieces", sol.pieces}};
-  r.extra["exact"] = {{"solution",
-                       "rod end-on onto a simply supported Euler-Bernoulli beam: exact rod waves with "
-                       "reflection memory + modal sum, GSL rk8pd, Brent-located events (references.md 2)"},
+  if (p.shear.timoshenko()) extra["timoshenko"] = timoshenko_note(p.shear);
+  r.extra["exact"] = {{"solution", rod_on_beam_note(p.shear)},
                       {"rk8pd_steps", sol.steps},
                       {"rtol", o.rtol},
                       {"memory_sample_dt", sol.sample_dt},

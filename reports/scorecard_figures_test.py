@@ -61,6 +61,6 @@ def test_several_methods_share_their_references(tmp_path):
         assert cards[m]["method"] == m and "paper example" in cards[m]["command"]
     refs = {(s["scene"], s["reference"]) for c in cards.values() for s in c["scenes"]}
     assert all(s["reference_kind"] == "exact" for c in cards.values() for s in c["scenes"])
-    # The seven exact-answer scenes' references, each run once for both scorecards.
-    assert len(refs) == len(cards["paper"]["scenes"]) == 7
-    assert len([d for d in os.listdir(out / "runs") if d.endswith(".exact")]) == 7
+    # The eight exact-answer scenes' references, each run once for both scorecards.
+    assert len(refs) == len(cards["paper"]["scenes"]) == 8
+    assert len([d for d in os.listdir(out / "runs") if d.endswith(".exact")]) == 8

@@ -47,14 +47,14 @@ TEST(Scorecard, PicksTheBestReferenceAndTheMatrixTolerances) {
   const fs::path root = BEAMIMPACT_SOURCE;
   const VerificationMatrix m = VerificationMatrix::load(root / "verification/matrix.toml");
   const auto fenicsx = score_items(m, "fenicsx", root);
-  // Every paper and hard scene, and the seven extra scenes with an exact answer (rigid rod, offset
+  // Every paper and hard scene, and the eight extra scenes with an exact answer (rigid rod, offset
   // gap, rod on a wall, bouncing bar, two rods with a second contact period, S2 rotated by 37
-  // degrees, the Hertz ball on a beam).
+  // degrees, the Hertz ball on a beam, the stocky S2 with Timoshenko beams).
   std::size_t shipped = 0;
   for (const char* folder : {"paper", "hard"})
     for (const auto& e : fs::directory_iterator(root / "verification/scenes" / folder))
       shipped += e.path().extension() == ".toml";
-  EXPECT_EQ(fenicsx.size(), shipped + 7);
+  EXPECT_EQ(fenicsx.size(), shipped + 8);
   // S1 has an exact solution and a FEniCSx case of its own: its mesh preset and its gates.
   const ScoreItem& s1 = item(fenicsx, "s1_central");
   EXPECT_EQ(s1.reference_kind, "exact");
@@ -159,9 +159,9 @@ TEST(Scorecard, SetsSelectTheScenesInOrderAndBadOptionsNameTheOption) {
   const auto paper = score_items(m, "paper", root, ScoreOptions{{"paper"}, "converged"});
   EXPECT_EQ(paper.size(), paper_files);
   for (const ScoreItem& it : paper) EXPECT_EQ(it.run.scene.parent_path().filename(), "paper");
-  // The exact set: the seven extra scenes with an exact answer, none of the paper's (S1 has one too).
+  // The exact set: the eight extra scenes with an exact answer, none of the paper's (S1 has one too).
   const auto exact = score_items(m, "paper", root, ScoreOptions{{"exact"}, "converged"});
-  EXPECT_EQ(exact.size(), 7u);
+  EXPECT_EQ(exact.size(), 8u);
   for (const ScoreItem& it : exact) EXPECT_EQ(it.reference_kind, "exact") << it.run.label();
   const auto key_of = [&](const ScoreOptions& o) {
     try {

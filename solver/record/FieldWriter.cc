@@ -3,6 +3,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <stdexcept>
 #include <type_traits>
 
@@ -24,40 +25,53 @@ constexpr const char* vtk_type() {
   if constexpr (std::is_same_v<T, std::uint8_t>) return "UInt8";
 }
 
-/// Appends one <DataArray> of `n` tuples of `components` values of type T; value(i, c) gives
-/// component c of tuple i. ASCII: the values inline in `xml`. Binary: an empty element in `xml`
-/// whose offset points into the appended data, and the block (UInt64 byte count, then the
-/// values in the machine's little-endian order) at `offset` = raw.size() + `base` in `raw`.
+/// Appends one <DataArray> of `n` tuples of `components` (at most 3) values of type T;
+/// tuple(i, v) writes tuple i's components into v[0..components). ASCII: the values inline in
+/// `xml`. Binary: an empty element in `xml` whose offset points into the appended data, and the
+/// block (UInt64 byte count, then the values in the machine's little-endian order) at `offset` =
+/// raw.size() + `base` in `raw`, written in place (no per-value append).
 template <typename T, typename F>
 void data_array(std::string& xml, std::string& raw, std::size_t base, FieldFormat format, const char* name,
-                int n, int components, F value) {
+                int n, int components, F tuple) {
   static_assert(std::endian::native == std::endian::little, "the VTK files declare LittleEndian");
   auto out = std::back_inserter(xml);
   const bool binary = format == FieldFormat::kBinary;
   fmt::format_to(out, "<DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"{}\"",
                  vtk_type<T>(), name, components, binary ? "appended" : "ascii");
+  const auto non_finite = [name] {
+    return std::runtime_error(fmt::format("non-finite {} in the fields: the run diverged", name));
+  };
+  double v[3];
   if (binary) {
     fmt::format_to(out, " offset=\"{}\"/>\n", base + raw.size());
     const std::uint64_t bytes = sizeof(T) * static_cast<std::uint64_t>(n) * components;
-    raw.append(reinterpret_cast<const char*>(&bytes), sizeof bytes);
-  } else {
-    xml += ">\n";
-  }
-  for (int i = 0; i < n; ++i) {
-    for (int c = 0; c < components; ++c) {
-      const auto v = value(i, c);
-      if (!std::isfinite(static_cast<double>(v)))
-        throw std::runtime_error(fmt::format("non-finite {} in the fields: the run diverged", name));
-      if (binary) {
-        const T x = static_cast<T>(v);
-        raw.append(reinterpret_cast<const char*>(&x), sizeof x);
-      } else {
-        fmt::format_to(out, "{}{}", c ? " " : "", static_cast<T>(v));
+    const std::size_t at = raw.size();
+    raw.resize(at + sizeof bytes + bytes);
+    char* p = raw.data() + at;
+    std::memcpy(p, &bytes, sizeof bytes);
+    p += sizeof bytes;
+    bool finite = true;
+    for (int i = 0; i < n; ++i) {
+      tuple(i, v);
+      for (int c = 0; c < components; ++c, p += sizeof(T)) {
+        finite &= std::isfinite(v[c]);
+        const T x = static_cast<T>(v[c]);
+        std::memcpy(p, &x, sizeof x);
       }
     }
-    if (!binary) xml.push_back('\n');
+    if (!finite) throw non_finite();
+    return;
   }
-  if (!binary) xml += "</DataArray>\n";
+  xml += ">\n";
+  for (int i = 0; i < n; ++i) {
+    tuple(i, v);
+    for (int c = 0; c < components; ++c) {
+      if (!std::isfinite(v[c])) throw non_finite();
+      fmt::format_to(out, "{}{}", c ? " " : "", static_cast<T>(v[c]));
+    }
+    xml.push_back('\n');
+  }
+  xml += "</DataArray>\n";
 }
 
 }  // namespace
@@ -80,15 +94,18 @@ FieldWriter::FieldWriter(const Model& model, std::filesystem::path dir, FieldFor
   std::string& raw = geometry_raw_;
   fmt::format_to(std::back_inserter(x), "<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n<Points>\n", n,
                  nb);
-  data_array<double>(x, raw, 0, format_, "reference_position", n, 3,
-                     [&](int i, int c) { return c < 2 ? model.node_position(i)[c] : 0.0; });
+  data_array<double>(x, raw, 0, format_, "reference_position", n, 3, [&](int i, double* v) {
+    const Vec2& q = model.node_position(i);
+    v[0] = q[0], v[1] = q[1], v[2] = 0.0;
+  });
   x += "</Points>\n<Cells>\n";
-  data_array<std::int64_t>(x, raw, 0, format_, "connectivity", n, 1, [](int i, int) { return i; });
-  data_array<std::int64_t>(x, raw, 0, format_, "offsets", nb, 1,
-                           [&](int body, int) { return body + 1 < nb ? model.node_id(body + 1, 0) : n; });
-  data_array<std::uint8_t>(x, raw, 0, format_, "types", nb, 1, [](int, int) { return kPolyLine; });
+  data_array<std::int64_t>(x, raw, 0, format_, "connectivity", n, 1, [](int i, double* v) { v[0] = i; });
+  data_array<std::int64_t>(x, raw, 0, format_, "offsets", nb, 1, [&](int body, double* v) {
+    v[0] = body + 1 < nb ? model.node_id(body + 1, 0) : n;
+  });
+  data_array<std::uint8_t>(x, raw, 0, format_, "types", nb, 1, [](int, double* v) { v[0] = kPolyLine; });
   x += "</Cells>\n<CellData Scalars=\"body\">\n";
-  data_array<std::int32_t>(x, raw, 0, format_, "body", nb, 1, [](int body, int) { return body; });
+  data_array<std::int32_t>(x, raw, 0, format_, "body", nb, 1, [](int body, double* v) { v[0] = body; });
   x += "</CellData>\n<PointData Vectors=\"displacement\">\n";
 }
 
@@ -122,19 +139,24 @@ void FieldWriter::write_arrays(const Eigen::VectorXd& U, const Eigen::VectorXd& 
   const int n = model_.num_nodes();
   const std::size_t base = geometry_raw_.size();
   auto vec = [&](const Eigen::VectorXd& X) {
-    return [&](int i, int c) { return c < 2 ? model_.node_vector(X, i)[c] : 0.0; };
+    return [&](int i, double* v) {
+      const Vec2 x = model_.node_vector(X, i);
+      v[0] = x[0], v[1] = x[1], v[2] = 0.0;
+    };
   };
   data_array<double>(xml_, raw_, base, format_, "displacement", n, 3, vec(U));
   data_array<double>(xml_, raw_, base, format_, "velocity", n, 3, vec(V));
-  data_array<double>(xml_, raw_, base, format_, "rotation", n, 1, [&](int i, int) {
+  data_array<double>(xml_, raw_, base, format_, "rotation", n, 1, [&](int i, double* v) {
     const int eq = model_.equation(i, 2);
-    return eq >= 0 ? U(eq) : 0.0;
+    v[0] = eq >= 0 ? U(eq) : 0.0;
   });
-  data_array<double>(xml_, raw_, base, format_, "axial_force", n, 1, [&](int i, int) { return axial_[i]; });
+  data_array<double>(xml_, raw_, base, format_, "axial_force", n, 1,
+                     [&](int i, double* v) { v[0] = axial_[i]; });
   data_array<double>(xml_, raw_, base, format_, "bending_moment", n, 1,
-                     [&](int i, int) { return moment_[i]; });
-  data_array<double>(xml_, raw_, base, format_, "contact_force", n, 3, [&](int i, int c) {
-    return c < 2 ? contact_force[static_cast<std::size_t>(i)][c] : 0.0;
+                     [&](int i, double* v) { v[0] = moment_[i]; });
+  data_array<double>(xml_, raw_, base, format_, "contact_force", n, 3, [&](int i, double* v) {
+    const Vec2& f = contact_force[static_cast<std::size_t>(i)];
+    v[0] = f[0], v[1] = f[1], v[2] = 0.0;
   });
 }
 

@@ -88,6 +88,12 @@ FieldWriter::FieldWriter(const Model& model, std::filesystem::path dir, FieldFor
           "<Collection>\n";
   for (const Model::Element& e : model.elements())
     if (!e.rigid) ++touching_[e.n1], ++touching_[e.n2];
+  eq_.resize(static_cast<std::size_t>(model.num_nodes()));
+  for (int i = 0; i < model.num_nodes(); ++i) {
+    const bool direct =
+        model.dofs_per_node() == 3 && !model.rigid(model.body_of_node(i)) && !model.rotated(i);
+    eq_[i] = {direct ? model.equation(i, 0) : -2, model.equation(i, 1), model.equation(i, 2)};
+  }
   // The piece's points, cells and cell data: the same in every step's file, formatted once.
   const int n = model.num_nodes(), nb = model.num_bodies();
   std::string& x = geometry_;
@@ -140,14 +146,21 @@ void FieldWriter::write_arrays(const Eigen::VectorXd& U, const Eigen::VectorXd& 
   const std::size_t base = geometry_raw_.size();
   auto vec = [&](const Eigen::VectorXd& X) {
     return [&](int i, double* v) {
-      const Vec2 x = model_.node_vector(X, i);
-      v[0] = x[0], v[1] = x[1], v[2] = 0.0;
+      const std::array<int, 3>& e = eq_[i];
+      if (e[0] == -2) {
+        const Vec2 x = model_.node_vector(X, i);
+        v[0] = x[0], v[1] = x[1];
+      } else {  // what node_vector() gives such a node
+        v[0] = e[0] >= 0 ? X(e[0]) : 0.0;
+        v[1] = e[1] >= 0 ? X(e[1]) : 0.0;
+      }
+      v[2] = 0.0;
     };
   };
   data_array<double>(xml_, raw_, base, format_, "displacement", n, 3, vec(U));
   data_array<double>(xml_, raw_, base, format_, "velocity", n, 3, vec(V));
   data_array<double>(xml_, raw_, base, format_, "rotation", n, 1, [&](int i, double* v) {
-    const int eq = model_.equation(i, 2);
+    const int eq = eq_[i][2];
     v[0] = eq >= 0 ? U(eq) : 0.0;
   });
   data_array<double>(xml_, raw_, base, format_, "axial_force", n, 1,

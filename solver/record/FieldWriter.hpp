@@ -73,9 +73,12 @@ class FieldWriter {
   long count_ = 0;
   std::vector<double> axial_, moment_;
   std::vector<int> touching_;  ///< elements meeting at each node
-  std::string geometry_;       ///< each .vtu's points, cells and cell data (the same every step)
-  std::string geometry_raw_;   ///< binary: their appended blocks (the same every step)
-  std::string xml_, raw_;      ///< the step being written: its XML and (binary) appended blocks
+  /// Each node's x, y, theta equations (-1: fixed or absent) when its displacement is read off
+  /// them directly (a frame node of an elastic body in global axes), else x = -2 (node_vector()).
+  std::vector<std::array<int, 3>> eq_;
+  std::string geometry_;      ///< each .vtu's points, cells and cell data (the same every step)
+  std::string geometry_raw_;  ///< binary: their appended blocks (the same every step)
+  std::string xml_, raw_;     ///< the step being written: its XML and (binary) appended blocks
 };
 
 }  // namespace beamimpact

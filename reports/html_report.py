@@ -30,6 +30,7 @@ FIGURE_SETS = {
                   "/usr/bin/python3 reports/scorecard_table.py /tmp/scores/* --set reports/scorecards",
     "classical_benchmarks": "/usr/bin/python3 reports/classical_benchmarks.py",
     "benchmarks": "/usr/bin/python3 reports/plot_effects_benchmark.py --run",
+    "setup": "/usr/bin/python3 reports/plot_setup_benchmark.py --run",
     "figures": "build/beamimpact study verification/studies/s4_angle_friction.toml --out DIR; "
                "/usr/bin/python3 reports/study_maps.py DIR (see README)",
 }

@@ -13,6 +13,9 @@
 // half a mass-on-rod period is ~1000 s), so a closed contact stays closed for the whole timing (a
 // transverse strike chatters); each benchmark reports `closed`: the fraction of timed steps in which
 // the k pushed contacts all carried R > 0. contact_0 (all open) is their baseline.
+// Thread rows (name_threads_2): the same variant with the step on 2 threads (set_threads), timed
+// in wall time (the plot compares them with their one-thread variant's wall time); every row
+// reports `threads`, the count used.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -47,6 +50,7 @@ struct Variant {
   std::string mass = "lumped";  ///< "lumped" | "consistent"
   std::string kinematics = "linear";
   double rayleigh_mass = 0.0;  ///< a0 (1/s)
+  int threads = 1;             ///< threads of the step (ExplicitContactIntegrator::set_threads)
 };
 
 constexpr const char* kBeam =
@@ -112,6 +116,7 @@ void run_variant(benchmark::State& state, const Variant& v) {
   const Model m(effective_scene(s, fx), fx.bending);
   const double dt = 0.5 * critical_step(m).dt;
   auto in = std::make_unique<ExplicitContactIntegrator>(m, s, fx, dt);
+  const int threads = in->set_threads(v.threads);
   if (v.closed > 0) {  // 1e-7 m at 1 m/s: the pushed contacts close within a few steps
     for (int k = 0; k < 1000 && !closed(*in, v.closed); ++k) in->step();
     if (!closed(*in, v.closed)) {
@@ -127,6 +132,7 @@ void run_variant(benchmark::State& state, const Variant& v) {
   state.SetItemsProcessed(state.iterations() * m.size());  // DOF-steps per second
   state.counters["dofs"] = static_cast<double>(m.size());
   state.counters["elements"] = static_cast<double>(n);
+  state.counters["threads"] = threads;
   state.counters["closed"] = static_cast<double>(n_closed) / static_cast<double>(state.iterations());
 }
 
@@ -156,6 +162,15 @@ Variant variant(const std::function<void(Variant&)>& edit) {
 #define EFFECT(name, edit) \
   BENCHMARK_CAPTURE(run_variant, name, variant([](Variant& v) { edit; }))->Apply(sizes);
 
+// A variant on 2 threads, timed in wall time: NAME_threads_2.
+#define EFFECT_THREADS(name, edit)                                          \
+  BENCHMARK_CAPTURE(run_variant, name##_threads_2, variant([](Variant& v) { \
+                      edit;                                                 \
+                      v.threads = 2;                                        \
+                    }))                                                     \
+      ->Apply(sizes)                                                        \
+      ->UseRealTime();
+
 BENCHMARK_CAPTURE(kernel, frame_kernel, false)->Apply(sizes);
 BENCHMARK_CAPTURE(kernel, rod_kernel, true)->Apply(sizes);
 // Baselines: the contact is checked every step but stays open.
@@ -174,6 +189,10 @@ EFFECT(contact_1, v.targets = 8; v.closed = 1)
 EFFECT(contact_2, v.targets = 8; v.closed = 2)
 EFFECT(contact_8, v.targets = 8; v.closed = 8)
 EFFECT(contact_1_friction, v.targets = 8; v.closed = 1; v.mu = 0.3)
+// The step on 2 threads (the same bits as on 1): rods, frames, 8 closed contacts.
+EFFECT_THREADS(rods, v.rods = true)
+EFFECT_THREADS(frames, (void)v)
+EFFECT_THREADS(contact_8, v.targets = 8; v.closed = 8)
 
 }  // namespace
 

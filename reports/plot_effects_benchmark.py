@@ -8,7 +8,9 @@ Usage: plot_effects_benchmark.py [--run] [--json reports/benchmarks/effects_benc
 --run  first runs the benchmark (3 interleaved repetitions, about 2-4 min) into --json.
 Per point the minimum over repetitions is used (on a shared machine other load only adds time);
 "spread" is (max - min) / min of the point's own repetitions, the noise against which "costs
-nothing" is judged.
+nothing" is judged. Rows NAME_threads_2 run the step on 2 threads: they are timed in wall time,
+their ratio to the kernel uses the kernel's wall time and their change is against NAME's wall
+time (negative: faster); the threads column is the count each row used.
 """
 import argparse
 import json
@@ -43,40 +45,59 @@ def load(path):
     for b in data.get("benchmarks", []):
         if b.get("run_type") != "iteration" or b.get("error_occurred"):
             continue
-        parts = b["run_name"].split("/")  # run_variant/frames/1000 or kernel/frame_kernel/1000
+        # run_variant/frames/1000, kernel/frame_kernel/1000, run_variant/frames_threads_2/1000/real_time
+        parts = [p for p in b["run_name"].split("/") if p != "real_time"]
         if len(parts) != 3:
             continue
         times.setdefault((parts[1], int(parts[2])), []).append(
-            {"cpu": b["cpu_time"], "closed": b.get("closed"), "dofs": b.get("dofs")})
+            {"cpu": b["cpu_time"], "real": b["real_time"], "closed": b.get("closed"), "dofs": b.get("dofs"),
+             "threads": int(b.get("threads", 1))})
     if not times:
         fail(f"{path}: no benchmark result in it")
     return data["context"], times
 
 
+THREADED = "_threads_"  # NAME_threads_N: NAME on N threads, costed in wall time against NAME
+
+
+def one_thread(name):
+    """The variant a thread row runs on more threads (itself for the others)."""
+    return name.split(THREADED)[0]
+
+
 def baseline_of(name):
-    """Contact rows (8 targets) are costed against contact_0 (same layout, all open); the rest against frames."""
+    """Thread rows are costed against their variant on 1 thread; contact rows (8 targets) against
+    contact_0 (same layout, all open); the rest against frames."""
+    if THREADED in name:
+        return one_thread(name)
     return "contact_0" if name.startswith("contact_") and name != "contact_0" else BASELINE
 
 
 def summarise(times):
     med = {k: min(x["cpu"] for x in v) for k, v in times.items()}
+    wall = {k: min(x["real"] for x in v) for k, v in times.items()}
     spread = {k: (max(x["cpu"] for x in v) - min(x["cpu"] for x in v)) / med[k] for k, v in times.items()}
     rows = {}
     for (name, size), t in med.items():
         if name.endswith("_kernel"):
             continue
-        kern = med.get((KERNEL.get(name, "frame_kernel"), size))
-        base = med.get((baseline_of(name), size))
+        clock = wall if THREADED in name else med  # the other threads' CPU time is not the caller's
+        t = clock[(name, size)]
+        kern = clock.get((KERNEL.get(one_thread(name), "frame_kernel"), size))
+        base = clock.get((baseline_of(name), size))
         closed = [x["closed"] for x in times[(name, size)] if x["closed"] is not None]
         rows[(name, size)] = {"variant": name, "size": size, "dofs": times[(name, size)][0]["dofs"],
                               "cpu_ns_per_step": t, "ratio_to_kernel": t / kern if kern else None,
                               "vs_baseline": (t / base - 1.0) if base and name not in ("rods", BASELINE) else None,
-                              "spread": spread[(name, size)], "closed_fraction": min(closed) if closed else None}
+                              "spread": spread[(name, size)], "closed_fraction": min(closed) if closed else None,
+                              "threads": max(x["threads"] for x in times[(name, size)]),
+                              "clock": "wall" if THREADED in name else "cpu"}
     return rows
 
 
 ORDER = ("rods", "frames", "consistent_mass", "damping", "corotational", "friction_declared_contact_open",
-         "corotational_declared_target_held", "contact_0", "contact_1", "contact_2", "contact_8", "contact_1_friction")
+         "corotational_declared_target_held", "contact_0", "contact_1", "contact_2", "contact_8", "contact_1_friction",
+         "rods_threads_2", "frames_threads_2", "contact_8_threads_2")
 
 
 def order(rows):
@@ -87,8 +108,9 @@ def order(rows):
 
 def table(rows):
     names, sizes = order(rows)
-    head = "| variant | " + " | ".join(f"{s:g} DOFs: x kernel (change vs baseline)" for s in sizes) + " | steps with the pushed contacts closed |\n"
-    out = head + "|---|" + "---|" * (len(sizes) + 1) + "\n"
+    head = ("| variant | threads | " + " | ".join(f"{s:g} DOFs: x kernel (change vs baseline)" for s in sizes)
+            + " | steps with the pushed contacts closed |\n")
+    out = head + "|---|---:|" + "---|" * (len(sizes) + 1) + "\n"
     for n in names:
         cells = []
         for s in sizes:
@@ -101,7 +123,8 @@ def table(rows):
         closed = [rows[(n, s)]["closed_fraction"] for s in sizes if (n, s) in rows]
         cl = "-" if not n.startswith("contact_") or n == "contact_0" else " / ".join(
             "n/a" if c is None else f"{c:.0%}" for c in closed)
-        out += f"| {n} | " + " | ".join(cells) + f" | {cl} |\n"
+        used = sorted({rows[(n, s)]["threads"] for s in sizes if (n, s) in rows})
+        out += f"| {n} | {'/'.join(map(str, used))} | " + " | ".join(cells) + f" | {cl} |\n"
     return out
 
 
@@ -155,7 +178,8 @@ def main():
         f.write(f"Made by `{cmd}` then `reports/plot_effects_benchmark.py`, beamimpact {version}, "
                 f"load average {load_avg}.\n\n{md}")
     names, sizes = order(rows)
-    trows = [[n] + [("n/a" if (n, s) not in rows or rows[(n, s)]["ratio_to_kernel"] is None else
+    trows = [[n, "/".join(str(t) for t in sorted({rows[(n, s)]["threads"] for s in sizes if (n, s) in rows}))]
+             + [("n/a" if (n, s) not in rows or rows[(n, s)]["ratio_to_kernel"] is None else
                      f"{rows[(n, s)]['ratio_to_kernel']:.2f}" + ("" if rows[(n, s)]["vs_baseline"] is None
                                                                 else f" ({rows[(n, s)]['vs_baseline']:+.0%})"))
                     for s in sizes] for n in names]
@@ -165,9 +189,10 @@ def main():
                             "with one effect on at a time; CPU time per step divided by beamimpact::bench::StepKernel's "
                             "at the same size in the same run (minimum of 3 interleaved repetitions); in brackets the change against the "
                             "baseline: 'frames' (one target, open contact, no other effect), for the contact rows "
-                            "'contact_0' (8 targets, all contacts open).",
+                            "'contact_0' (8 targets, all contacts open); NAME_threads_2: NAME on 2 threads, in "
+                            "wall time against NAME's wall time (negative: faster).",
                    "tables": [{"title": "ratio to the kernel (change vs baseline)",
-                               "columns": ["variant"] + [f"{s:g} DOFs" for s in sizes], "rows": trows}],
+                               "columns": ["variant", "threads"] + [f"{s:g} DOFs" for s in sizes], "rows": trows}],
                    "figures": [{"png": "effects.png", "title": "Cost per step against size, per effect",
                                 "command": cmd + " && /usr/bin/python3 reports/plot_effects_benchmark.py",
                                 "scene": "generated in benchmarks/effects_benchmark.cc (S2's beam, rigid strikers)",

@@ -45,11 +45,50 @@ TEST(Cli, RunWritesHistoryAndSummary) {
   EXPECT_NEAR(j["contacts"][0]["impulse_normal"].get<double>(), 4.0, 0.16);  // exact 4 N s, 4 % mesh error
 }
 
+TEST(Cli, ThreadsUsedAndWhyFewerAreInTheSummary) {
+  // summary.json "threads" is the count used: the default 1 for S1's 66 equations (below the
+  // size where threads pay, written into assumed), 2 when asked on S2 refined (the fused step),
+  // 1 with the reason on S4-45 (corotational: its step is not split).
+  struct Case {
+    std::string args;
+    int used;
+    bool note;
+  };
+  for (const Case& c : {Case{"run " + paper_scene("s1_central"), 1, false},
+                        Case{"run " + paper_scene("s2_transverse") +
+                                 " --threads 2 --set bodies.A.elements=20 --set bodies.B.elements=40 --set "
+                                 "'time.dt=\"auto\"'",
+                             2, false},
+                        Case{"run " + paper_scene("s4_oblique_45") + " --threads 2", 1, true}}) {
+    const fs::path out = fresh_dir("threads");
+    const Result r = run_cli(c.args + " --quiet --out " + out.string());
+    ASSERT_EQ(r.code, 0) << r.output;
+    const auto j = nlohmann::json::parse(std::ifstream(out / "summary.json"));
+    EXPECT_EQ(j["threads"], c.used) << c.args;
+    EXPECT_EQ(j.contains("threads_note"), c.note) << c.args;
+    if (c.args.find("--threads") == std::string::npos)
+      EXPECT_EQ(j["assumed"]["paper.threads"].get<std::string>().rfind("1: the machine's", 0), 0u) << c.args;
+  }
+}
+
 struct Bad {
   const char* what;
   std::string args;
   const char* says;
 };
+
+/// Each case exits 2 with one message saying c.says, and writes no result.
+void expect_refused(const std::vector<Bad>& cases) {
+  for (const Bad& c : cases) {
+    const fs::path out = fresh_dir("bad");
+    const Result r = run_cli(c.args + " --out " + out.string());
+    EXPECT_EQ(r.code, 2) << c.what << ": " << r.output;
+    EXPECT_NE(r.output.find(c.says), std::string::npos) << c.what << ": " << r.output;
+    EXPECT_EQ(r.output.find("error:"), r.output.rfind("error:")) << c.what << ": one message";
+    EXPECT_FALSE(fs::exists(out / "summary.json")) << c.what;
+    EXPECT_FALSE(fs::exists(out / "history.csv")) << c.what;
+  }
+}
 
 TEST(Cli, BadInputExitsTwoWithOneMessageAndNoResult) {
   const std::vector<Bad> cases = {
@@ -74,16 +113,6 @@ TEST(Cli, BadInputExitsTwoWithOneMessageAndNoResult) {
       {"unknown support direction", "run " + bad_scene("fix = [\"y\"]", "fix = [\"across\"]"),
        "key 'bodies[1].supports[1].fix': expected some of \"x\", \"y\", \"theta\", \"axial\", \"normal\""},
       {"bad --set", "run " + paper_scene("s1_central") + " --set nonsense", "--set expects key=value"},
-      {"--threads 0", "run " + paper_scene("s1_central") + " --threads 0",
-       "--threads: expected a whole number of threads 1..1024, got '0'"},
-      {"--threads -2", "run " + paper_scene("s1_central") + " --threads -2",
-       "--threads: expected a whole number"},
-      {"--threads two", "run " + paper_scene("s1_central") + " --threads two",
-       "--threads: expected a whole number of threads 1..1024, got 'two'"},
-      {"--threads 1.5", "run " + paper_scene("s1_central") + " --threads 1.5",
-       "--threads: expected a whole number"},
-      {"paper.threads 0", "run " + paper_scene("s1_central") + " --set paper.threads=0",
-       "key 'paper.threads': expected a whole number of threads 1..1024, got 0"},
       // Non-physical magnitudes (issue 16): each ended in a zero mass or an infinite energy, exit 3.
       {"denormal rho", "run " + paper_scene("s1_central") + " --set bodies[0].rho=5e-324",
        "key 'bodies[0].rho': expected a positive number between 1e-30 and 1e30 (kg/m^3)"},
@@ -121,15 +150,26 @@ TEST(Cli, BadInputExitsTwoWithOneMessageAndNoResult) {
       {"stiff exact", "run " + paper_scene("s1_central") + " --method exact --set bodies[0].E=1e30",
        "key 'time.allow_long_run'"},
   };
-  for (const Bad& c : cases) {
-    const fs::path out = fresh_dir("bad");
-    const Result r = run_cli(c.args + " --out " + out.string());
-    EXPECT_EQ(r.code, 2) << c.what << ": " << r.output;
-    EXPECT_NE(r.output.find(c.says), std::string::npos) << c.what << ": " << r.output;
-    EXPECT_EQ(r.output.find("error:"), r.output.rfind("error:")) << c.what << ": one message";
-    EXPECT_FALSE(fs::exists(out / "summary.json")) << c.what;
-    EXPECT_FALSE(fs::exists(out / "history.csv")) << c.what;
-  }
+  expect_refused(cases);
+}
+
+TEST(Cli, BadThreadsExitTwoNamingTheOption) {
+  expect_refused({
+      {"--threads 0", "run " + paper_scene("s1_central") + " --threads 0",
+       "--threads: expected a whole number of threads 1..1024, got '0'"},
+      {"--threads -2", "run " + paper_scene("s1_central") + " --threads -2",
+       "--threads: expected a whole number"},
+      {"--threads two", "run " + paper_scene("s1_central") + " --threads two",
+       "--threads: expected a whole number of threads 1..1024, got 'two'"},
+      {"--threads 1.5", "run " + paper_scene("s1_central") + " --threads 1.5",
+       "--threads: expected a whole number"},
+      {"verify --threads 0", "verify verification/matrix.toml --threads 0",
+       "--threads: expected a whole number of threads 1..1024, got '0'"},
+      {"sweep --threads x", "sweep " + paper_scene("s1_central") + " --dt 0.01 --threads x",
+       "--threads: expected a whole number of threads 1..1024, got 'x'"},
+      {"paper.threads 0", "run " + paper_scene("s1_central") + " --set paper.threads=0",
+       "key 'paper.threads': expected a whole number of threads 1..1024, got 0"},
+  });
 }
 
 // A roller in global axes under an inclined target runs (legal) with one warning on stderr that

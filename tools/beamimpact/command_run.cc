@@ -87,10 +87,10 @@ void add_command_run(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   sub->add_option("--mesh", args->mesh,
                   "Mesh: an element multiplier (1..64) for the beam methods, or an external method's preset");
-  sub->add_option("--threads", args->threads,
-                  "Threads of the paper integrator's step (1..1024; as --set paper.threads=N); default: the "
-                  "machine's, 1 for small models. The results are the same bits at any count")
-      ->check(threads_validator());
+  add_threads_option(
+      sub, args->threads,
+      "Threads of the paper integrator's step (1..1024; as --set paper.threads=N); default: the "
+      "machine's, 1 for small models. The results are the same bits at any count");
   add_methods_option(sub);
   sub->add_option("--set", args->sets, "Override a scene key, e.g. --set time.dt=0.005 (repeatable)");
   sub->add_flag("--quiet", args->quiet, "Print nothing on success (no progress either)");
@@ -100,6 +100,10 @@ void add_command_run(CLI::App& app) {
       "--fields", args->fields,
       "Also write VTK fields for ParaView: DIR/fields.pvd and DIR/fields/*.vtu (as output.fields = true)");
   sub->callback([args] { simulate(*args); });
+}
+
+void add_threads_option(CLI::App* sub, int& threads, const std::string& help) {
+  sub->add_option("--threads", threads, help)->check(threads_validator());
 }
 
 }  // namespace beamimpact

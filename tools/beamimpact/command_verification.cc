@@ -1,4 +1,5 @@
 #include "command_verification.hpp"
+#include "command_run.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -41,11 +42,13 @@ struct CompareArgs {
 struct VerifyArgs {
   std::string matrix = "verification/matrix.toml", out, tier = "quick", only;
   int jobs = 1;
+  int threads = 0;  // 0: each run's default
   bool fresh = false;
 };
 
 struct SweepArgs {
   SweepOptions o;
+  int threads = 0;  // 0: each run's default
   std::string out;
   std::string scene;
 };
@@ -81,6 +84,7 @@ void verify(const VerifyArgs& a) {
   o.only = a.only;
   o.jobs = a.jobs;
   o.fresh = a.fresh;
+  o.threads = a.threads;
   o.executor = study::distributed_jobs;
   o.quiet = study::World::rank() != 0;
   if (study::World::size() > 1) o.executor_note = fmt::format(", {} MPI ranks", study::World::size());
@@ -110,7 +114,9 @@ void sweep(SweepArgs& a) {
   a.o.out = a.out;
   forward_interruptions();
   a.o.executor = study::distributed_jobs;
-  const auto ran = execute_sweep(a.o, launcher());
+  Launcher l = launcher();
+  l.threads = a.threads;
+  const auto ran = execute_sweep(a.o, l);
   if (!ran) return;  // an MPI worker rank: rank 0 compares and writes the outputs
   const SweepResult& r = *ran;
   std::string dts, meshes;
@@ -204,6 +210,8 @@ void add_verification_commands(CLI::App& app) {
   v->add_flag("--fresh", va->fresh,
               "Run everything again (default: the runs an interrupted verify finished in OUT/runs, with the "
               "same version, scene and settings, are taken as they are)");
+  add_threads_option(v, va->threads,
+                     "Threads of each run of the paper integrator (as run --threads; default: each run's)");
   add_methods_option(v);
   v->callback([va] { verify(*va); });
 
@@ -224,6 +232,8 @@ void add_verification_commands(CLI::App& app) {
       ->capture_default_str();
   s->add_option("--out", sa->out, "Output directory (runs/, sweep.md, sweep.csv, sweep.json)")->required();
   s->add_option("--jobs", sa->o.jobs, "Runs in parallel")->capture_default_str();
+  add_threads_option(s, sa->threads,
+                     "Threads of each run of the paper integrator (as run --threads; default: each run's)");
   add_methods_option(s);
   s->callback([sa] { sweep(*sa); });
 }

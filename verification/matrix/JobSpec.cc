@@ -63,6 +63,7 @@ std::vector<std::string> Launcher::argv(const JobSpec& spec, const std::filesyst
   for (const auto& f : methods_files) a.insert(a.end(), {"--methods", f.string()});
   if (spec.dt) a.insert(a.end(), {"--dt", fmt::format("{:.17g}", *spec.dt)});
   if (!spec.mesh.empty()) a.insert(a.end(), {"--mesh", spec.mesh});
+  if (threads > 0 && m.in_process()) a.insert(a.end(), {"--threads", std::to_string(threads)});
   for (const auto& s : spec.set) a.insert(a.end(), {"--set", s});
   a.insert(a.end(), spec.args.begin(), spec.args.end());
   return a;

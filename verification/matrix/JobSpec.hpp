@@ -38,6 +38,9 @@ struct Launcher {
   /// @brief Take a run recorded as finished in its directory with the same input instead of
   /// running it again (finished_runs.hpp: resuming an interrupted verify).
   bool reuse_finished = false;
+  /// @brief Passed on as --threads N to the runs of in-process methods (0: not passed, each run
+  /// takes its default).
+  int threads = 0;
 
   /// @brief Reason the spec cannot run here ("" when it can): a method not in the registry, or
   /// an external program's check failing (api/registry.hpp unavailable()).

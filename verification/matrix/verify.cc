@@ -76,6 +76,7 @@ std::optional<VerifyResult> verify(const VerifyOptions& o, const std::filesystem
   launcher.exe = exe;
   launcher.methods_files = loaded_methods_files();  // each run sees the same registry
   launcher.reuse_finished = !o.fresh;
+  launcher.threads = o.threads;
   std::filesystem::create_directories(o.out);
   if (!o.quiet) {
     fmt::print(stderr,
@@ -95,11 +96,12 @@ std::optional<VerifyResult> verify(const VerifyOptions& o, const std::filesystem
   for (const auto* v : s.ladders) r.items.push_back(evaluate_ladder(*v, *ran));
   for (const auto* c : s.checks) r.items.push_back(evaluate_check(*c, *ran));
   ReportContext& ctx = r.context;
-  ctx.command = !o.command.empty() ? o.command
-                                   : fmt::format("beamimpact verify {} --tier {} --out {} --jobs {}{}{}",
-                                                 o.matrix.string(), o.tier, o.out.string(), o.jobs,
-                                                 o.only.empty() ? "" : " --only '" + o.only + "'",
-                                                 o.fresh ? " --fresh" : "");
+  ctx.command = !o.command.empty()
+                    ? o.command
+                    : fmt::format("beamimpact verify {} --tier {} --out {} --jobs {}{}{}{}",
+                                  o.matrix.string(), o.tier, o.out.string(), o.jobs,
+                                  o.only.empty() ? "" : " --only '" + o.only + "'", o.fresh ? " --fresh" : "",
+                                  o.threads > 0 ? fmt::format(" --threads {}", o.threads) : "");
   ctx.matrix = o.matrix.string();
   ctx.tier = o.tier;
   ctx.version = kVersion;

@@ -22,6 +22,7 @@ struct VerifyOptions {
   std::string tier = "quick";  ///< VerificationMatrix::tier_names()
   std::string only;            ///< only items whose name contains this text ("" all)
   int jobs = 1;                ///< runs in parallel (>= 1)
+  int threads = 0;             ///< --threads of every in-process run (0: each run's default)
   std::string command;         ///< the command line written into the reports ("" made from these options)
   JobExecutor executor;        ///< where the runs go (empty: execute_jobs, threads of this process)
   std::string executor_note;   ///< appended to the plan line on stderr (", 2 MPI ranks")

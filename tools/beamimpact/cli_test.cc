@@ -66,8 +66,9 @@ TEST(Cli, ThreadsUsedAndWhyFewerAreInTheSummary) {
     const auto j = nlohmann::json::parse(std::ifstream(out / "summary.json"));
     EXPECT_EQ(j["threads"], c.used) << c.args;
     EXPECT_EQ(j.contains("threads_note"), c.note) << c.args;
-    if (c.args.find("--threads") == std::string::npos)
+    if (c.args.find("--threads") == std::string::npos) {
       EXPECT_EQ(j["assumed"]["paper.threads"].get<std::string>().rfind("1: the machine's", 0), 0u) << c.args;
+    }
   }
 }
 

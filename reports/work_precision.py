@@ -402,7 +402,7 @@ def replot(a):
         res["equal_error"] = equal_error(res["points"], res.get("not_run"))
         wp_figures.write_json_atomic(js, res)
         wp_figures.plot(res, os.path.join(a.out, s, "work_precision.png"))
-    wp_figures.write_manifest(a.out, res["version"])
+    wp_figures.write_manifest(a.out)
 
 
 def parse_args():
@@ -455,7 +455,7 @@ def main():
         wp_figures.plot(res, os.path.join(d, "work_precision.png"))
         for e in res["equal_error"]:
             print(f"[work-precision] {pl.name}: {e['text']}", file=sys.stderr)
-    wp_figures.write_manifest(a.out, version)
+    wp_figures.write_manifest(a.out)
 
 
 if __name__ == "__main__":

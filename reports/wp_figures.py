@@ -80,7 +80,7 @@ def plot(res, png):
     plt.close(fig)
 
 
-def write_manifest(out, version):
+def write_manifest(out):
     figs, rows, starts, once = [], [], [], {}
     for name in sorted(os.listdir(out)):
         js = os.path.join(out, name, "work_precision.json")
@@ -107,8 +107,10 @@ def write_manifest(out, version):
         "figures": figs})
     tmp = os.path.join(out, "equal_error.md.tmp")
     with open(tmp, "w") as f:
+        versions = ", ".join(sorted({fg["version"] for fg in figs}))
         f.write("# CPU time at equal impulse error\n\nMade by `reports/work_precision.py` (beamimpact "
-                f"{version}); per-set commands in each work_precision.json.\n\n| set | finding |\n|---|---|\n")
+                f"{versions}: each set's version and command in its work_precision.json)."
+                "\n\n| set | finding |\n|---|---|\n")
         f.writelines(f"| {r[0]} | {r[1]} |\n" for r in rows)
         f.write("\n## Start-up per method (measured apart, not subtracted)\n\n| set | start-up |\n|---|---|\n")
         f.writelines(f"| {r[0]} | {r[1]} |\n" for r in [["every set", s] for s in once.values()] + starts)

@@ -8,6 +8,7 @@
 #include <api/accepts.hpp>
 #include <api/external_method.hpp>
 #include <api/registry.hpp>
+#include <solver/integrator/ExplicitContactIntegrator.hpp>
 #include <solver/record/FieldWriter.hpp>
 #include <solver/record/output_files.hpp>
 #include <solver/scene/SceneError.hpp>
@@ -65,11 +66,12 @@ SimulationResult run_method(const Scene& scene, const Method& m,
   return r;
 }
 
-/// Refuses a thread count below 1, naming --threads.
+/// Refuses a thread count outside 1..kMaxThreads, naming --threads.
 void check_threads(const std::optional<int>& threads, const std::string& file) {
-  if (threads && *threads < 1)
-    throw SceneError(file, "--threads",
-                     fmt::format("expected a whole number of threads >= 1, got {}", *threads));
+  if (threads && !paper::valid_thread_count(*threads))
+    throw SceneError(
+        file, "--threads",
+        fmt::format("expected a whole number of threads 1..{}, got {}", paper::kMaxThreads, *threads));
 }
 
 /// The scene with [paper] threads set (its other [paper] keys kept).

@@ -30,6 +30,14 @@ namespace beamimpact::paper {
 /// 2 threads is not faster than at 1; measured in docs/threads.md).
 inline constexpr int kThreadsMinDofs = 20000;
 
+/// @brief The largest thread count a run takes.
+inline constexpr int kMaxThreads = 1024;
+
+/// @brief Whether n is a thread count a run takes (1..kMaxThreads): the one rule behind
+/// `[paper] threads`, `--threads` and RunOptions::threads.
+/// @param n the count asked for
+inline bool valid_thread_count(long n) { return n >= 1 && n <= kMaxThreads; }
+
 /// @brief The thread count a run takes unless told: std::thread::hardware_concurrency() (1 when
 /// unknown), and 1 for a model of fewer than kThreadsMinDofs equations.
 /// @param dofs the model's equations

@@ -266,9 +266,9 @@ Options Options::read(const Scene& scene, std::map<std::string, std::string>* as
                        ? ClosureSlip::kWholeStep
                        : ClosureSlip::kFromClosure;
   if (in.has("threads")) {  // else the default, written once the model's size is known
-    const long t = in.integer("threads", "a whole number of threads 1..1024");
-    if (t < 1 || t > 1024)
-      in.fail("threads", fmt::format("expected a whole number of threads 1..1024, got {}", t));
+    const long t = in.integer("threads", fmt::format("a whole number of threads 1..{}", kMaxThreads));
+    if (!valid_thread_count(t))
+      in.fail("threads", fmt::format("expected a whole number of threads 1..{}, got {}", kMaxThreads, t));
     o.threads = static_cast<int>(t);
   }
   in.finish();

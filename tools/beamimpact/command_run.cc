@@ -8,6 +8,7 @@
 
 #include <api/registry.hpp>
 #include <api/run.hpp>
+#include <solver/integrator/ExplicitContactIntegrator.hpp>
 #include <solver/record/FieldWriter.hpp>
 #include <solver/util/Progress.hpp>
 
@@ -64,11 +65,11 @@ CLI::Validator threads_validator() {
       [](std::string& v) -> std::string {
         char* end = nullptr;
         const long n = std::strtol(v.c_str(), &end, 10);
-        if (v.empty() || *end != '\0' || n < 1 || n > 1024)
-          return "expected a whole number of threads 1..1024, got '" + v + "'";
+        if (v.empty() || *end != '\0' || !paper::valid_thread_count(n))
+          return fmt::format("expected a whole number of threads 1..{}, got '{}'", paper::kMaxThreads, v);
         return {};
       },
-      "1..1024");
+      fmt::format("1..{}", paper::kMaxThreads));
 }
 
 }  // namespace

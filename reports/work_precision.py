@@ -148,32 +148,40 @@ def sized_plan(name, mult, quick):
     # The paper's cost grows like mult^2 (steps and DOFs both grow with the mesh): S1 x5000
     # (1e5 DOFs) is about 70 s of CPU at 0.9 of the critical step, so that size gets that rung only
     # (its error is already far below the levels of the equal-error table).
-    fractions = (0.9,) if mult >= 1000 else (0.9, 0.5, 0.25)[: 2 if quick else 3]
+    # S2 x222 (1e4 DOFs) about 340 s: the bending limit falls like h^2, so S2's steps grow like
+    # mult^2 and its cost like mult^3.
+    one_rung = mult >= 1000 or (name.startswith("s2") and mult > 100)
+    fractions = (0.9,) if one_rung else (0.9, 0.5, 0.25)[: 2 if quick else 3]
     rungs = [Rung("paper (dt ladder)", f"fraction {f}", "paper", dict(base, **{"time.dt": "auto", "time.fraction": f}))
              for f in fractions]
     not_run = {}
-    # IDA at these sizes takes 10-30 s a run at x100 (S1 x100 at rtol 1e-6: 48,000 steps, 25 s) and
-    # grows like mult^2: two rungs at x100, one rung timed once up to x500, none beyond.
-    if mult <= 100:
+    # IDA at these sizes takes 10-50 s a run at x100 (S1 x100 at rtol 1e-6: 48,000 steps, 25 s; S2
+    # x22 at rtol 1e-4: 46 s) and grows like mult^2: two rungs at x100, one up to x500 (S1), none
+    # beyond. Every rung is timed MIN_REPEATS times at least, however long.
+    ida_base = (11, 100) if name.startswith("s1") else (46, 22)  # (CPU s at rtol 1e-4, at multiplier)
+    ida_hours = ida_base[0] * (mult / ida_base[1]) ** 2 / 3600
+    if mult <= 100 and ida_hours < 0.5:
         rungs += [Rung("IDA (rtol ladder)", f"rtol {r:g}", "ida", dict(base, **{"ida.rtol": r}))
                   for r in (1e-4, 1e-6)[: 1 if quick else 2]]
-    elif mult <= 500:
-        rungs.append(Rung("IDA (rtol ladder)", "rtol 0.0001, 1 timing", "ida", dict(base, **{"ida.rtol": 1e-4}),
-                          repeats=1))
+    elif ida_hours < 0.5:
+        rungs.append(Rung("IDA (rtol ladder)", "rtol 0.0001", "ida", dict(base, **{"ida.rtol": 1e-4})))
     else:
-        not_run["IDA"] = (f"not run: at x100 a run at rtol 1e-4 takes about 11 s of CPU and the cost grows "
-                          f"like the square of the mesh, so about {11 * (mult / 100) ** 2 / 3600:.0f} h here")
+        not_run["IDA"] = (f"not run: at x{ida_base[1]} a run at rtol 1e-4 takes about {ida_base[0]} s of CPU and "
+                          f"the cost grows like the square of the mesh, so about {ida_hours:.1f} h a run here")
     # Moreau-Jean is implicit (stable above the explicit limit) and costs ~50 ms a step at 2000 DOFs
-    # in this adapter (dense per-body matrices): one rung at 10x the scene's step per element, timed
-    # once (a run of minutes), at x100 only.
+    # in this adapter (dense per-body matrices): one rung at 10x the scene's step per element, up to
+    # a run of minutes. Its steps grow like mult and a step's dense work like mult^2 at least.
     k = mult / 10
-    if mult <= 100:
-        rungs.append(Rung("Siconos", f"dt {dt / k:g}, 1 timing", "siconos", base, ["--dt", repr(dt / k)], repeats=1))
+    sic_base = (152, 100) if name.startswith("s1") else (6.8, 22)  # (CPU s of the rung, at multiplier)
+    sic_hours = sic_base[0] * (mult / sic_base[1]) ** 3 / 3600
+    if sic_hours < 0.5:
+        rungs.append(Rung("Siconos", f"dt {dt / k:g}", "siconos", base, ["--dt", repr(dt / k)]))
     else:
         eqs = 3 * (max(elements.values()) * mult + 1)  # the exported frame model: 3 equations a node
-        not_run["Siconos"] = ("not run: its Python interface takes dense per-body matrices (at x100, 3003 "
-                              f"equations a body, about 50 ms a step); at x{mult} ({eqs} equations) one "
-                              f"body's dense mass matrix alone is {8 * eqs ** 2 / 1e9:.1f} GB")
+        not_run["Siconos"] = (f"not run: its Python interface takes dense per-body matrices; at x{sic_base[1]} "
+                              f"a run took {sic_base[0]} s of CPU, and the steps grow like the mesh and a "
+                              f"step's dense work like its square at least, so about {sic_hours:.0f} h a run "
+                              f"at x{mult} ({eqs} equations a body, {8 * eqs ** 2 / 1e9:.1f} GB a dense matrix)")
     if name.startswith("s2"):
         rungs += [Rung("exact (modes)", f"{n} modes", "exact", {"exact.modes": n}) for n in (16, 32)[: 1 if quick else 2]]
     note = "exact (references/exact: " + ("d'Alembert rods" if name.startswith("s1") else "rod on beam, converged modes") + ")"
@@ -373,10 +381,9 @@ def equal_error(points, not_run=None):
 
 
 # Element multipliers of the sized sets: S1 x100, x500, x5000 = 1000, 5000, 50000 elements per body
-# (2002, 10002, 100002 DOFs: axial rods); S2 x22 = 110 + 220 frame elements (993 DOFs). S2 at 1e4
-# DOFs (x222) steps at 8.1e-7 s (the bending limit falls like h^2): 3.7e6 steps, 338 s CPU for one
-# paper run, beyond a regeneration of minutes.
-SIZES = {"s1_central": (100, 500, 5000), "s2_transverse": (22,)}
+# (2002, 10002, 100002 DOFs: axial rods); S2 x22, x222 = 110 + 220 and 1110 + 2220 frame elements
+# (993 and 9993 DOFs). S2 x222 steps at 8.1e-7 s (the bending limit falls like h^2): 3.7e6 steps.
+SIZES = {"s1_central": (100, 500, 5000), "s2_transverse": (22, 222)}
 
 
 def sized_list(text):

@@ -20,7 +20,10 @@ import subprocess
 import sys
 import tomllib
 
+from report_files import save_figure_atomic, write_json_atomic
+
 import matplotlib
+
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -90,7 +93,7 @@ def scene_figure(name, ref, runs, png):
     a1.grid(alpha=0.3)
     a2.grid(alpha=0.3)
     fig.tight_layout()
-    fig.savefig(png, dpi=100)
+    save_figure_atomic(fig, png, dpi=100)
     plt.close(fig)
 
 
@@ -142,11 +145,7 @@ def main(argv):
                 "tables": [{"title": "Sequence norms against exact", "columns": ["scene", "method"] + list(NORMS),
                             "rows": rows}],
                 "figures": figures}
-    tmp = os.path.join(args.out, "figures.json.tmp")
-    with open(tmp, "w") as f:
-        json.dump(manifest, f, indent=1)
-        f.write("\n")
-    os.replace(tmp, os.path.join(args.out, "figures.json"))
+    write_json_atomic(os.path.join(args.out, "figures.json"), manifest)
     print(f"classical_benchmarks: wrote {args.out}/figures.json")
 
 

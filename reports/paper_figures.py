@@ -20,7 +20,10 @@ import sys
 import textwrap
 import time
 
+from report_files import save_figure_atomic, write_json_atomic, write_text_atomic
+
 import matplotlib
+
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -120,7 +123,7 @@ class Figures:
         foot += textwrap.wrap("not shown: " + "; ".join(missing), 150) if missing else []
         fig.text(0.01, 0.005, "\n".join(foot), fontsize=5.5, family="monospace", va="bottom")
         png = f"fig{num:02d}.png"
-        fig.savefig(os.path.join(self.a.out, png), dpi=100)
+        save_figure_atomic(fig, os.path.join(self.a.out, png), dpi=100)
         plt.close(fig)
         self.manifest.append({"png": png, "title": f"Figure {num}: {title}", "command": cmd,
                               "scene": ", ".join(f"{PAPER}/{s}.toml" for s in scenes), "version": self.version,
@@ -246,22 +249,21 @@ def main():
     all_figures(F)
     cl = claims(runs)
     cmd = "/usr/bin/python3 reports/paper_figures.py"
-    with open(os.path.join(a.out, "claims.json"), "w") as f:
-        json.dump({"command": cmd, "version": version, "claims": cl}, f, indent=1)
+    write_json_atomic(os.path.join(a.out, "claims.json"), {"command": cmd, "version": version, "claims": cl})
     rows = [[c["figure"], c["claim"], "; ".join(f"{m}: {v}" for m, v in c["measured"].items()),
              "yes" if c["holds"] else "NO"] for c in cl]
-    with open(os.path.join(a.out, "claims.md"), "w") as f:
-        f.write(f"# The paper's claims against what the suite measures\n\nMade by `{cmd}`, beamimpact {version}; "
-                "runs at the paper's settings (scenes in verification/scenes/paper/). 'holds' judges the paper "
-                "integrator's run.\n\n| figure | paper's claim | measured | holds (paper integrator) |\n|---|---|---|---|\n")
-        f.writelines("| " + " | ".join(r) + " |\n" for r in rows)
-    with open(os.path.join(a.out, "figures.json"), "w") as f:
-        json.dump({"title": "The paper's Figures 6-14 and its claims",
-                   "about": "Pu & Chi 2011, Figures 6-14: the paper integrator at the paper's settings with the "
-                            "references that accept each scene overlaid.",
-                   "tables": [{"title": "claims", "columns": ["figure", "paper's claim", "measured",
-                                                              "holds (paper integrator)"], "rows": rows}],
-                   "figures": F.manifest}, f, indent=1)
+    write_text_atomic(os.path.join(a.out, "claims.md"),
+                      f"# The paper's claims against what the suite measures\n\nMade by `{cmd}`, beamimpact {version}; "
+                      "runs at the paper's settings (scenes in verification/scenes/paper/). 'holds' judges the paper "
+                      "integrator's run.\n\n| figure | paper's claim | measured | holds (paper integrator) |\n|---|---|---|---|\n"
+                      + "".join("| " + " | ".join(r) + " |\n" for r in rows))
+    write_json_atomic(os.path.join(a.out, "figures.json"), {
+        "title": "The paper's Figures 6-14 and its claims",
+        "about": "Pu & Chi 2011, Figures 6-14: the paper integrator at the paper's settings with the "
+                 "references that accept each scene overlaid.",
+        "tables": [{"title": "claims", "columns": ["figure", "paper's claim", "measured",
+                                                   "holds (paper integrator)"], "rows": rows}],
+        "figures": F.manifest})
     print(open(os.path.join(a.out, "claims.md")).read())
 
 

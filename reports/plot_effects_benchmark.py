@@ -19,7 +19,10 @@ import subprocess
 import sys
 import textwrap
 
+from report_files import save_figure_atomic, write_json_atomic, write_text_atomic
+
 import matplotlib
+
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -146,7 +149,7 @@ def plot(rows, png, footer):
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.text(0.01, 0.01, footer, fontsize=6.5, family="monospace", va="bottom")
-    fig.savefig(png, dpi=100)
+    save_figure_atomic(fig, png, dpi=100)
     plt.close(fig)
 
 
@@ -174,17 +177,16 @@ def main():
               f"min of repetitions, bars: half the spread")
     plot(rows, os.path.join(a.out, "effects.png"), footer)
     md = table(rows)
-    with open(os.path.join(a.out, "effects_table.md"), "w") as f:
-        f.write(f"Made by `{cmd}` then `reports/plot_effects_benchmark.py`, beamimpact {version}, "
-                f"load average {load_avg}.\n\n{md}")
+    write_text_atomic(os.path.join(a.out, "effects_table.md"),
+                      f"Made by `{cmd}` then `reports/plot_effects_benchmark.py`, beamimpact {version}, "
+                      f"load average {load_avg}.\n\n{md}")
     names, sizes = order(rows)
     trows = [[n, "/".join(str(t) for t in sorted({rows[(n, s)]["threads"] for s in sizes if (n, s) in rows}))]
              + [("n/a" if (n, s) not in rows or rows[(n, s)]["ratio_to_kernel"] is None else
                      f"{rows[(n, s)]['ratio_to_kernel']:.2f}" + ("" if rows[(n, s)]["vs_baseline"] is None
                                                                 else f" ({rows[(n, s)]['vs_baseline']:+.0%})"))
                     for s in sizes] for n in names]
-    with open(os.path.join(a.out, "figures.json"), "w") as f:
-        json.dump({"title": "Per-effect benchmarks (cost per step, ratio to the hand-written kernel)",
+    write_json_atomic(os.path.join(a.out, "figures.json"), {"title": "Per-effect benchmarks (cost per step, ratio to the hand-written kernel)",
                    "about": "benchmarks/effects_benchmark.cc: the paper integrator on a 10 m target of n elements "
                             "with one effect on at a time; CPU time per step divided by beamimpact::bench::StepKernel's "
                             "at the same size in the same run (minimum of 3 interleaved repetitions); in brackets the change against the "
@@ -196,8 +198,7 @@ def main():
                    "figures": [{"png": "effects.png", "title": "Cost per step against size, per effect",
                                 "command": cmd + " && /usr/bin/python3 reports/plot_effects_benchmark.py",
                                 "scene": "generated in benchmarks/effects_benchmark.cc (S2's beam, rigid strikers)",
-                                "version": version, "caption": "Ratios within one run; the machine was shared."}]},
-                  f, indent=1)
+                                "version": version, "caption": "Ratios within one run; the machine was shared."}]})
     print(md)
 
 

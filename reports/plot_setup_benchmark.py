@@ -9,12 +9,14 @@ Usage: plot_setup_benchmark.py [--run] [--table reports/setup/setup_benchmark.md
 --run  first runs build/benchmarks/setup_benchmark 1e6 (about 1.5 min) into --table.
 """
 import argparse
-import json
 import os
 import subprocess
 import sys
 
+from report_files import save_figure_atomic, write_json_atomic, write_text_atomic
+
 import matplotlib
+
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -33,10 +35,8 @@ def run_benchmark(build, table):
         fail(f"{exe} not found: build it with `cmake --build {build} --target setup_benchmark`")
     load = os.getloadavg()
     out = subprocess.run([exe, "1e6"], capture_output=True, text=True, check=True).stdout
-    with open(table, "w") as f:
-        f.write(out)
-        f.write(f"\nload average before: {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}; "
-                f"after: {' '.join(f'{x:.2f}' for x in os.getloadavg())}\n")
+    write_text_atomic(table, out + f"\nload average before: {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}; "
+                      f"after: {' '.join(f'{x:.2f}' for x in os.getloadavg())}\n")
 
 
 def read_table(table):
@@ -69,7 +69,7 @@ def plot(rows, png):
     ax.set_ylabel("set-up before the first step (steps of the same run)")
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(png, dpi=110)
+    save_figure_atomic(fig, png, dpi=110)
 
 
 def main():
@@ -101,8 +101,7 @@ def main():
                      "version": version,
                      "caption": "Ratios within one run; the machine was shared (load average in the text)."}],
     }
-    with open(os.path.join(a.out, "figures.json"), "w") as f:
-        json.dump(manifest, f, indent=1)
+    write_json_atomic(os.path.join(a.out, "figures.json"), manifest)
 
 
 if __name__ == "__main__":

@@ -12,6 +12,8 @@ import os
 import sys
 import textwrap
 
+from report_files import save_figure_atomic
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -58,7 +60,7 @@ def plot(args):
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=8)
         footer(fig, args, meta)
-        fig.savefig(os.path.join(args.dir, f"{kind}.png"), dpi=110)
+        save_figure_atomic(fig, os.path.join(args.dir, f"{kind}.png"), dpi=110)
         plt.close(fig)
 
 

@@ -17,7 +17,10 @@ import json
 import os
 import sys
 
+from report_files import save_figure_atomic, write_text_atomic
+
 import matplotlib
+
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -75,7 +78,7 @@ def figure(name, wp, marks, out_png):
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=6, loc="center left", bbox_to_anchor=(1.01, 0.5))
     fig.tight_layout()
-    fig.savefig(out_png, dpi=110)
+    save_figure_atomic(fig, out_png, dpi=110)
     plt.close(fig)
     return (f"Curves: {wp['command']} (version {wp['version']}); markers: the scored runs "
             f"(impulse error against the scorecard's reference: {'; '.join(said)}).")
@@ -111,10 +114,7 @@ def main(argv):
         blocks.append((png, figure(scene["scene"], wp, [(card["method"], scene)], png)))
     with open(html_path) as f:
         html = embed(f.read(), blocks)
-    tmp = html_path + ".tmp"
-    with open(tmp, "w") as f:
-        f.write(html)
-    os.replace(tmp, html_path)
+    write_text_atomic(html_path, html)
     print(f"scorecard_figures: {len(blocks)} diagram(s) added to {html_path}")
 
 

@@ -14,6 +14,9 @@ import os
 import shutil
 import sys
 
+from report_files import write_json_atomic, write_text_atomic
+
+
 from scorecard_figures import figure
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -117,11 +120,8 @@ def write_set(out, dirs, cards, text):
                 "tables": [{"title": "Verdicts per method", "columns": cols1, "rows": rows1},
                            {"title": "Relative impulse error (verdict)", "columns": cols2, "rows": rows2}],
                 "figures": figures}
-    for name, content in (("figures.json", json.dumps(manifest, indent=1) + "\n"), ("scorecards.md", HEADER + text)):
-        tmp = os.path.join(out, name + ".tmp")
-        with open(tmp, "w") as f:
-            f.write(content)
-        os.replace(tmp, os.path.join(out, name))
+    write_json_atomic(os.path.join(out, "figures.json"), manifest)
+    write_text_atomic(os.path.join(out, "scorecards.md"), HEADER + text)
 
 
 def provenance(cards):

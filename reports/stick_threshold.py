@@ -28,6 +28,8 @@ import sys
 import tempfile
 import tomllib
 
+from report_files import save_figure_atomic, write_json_atomic, write_text_atomic
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -108,7 +110,7 @@ def main():
                       f"from_closure {point['from_closure']:.4g} (cot {entry['cot_alpha0']:.4g})", flush=True)
                 entry["points"].append(point)
             result["angles"].append(entry)
-    json.dump(result, open(os.path.join(a.out, "stick_threshold.json"), "w"), indent=1)
+    write_json_atomic(os.path.join(a.out, "stick_threshold.json"), result)
 
     fig, axes = plt.subplots(1, len(result["angles"]), figsize=(5.5 * len(result["angles"]), 4.2), squeeze=False)
     md = ["# Discrete stick threshold of the closure step against the closure phase", "",
@@ -138,8 +140,8 @@ def main():
                f"{max(c):.4g}.", ""]
     fig.text(0.01, 0.01, f"{command} | beamimpact {version}", fontsize=7)
     fig.tight_layout(rect=(0, 0.04, 1, 1))
-    fig.savefig(os.path.join(a.out, "stick_threshold.png"), dpi=110)
-    open(os.path.join(a.out, "stick_threshold.md"), "w").write("\n".join(md) + "\n")
+    save_figure_atomic(fig, os.path.join(a.out, "stick_threshold.png"), dpi=110)
+    write_text_atomic(os.path.join(a.out, "stick_threshold.md"), "\n".join(md) + "\n")
     print(f"wrote {a.out}/stick_threshold.{{json,png,md}}")
 
 

@@ -20,6 +20,8 @@ import os
 import subprocess
 import sys
 
+from report_files import write_json_atomic, write_text_atomic
+
 SCENE = "verification/scenes/extra/s2_stocky.toml"
 FENICSX = ["/usr/bin/python3", "references/fenicsx/run.py"]
 THEORIES = {
@@ -103,12 +105,8 @@ def main():
     data = measure(exe, a.runs)
     diff = differences(data)
     os.makedirs(a.out, exist_ok=True)
-    for name, text in (("stocky_s2.json", json.dumps({"runs": data, "against_fenicsx": diff}, indent=1)),
-                       ("stocky_s2.md", table(data, diff))):
-        tmp = os.path.join(a.out, name + ".partial")
-        with open(tmp, "w") as f:
-            f.write(text)
-        os.replace(tmp, os.path.join(a.out, name))
+    write_json_atomic(os.path.join(a.out, "stocky_s2.json"), {"runs": data, "against_fenicsx": diff})
+    write_text_atomic(os.path.join(a.out, "stocky_s2.md"), table(data, diff))
     print(table(data, diff))
     return 0
 

@@ -17,6 +17,8 @@ import os
 import sys
 import textwrap
 
+from report_files import save_figure_atomic
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -106,7 +108,7 @@ def draw(meta, args, kind):
                      f"{meta['energy_growth_bound']:g} E0); x: ok but {rules}", fontsize=10)
     footer(fig, args, meta)
     out = f"{args.out}_{kind}.png"
-    fig.savefig(out, dpi=110)
+    save_figure_atomic(fig, out, dpi=110)
     plt.close(fig)
     print(f"wrote {out}")
 

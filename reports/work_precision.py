@@ -34,6 +34,7 @@ import tomllib
 
 import wp_figures
 import wp_timing
+from report_files import write_json_atomic
 from wp_figures import ERRORS
 
 bi = None  # the beamimpact module of --build, imported in main()
@@ -407,7 +408,7 @@ def replot(a):
         with open(js) as f:
             res = json.load(f)
         res["equal_error"] = equal_error(res["points"], res.get("not_run"))
-        wp_figures.write_json_atomic(js, res)
+        write_json_atomic(js, res)
         wp_figures.plot(res, os.path.join(a.out, s, "work_precision.png"))
     wp_figures.write_manifest(a.out)
 
@@ -458,7 +459,7 @@ def main():
         res = measure_scene(a, pl, progress, version, startup)
         d = os.path.join(a.out, pl.name)
         os.makedirs(d, exist_ok=True)
-        wp_figures.write_json_atomic(os.path.join(d, "work_precision.json"), res)
+        write_json_atomic(os.path.join(d, "work_precision.json"), res)
         wp_figures.plot(res, os.path.join(d, "work_precision.png"))
         for e in res["equal_error"]:
             print(f"[work-precision] {pl.name}: {e['text']}", file=sys.stderr)

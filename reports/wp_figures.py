@@ -7,6 +7,8 @@ import json
 import os
 import textwrap
 
+from report_files import save_figure_atomic, write_json_atomic, write_text_atomic
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -14,13 +16,6 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 ERRORS = ("impulse", "ub.rel_l2")  # norm names owned by verification/compare (compare_runs.cc)
 ERROR_LABEL = {"impulse": "relative impulse error", "ub.rel_l2": "rel. L2 error of the struck point's displacement"}
-
-
-def write_json_atomic(path, obj):
-    tmp = path + ".tmp"
-    with open(tmp, "w") as f:
-        json.dump(obj, f, indent=1)
-    os.replace(tmp, path)
 
 
 def startup_text(res, per_set=None):
@@ -76,7 +71,7 @@ def plot(res, png):
         f"timings per point: {res['repeats']} | load average during timing {min(loads):.1f}-{max(loads):.1f}", 150)
     foot += textwrap.wrap("start-up (not subtracted): " + "; ".join(startup_text(res)), 150)
     fig.text(0.01, 0.01, "\n".join(foot), fontsize=6.5, family="monospace", va="bottom")
-    fig.savefig(png, dpi=100)
+    save_figure_atomic(fig, png, dpi=100)
     plt.close(fig)
 
 
@@ -105,13 +100,11 @@ def write_manifest(out):
                    {"title": "Start-up per method (measured apart, not subtracted)", "columns": ["set", "start-up"],
                     "rows": [["every set", s] for s in once.values()] + starts}],
         "figures": figs})
-    tmp = os.path.join(out, "equal_error.md.tmp")
-    with open(tmp, "w") as f:
-        versions = ", ".join(sorted({fg["version"] for fg in figs}))
-        f.write("# CPU time at equal impulse error\n\nMade by `reports/work_precision.py` (beamimpact "
-                f"{versions}: each set's version and command in its work_precision.json)."
-                "\n\n| set | finding |\n|---|---|\n")
-        f.writelines(f"| {r[0]} | {r[1]} |\n" for r in rows)
-        f.write("\n## Start-up per method (measured apart, not subtracted)\n\n| set | start-up |\n|---|---|\n")
-        f.writelines(f"| {r[0]} | {r[1]} |\n" for r in [["every set", s] for s in once.values()] + starts)
-    os.replace(tmp, os.path.join(out, "equal_error.md"))
+    versions = ", ".join(sorted({fg["version"] for fg in figs}))
+    write_text_atomic(os.path.join(out, "equal_error.md"), "".join(
+        ["# CPU time at equal impulse error\n\nMade by `reports/work_precision.py` (beamimpact "
+         f"{versions}: each set's version and command in its work_precision.json)."
+         "\n\n| set | finding |\n|---|---|\n"]
+        + [f"| {r[0]} | {r[1]} |\n" for r in rows]
+        + ["\n## Start-up per method (measured apart, not subtracted)\n\n| set | start-up |\n|---|---|\n"]
+        + [f"| {r[0]} | {r[1]} |\n" for r in [["every set", s] for s in once.values()] + starts]))

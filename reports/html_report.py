@@ -22,6 +22,8 @@ import json
 import os
 import sys
 
+from report_files import write_text_atomic
+
 # Each committed set, in report order, with the command that regenerates it.
 FIGURE_SETS = {
     "work_precision": "/usr/bin/python3 reports/work_precision.py",
@@ -29,6 +31,7 @@ FIGURE_SETS = {
     "scorecards": "build/beamimpact score NAME --out /tmp/scores/NAME for each method; "
                   "/usr/bin/python3 reports/scorecard_table.py /tmp/scores/* --set reports/scorecards",
     "classical_benchmarks": "/usr/bin/python3 reports/classical_benchmarks.py",
+    "beam_theories": "/usr/bin/python3 reports/beam_theories.py",
     "benchmarks": "/usr/bin/python3 reports/plot_effects_benchmark.py --run",
     "setup": "/usr/bin/python3 reports/plot_setup_benchmark.py --run",
     "figures": "build/beamimpact study verification/studies/s4_angle_friction.toml --out DIR; "
@@ -278,11 +281,8 @@ def write(args):
             f"<style>{STYLE}</style><script>{IMAGE_CHECK_SCRIPT}</script></head><body>"
             f"<h1>beamimpact: verification and what accuracy costs</h1><p class=nav>{toc}</p>\n{body}"
             "</body></html>\n")
-    tmp = args.out + ".tmp"
     os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
-    with open(tmp, "w") as f:
-        f.write(page)
-    os.replace(tmp, args.out)  # never a half-written report
+    write_text_atomic(args.out, page)  # never a half-written report
     print(f"report: {args.out}")
 
 

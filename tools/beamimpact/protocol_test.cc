@@ -158,7 +158,9 @@ TEST_F(Protocol, BadMethodsFilesExitTwoNamingFileAndKey) {
   const fs::path f = tmp_ / "bad.toml";
   for (const auto& b : bad) {
     std::ofstream(f) << b.text;
-    for (const char* sub : {"methods", "run verification/scenes/paper/s1_central.toml --out x"}) {
+    const std::string run_s1 = fmt::format("run verification/scenes/paper/s1_central.toml --out '{}'",
+                                           (tmp_ / "x").string());  // never into the source tree
+    for (const std::string& sub : {std::string("methods"), run_s1}) {
       const Result r = run(fmt::format("{} --methods '{}'", sub, f.string()));
       EXPECT_EQ(r.code, 2) << b.what << ": " << r.output;
       EXPECT_NE(r.output.find(fmt::format("error: {}: key '{}'", f.string(), b.key)), std::string::npos)

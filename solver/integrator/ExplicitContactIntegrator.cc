@@ -97,10 +97,12 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
     minv_.factorize_pattern(cmass_->M());  // M_A(t) may hold entries the model's M never stored
   }
   const int n = model.size();
-  U_prev_ = U_ = U_next_ = Ubar_ = fc_ = work_ = work2_ = du_ = scratch_ = hwork_ = c_du_ = vwork_ =
-      Eigen::VectorXd::Zero(n);
-  Vbar_ = V_ = model.initial_velocity();  // no contact force at t = 0: Vbar^0 = V^0
-  fint_U_ = fint_next_ = Eigen::VectorXd::Zero(n);
+  for (Eigen::VectorXd* v : {&U_, &U_next_, &Ubar_, &fc_, &work_, &work2_, &vwork_, &fint_U_, &fint_next_})
+    v->setZero(n);
+  if (damped_)  // the damper's work vectors (an undamped run never reads them)
+    for (Eigen::VectorXd* v : {&du_, &scratch_, &hwork_, &c_du_}) v->setZero(n);
+  Vbar_ = model.initial_velocity();  // no contact force at t = 0: Vbar^0 = V^0
+  V_ = Vbar_;
   net_force(U_, fint_U_);
   fused_ = model.lumped() && !damped_ && !cmass_;
   // Room for every equation a contact force can touch (a surface contact's rows move with the

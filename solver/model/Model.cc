@@ -105,8 +105,8 @@ class ColumnBuilder {
 /// The assembly's scratch: K and M built column by column, the summed lumped masses, and each
 /// group's nonzero entries.
 struct Model::Assembly {
-  explicit Assembly(int n) : kb(n), mb(n), mdiag(Eigen::VectorXd::Zero(n)) {}
-  ColumnBuilder kb, mb;
+  Assembly(int n, bool lumped) : kb(n), mb(lumped ? 0 : n), mdiag(Eigen::VectorXd::Zero(n)) {}
+  ColumnBuilder kb, mb;  ///< mb: the consistent mass only (a lumped one is mdiag)
   Eigen::VectorXd mdiag;
   std::vector<GroupEntries> entries;
 };
@@ -128,7 +128,16 @@ std::vector<char> Model::add_bodies(const Scene& scene) {
   // Nodes and fixed DOFs. A rigid body's nodes have none of their own (all fixed here): they
   // follow the body's centre, whose DOFs come after every node's.
   const int dpn = dofs_per_node_;
+  std::size_t nodes = 0, elements = 0;  // room for all: no copy of a grown vector, no page touched twice
+  for (const Body& body : scene.bodies) {
+    nodes += static_cast<std::size_t>(body.nodes());
+    elements += static_cast<std::size_t>(body.elements);
+  }
+  node_pos_.reserve(nodes);
+  node_body_.reserve(nodes);
+  elements_.reserve(elements);
   std::vector<char> fixed;
+  fixed.reserve(nodes * dpn);
   for (int b = 0; b < static_cast<int>(scene.bodies.size()); ++b) {
     const Body& body = scene.bodies[b];
     body_centre_.push_back({0.5 * (body.start[0] + body.end[0]), 0.5 * (body.start[1] + body.end[1])});
@@ -166,6 +175,7 @@ void Model::number_equations(const Scene& scene, std::vector<char> fixed) {
       fixed.resize(fixed.size() + dpn, scene.bodies[b].supports.empty() ? 0 : 1);
     }
   dof_to_eq_.assign(fixed.size(), -1);
+  free_.reserve(fixed.size());
   for (std::size_t d = 0; d < fixed.size(); ++d)
     if (!fixed[d]) {
       dof_to_eq_[d] = static_cast<int>(free_.size());
@@ -230,8 +240,10 @@ void Model::assemble(const Scene& scene, const std::vector<int>& group_first) {
   // elements: the first counts the entries of K and M in each column and sums the momentum
   // covectors and lumped masses, the second places the entries.
   const int n = size();
-  Assembly a(n);
-  momentum_.assign(num_bodies(), {Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)});
+  Assembly a(n, lumped_);
+  momentum_.resize(static_cast<std::size_t>(num_bodies()));
+  for (auto& covectors : momentum_)
+    for (Eigen::VectorXd& v : covectors) v.setZero(n);
   collect_entries(group_first, a);
   for (int pass = 0; pass < 2; ++pass) {
     const bool counting = pass == 0;
@@ -241,12 +253,22 @@ void Model::assemble(const Scene& scene, const std::vector<int>& group_first) {
     }
     add_rigid_masses(scene, counting, a);
     add_elements(counting, a);
-    if (lumped_)  // M is the diagonal of the summed masses (final when placing)
-      for (int i = 0; i < n; ++i) a.mb.add(i, i, a.mdiag(i));
   }
   a.kb.finish(K_);
-  a.mb.finish(M_);
-  if (lumped_) m_diag_ = std::move(a.mdiag);
+  if (!lumped_) {
+    a.mb.finish(M_);
+    return;
+  }
+  // M is the diagonal of the summed masses, every entry stored (a zero too).
+  M_.resize(n, n);
+  M_.resizeNonZeros(n);
+  for (int i = 0; i < n; ++i) {
+    M_.outerIndexPtr()[i] = i;
+    M_.innerIndexPtr()[i] = i;
+    M_.valuePtr()[i] = a.mdiag(i);
+  }
+  M_.outerIndexPtr()[n] = n;
+  m_diag_ = std::move(a.mdiag);
 }
 
 void Model::add_rigid_masses(const Scene& scene, bool counting, Assembly& a) {

@@ -24,8 +24,10 @@ std::deque<Method> built_in() {
   paper.name = "paper";
   paper.summary = "Pu & Chi (2011) explicit dynamic-contact integrator (solver/)";
   paper.options_table = "paper";
-  paper.solve = [](const Scene& scene) { return paper::solve(scene); };
-  paper.solve_with_fields = paper::solve;
+  paper.solve = [](const Scene& scene, const Method::Request& q) {
+    return paper::solve(scene, q.fields_dir, q.threads);
+  };
+  paper.writes_fields = true;
   t.push_back(paper);
 #ifdef BEAMIMPACT_HAVE_exact
   Method exact;
@@ -41,7 +43,7 @@ std::deque<Method> built_in() {
   exact.accepts.several_contacts = false;
   exact.accepts.timoshenko = true;  // a rod on a Timoshenko beam only (its recogniser refuses the rest)
   exact.accepts.hertz = true;       // a rigid striker on a beam only (its recogniser refuses the rest)
-  exact.solve = exact::solve;
+  exact.solve = [](const Scene& scene, const Method::Request&) { return exact::solve(scene); };
   t.push_back(exact);
 #endif
 #ifdef BEAMIMPACT_HAVE_ida
@@ -50,7 +52,7 @@ std::deque<Method> built_in() {
   ida.summary = "SUNDIALS IDA with penalty contact on the same beam model (references/ida/)";
   ida.options_table = "ida";
   ida.accepts.search = false;  // a corotational scene runs in global axes (said in `assumed`)
-  ida.solve = ida::solve;
+  ida.solve = [](const Scene& scene, const Method::Request&) { return ida::solve(scene); };
   t.push_back(ida);
 #endif
   for (Method& m : t) m.origin = "built-in";

@@ -33,6 +33,14 @@ struct Method {
     bool hertz = true;             ///< the Hertz contact law (a contact with law = "hertz")
   };
 
+  /// @brief What a run passes to an in-process solver besides the scene.
+  struct Request {
+    /// @brief The run directory that receives VTK fields ([output] fields = true); empty: none.
+    std::filesystem::path fields_dir;
+    /// @brief RunOptions::threads (`--threads`), 0 when not asked; a solver without threads ignores it.
+    int threads = 0;
+  };
+
   std::string name;           ///< registry key and `--method` value
   std::string summary;        ///< one line for `beamimpact methods`
   std::string origin;         ///< "built-in" or the methods file that declared it
@@ -40,10 +48,10 @@ struct Method {
   Accepts accepts;
   bool slow = false;  ///< typically seconds or more per run: scheduled first, never timed in tests
   /// @brief In-process solver; empty for an external program.
-  std::function<SimulationResult(const Scene&)> solve;
-  /// @brief In-process solver that also writes VTK fields ([output] fields = true) into the run
-  /// directory given; empty for a method without field output.
-  std::function<SimulationResult(const Scene&, const std::filesystem::path&)> solve_with_fields;
+  std::function<SimulationResult(const Scene&, const Request&)> solve;
+  /// @brief Whether the in-process solver writes VTK fields ([output] fields = true) into
+  /// Request::fields_dir.
+  bool writes_fields = false;
   /// @brief External program: its argument list with placeholders ({scene}, {out}, {dt},
   /// {mesh}, {end}); {here} and {beamimpact} are already expanded.
   std::vector<std::string> command;

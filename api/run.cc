@@ -1,9 +1,6 @@
 #include <api/run.hpp>
 
-#include <sstream>
-
 #include <fmt/format.h>
-#include <toml++/toml.h>
 
 #include <api/accepts.hpp>
 #include <api/external_method.hpp>
@@ -33,9 +30,10 @@ void remove_run_outputs(const std::filesystem::path& out) {
 }
 
 /// Every run passes here (its directory locked): the method's acceptance, then the in-process
-/// solver or the program.
+/// solver (given the run's thread count, 0 when not asked) or the program.
 SimulationResult run_method(const Scene& scene, const Method& m,
-                            const std::optional<std::filesystem::path>& out, const std::string& mesh) {
+                            const std::optional<std::filesystem::path>& out, const std::string& mesh,
+                            const std::optional<int>& threads) {
   if (out) remove_run_outputs(*out);
   check_accepts(m, scene, mesh);
   if (!m.in_process()) {
@@ -49,18 +47,18 @@ SimulationResult run_method(const Scene& scene, const Method& m,
   }
   // Before anything is allocated: refuse a run far beyond the ordinary (the estimate is printed).
   check_run_cost(scene, planned_dt(scene));
-  SimulationResult r;
+  Method::Request request;
+  request.threads = threads.value_or(0);
   if (scene.output.fields) {
-    if (!m.solve_with_fields)
+    if (!m.writes_fields)
       throw SceneError(scene.file, "output.fields",
                        "expected false for method '" + m.name + "': it writes no fields");
     if (!out)
       throw SceneError(scene.file, "output.fields",
                        "expected an output directory to write the fields into (--out)");
-    r = m.solve_with_fields(scene, *out);
-  } else {
-    r = m.solve(scene);
+    request.fields_dir = *out;
   }
+  SimulationResult r = m.solve(scene, request);
   add_scene_warnings(scene, r);
   if (out) write_outputs(scene, r, *out);
   return r;
@@ -74,18 +72,6 @@ void check_threads(const std::optional<int>& threads, const std::string& file) {
         fmt::format("expected a whole number of threads 1..{}, got {}", paper::kMaxThreads, *threads));
 }
 
-/// The scene with [paper] threads set (its other [paper] keys kept).
-Scene with_threads(const Scene& scene, int threads) {
-  Scene s = scene;
-  const auto it = s.method_tables.find("paper");
-  toml::table t = it == s.method_tables.end() ? toml::table{} : toml::parse(it->second);
-  t.insert_or_assign("threads", threads);
-  std::ostringstream text;
-  text << t;
-  s.method_tables["paper"] = text.str();
-  return s;
-}
-
 }  // namespace
 
 SimulationResult run(const Scene& scene, std::string_view method_name, const RunOptions& options) {
@@ -95,8 +81,7 @@ SimulationResult run(const Scene& scene, std::string_view method_name, const Run
   check_threads(options.threads, scene.file);
   const OutputLock lock(options.out.value_or(std::filesystem::path()));
   const Method& m = method(method_name, scene.file, "--method");
-  if (options.threads) return run_method(with_threads(scene, *options.threads), m, options.out, "");
-  return run_method(scene, m, options.out, "");
+  return run_method(scene, m, options.out, "", options.threads);
 }
 
 SimulationResult run(const std::filesystem::path& scene_file, std::string_view method_name,
@@ -106,7 +91,6 @@ SimulationResult run(const std::filesystem::path& scene_file, std::string_view m
   const Method& m = method(method_name, scene_file.string(), "--method");
   std::vector<std::string> set = options.set;
   check_threads(options.threads, scene_file.string());
-  if (options.threads) set.push_back(fmt::format("paper.threads={}", *options.threads));
   if (options.dt) {
     if (!(*options.dt > 0.0))
       throw SceneError(scene_file.string(), "--dt",
@@ -120,9 +104,9 @@ SimulationResult run(const std::filesystem::path& scene_file, std::string_view m
     const Scene file = load_scene(scene_file);
     for (std::size_t i = 0; i < file.bodies.size(); ++i)
       set.push_back(fmt::format("bodies[{}].elements={}", i, file.bodies[i].elements * f));
-    return run_method(load_scene(scene_file, set), m, options.out, "");
+    return run_method(load_scene(scene_file, set), m, options.out, "", options.threads);
   }
-  return run_method(load_scene(scene_file, set), m, options.out, options.mesh);
+  return run_method(load_scene(scene_file, set), m, options.out, options.mesh, options.threads);
 }
 
 }  // namespace beamimpact

@@ -168,10 +168,9 @@ def run(scene: SceneLike, method: str = "paper", overrides: Optional[Overrides] 
     """
     s = _as_scene(scene)
     settings = dict(_overrides(overrides, set, "run") or {})
-    if threads is not None:
-        if isinstance(threads, bool) or not isinstance(threads, int) or not 1 <= threads <= 1024:
-            raise InputError(f"threads: expected a whole number of threads 1..1024, got {threads!r}")
-        settings["paper.threads"] = threads
+    if threads is not None and (isinstance(threads, bool) or not isinstance(threads, int)
+                                or not 1 <= threads <= _core.max_threads):
+        raise InputError(f"threads: expected a whole number of threads 1..{_core.max_threads}, got {threads!r}")
     if not history:
         settings["output.history"] = False
     if fields:
@@ -180,7 +179,7 @@ def run(scene: SceneLike, method: str = "paper", overrides: Optional[Overrides] 
         s = s.with_overrides(settings)
     callback = _Progress() if progress is True else (progress or None)
     try:
-        summary, names, rows = _core.run(s._scene, method, None if out is None else str(out), callback)
+        summary, names, rows = _core.run(s._scene, method, None if out is None else str(out), callback, threads)
     finally:
         if isinstance(callback, _Progress):
             callback.close()

@@ -12,6 +12,7 @@
 #include <api/registry.hpp>
 #include <api/run.hpp>
 #include <beamimpact/version.hpp>
+#include <solver/integrator/ExplicitContactIntegrator.hpp>
 #include <solver/record/ContactStats.hpp>
 #include <solver/record/output_files.hpp>
 #include <solver/scene/scene_io.hpp>
@@ -85,10 +86,10 @@ nlohmann::json from_python(py::handle o) {
   return o.cast<double>();                                                             // numpy floats
 }
 
-/// Runs a loaded scene with the GIL released; returns (summary dict, column names,
-/// rows x columns array).
+/// Runs a loaded scene with the GIL released (on `threads` threads when given, as RunOptions::threads);
+/// returns (summary dict, column names, rows x columns array).
 py::tuple run_scene(const Scene& scene, const std::string& method, std::optional<std::filesystem::path> out,
-                    std::optional<py::function> progress) {
+                    std::optional<py::function> progress, std::optional<int> threads) {
   std::optional<Progress::Silence> quiet;  // no callback: no progress; the setting comes back after
   if (progress)
     Progress::set_listener([progress](const std::string& label, double value, double total) {
@@ -103,7 +104,10 @@ py::tuple run_scene(const Scene& scene, const std::string& method, std::optional
   SimulationResult r;
   {
     py::gil_scoped_release nogil;
-    r = beamimpact::run(scene, method, RunOptions{{}, out});
+    RunOptions options;
+    options.out = out;
+    options.threads = threads;
+    r = beamimpact::run(scene, method, options);
   }
   const auto names = history_columns(static_cast<int>(scene.contacts.size()));
   py::array_t<double> rows(
@@ -224,8 +228,9 @@ PYBIND11_MODULE(_core, m) {
       },
       py::arg("json_text"), py::arg("label"), py::arg("overrides") = std::vector<std::string>{},
       "Loads a scene given as JSON text of the scene's tables (Scene.from_dict)");
+  m.attr("max_threads") = paper::kMaxThreads;  // the largest `threads` a run takes
   m.def("run", &run_scene, py::arg("scene"), py::arg("method"), py::arg("out") = py::none(),
-        py::arg("progress") = py::none(),
+        py::arg("progress") = py::none(), py::arg("threads") = py::none(),
         "Runs a scene with a registry method; returns (summary JSON, column names, rows array)");
   m.def("methods", [] {
     std::vector<std::string> names;

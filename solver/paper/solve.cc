@@ -235,10 +235,12 @@ void record_step(const ExplicitContactIntegrator& integ, long p, long N, const S
   rec.add_row(std::move(row));
 }
 
-/// The threads asked for (or the default, then written into assumed), and those used, with the
-/// reason when fewer, into summary.json ("threads", "threads_note").
-void set_threads(const Options& o, int dofs, ExplicitContactIntegrator& integ, SimulationResult& r) {
-  int asked = o.threads;
+/// The threads asked for (by the run, else by the scene, else the default, then written into
+/// assumed), and those used, with the reason when fewer, into summary.json ("threads",
+/// "threads_note").
+void set_threads(int run_threads, const Options& o, int dofs, ExplicitContactIntegrator& integ,
+                 SimulationResult& r) {
+  int asked = run_threads > 0 ? run_threads : o.threads;
   if (asked == 0) {
     asked = default_threads(dofs);
     r.assumed["paper.threads"] =
@@ -275,7 +277,7 @@ Options Options::read(const Scene& scene, std::map<std::string, std::string>* as
   return o;
 }
 
-SimulationResult solve(const Scene& scene_in, const std::filesystem::path& fields_dir) {
+SimulationResult solve(const Scene& scene_in, const std::filesystem::path& fields_dir, int threads) {
   ResultRecorder rec(scene_in, "paper", ContactSampling::kFixedSteps);
   SimulationResult& r = rec.result();
   const Effects effects = derive_effects(scene_in);
@@ -293,7 +295,7 @@ SimulationResult solve(const Scene& scene_in, const std::filesystem::path& field
 
   ExplicitContactIntegrator integ(model, scene, effects, r.dt, options.surface);
   integ.set_closure_slip(options.closure_slip);
-  set_threads(options, model.size(), integ, r);
+  set_threads(threads, options, model.size(), integ, r);
   rec.set_initial_energy(integ.initial_energy());
   std::vector<DeformedSurface> surfaces;  // the real gap of each pair, from the deformed geometry
   for (const ContactPair& pair : integ.pairs())

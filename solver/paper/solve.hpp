@@ -30,6 +30,8 @@ struct Options {
 /// @param scene the scene
 /// @param fields_dir when not empty, the run directory that receives the VTK fields of every
 /// output row (record/FieldWriter.hpp; the API passes it when [output] fields = true)
-SimulationResult solve(const Scene& scene, const std::filesystem::path& fields_dir = {});
+/// @param threads the run's thread count (RunOptions::threads, `--threads`; valid_thread_count()),
+/// taken over [paper] threads; 0: the scene's, else default_threads() of the model
+SimulationResult solve(const Scene& scene, const std::filesystem::path& fields_dir = {}, int threads = 0);
 
 }  // namespace beamimpact::paper

@@ -48,17 +48,21 @@ TEST(Cli, RunWritesHistoryAndSummary) {
 TEST(Cli, ThreadsUsedAndWhyFewerAreInTheSummary) {
   // summary.json "threads" is the count used: the default 1 for S1's 66 equations (below the
   // size where threads pay, written into assumed), 2 when asked on S2 refined (the fused step),
-  // 1 with the reason on S4-45 (corotational: its step is not split).
+  // by --threads or by the scene's [paper] threads, --threads taken over the scene's, 1 with the
+  // reason on S4-45 (corotational: its step is not split).
   struct Case {
     std::string args;
     int used;
     bool note;
   };
+  const std::string s2_refined =
+      paper_scene("s2_transverse") +
+      " --set bodies.A.elements=20 --set bodies.B.elements=40 --set 'time.dt=\"auto\"'";
   for (const Case& c : {Case{"run " + paper_scene("s1_central"), 1, false},
-                        Case{"run " + paper_scene("s2_transverse") +
-                                 " --threads 2 --set bodies.A.elements=20 --set bodies.B.elements=40 --set "
-                                 "'time.dt=\"auto\"'",
-                             2, false},
+                        Case{"run " + s2_refined + " --threads 2", 2, false},
+                        Case{"run " + s2_refined + " --set paper.threads=2", 2, false},
+                        Case{"run " + s2_refined + " --set paper.threads=1 --threads 2", 2, false},
+                        Case{"run " + s2_refined + " --set paper.threads=2 --threads 1", 1, false},
                         Case{"run " + paper_scene("s4_oblique_45") + " --threads 2", 1, true}}) {
     const fs::path out = fresh_dir("threads");
     const Result r = run_cli(c.args + " --quiet --out " + out.string());
@@ -66,7 +70,7 @@ TEST(Cli, ThreadsUsedAndWhyFewerAreInTheSummary) {
     const auto j = nlohmann::json::parse(std::ifstream(out / "summary.json"));
     EXPECT_EQ(j["threads"], c.used) << c.args;
     EXPECT_EQ(j.contains("threads_note"), c.note) << c.args;
-    if (c.args.find("--threads") == std::string::npos) {
+    if (c.args.find("threads") == std::string::npos) {
       EXPECT_EQ(j["assumed"]["paper.threads"].get<std::string>().rfind("1: the machine's", 0), 0u) << c.args;
     }
   }

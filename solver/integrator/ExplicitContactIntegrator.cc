@@ -71,13 +71,15 @@ int default_threads(int dofs) {
 
 ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const Scene& scene,
                                                      const Effects& effects, double dt,
-                                                     SurfaceInterpolation surface)
+                                                     SurfaceInterpolation surface, int threads)
     : model_(model),
       dt_(dt),
       damped_(effects.damping && model.damped()),
       friction_(effects.friction),
       minv_(model),
-      fint_(model, effects.corotational ? effects.rotating : std::vector<bool>(scene.bodies.size(), false)),
+      // Split only for the fused step (lumped: no rotating consistent mass; undamped).
+      fint_(model, effects.corotational ? effects.rotating : std::vector<bool>(scene.bodies.size(), false),
+            model.lumped() && !damped_ ? threads : 1),
       search_(make_contact_pairs(model, scene, surface)),
       boxes_(search_boxes(model, scene)),
       solver_(search_.pairs, frictions(scene, search_.contact), effects.friction, model.size(),
@@ -105,6 +107,7 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
   V_ = Vbar_;
   net_force(U_, fint_U_);
   fused_ = model.lumped() && !damped_ && !cmass_;
+  start_team(threads);
   // Room for every equation a contact force can touch (a surface contact's rows move with the
   // struck point, so their size now is no bound): no allocation while stepping.
   fc_dofs_.reserve(solver_.max_touched());
@@ -271,6 +274,11 @@ void ExplicitContactIntegrator::advance_fused() {
 }
 
 int ExplicitContactIntegrator::set_threads(int threads) {
+  if (threads > 1 && fused_) fint_.set_parts(threads);
+  return start_team(threads);
+}
+
+int ExplicitContactIntegrator::start_team(int threads) {
   team_.reset();
   threads_note_.clear();
   if (threads <= 1) return 1;
@@ -283,7 +291,7 @@ int ExplicitContactIntegrator::set_threads(int threads) {
         ")";
     return 1;
   }
-  const int used = fint_.set_parts(threads);
+  const int used = fint_.parts();
   if (used < threads) {
     threads_note_ = used == 1 ? "one thread: the element product is not split here (corotational bodies, a "
                                 "sparse product, or fewer than two elements per thread)"

@@ -56,8 +56,10 @@ class ExplicitContactIntegrator {
   /// @param dt time step (s)
   /// @param surface how the struck point of a surface contact is interpolated (the paper's
   ///        linear weights by default)
+  /// @param threads the step's threads asked for (>= 1), as set_threads() (threads() says how
+  ///        many are used)
   ExplicitContactIntegrator(const Model& model, const Scene& scene, const Effects& effects, double dt,
-                            SurfaceInterpolation surface = SurfaceInterpolation::kLinear);
+                            SurfaceInterpolation surface = SurfaceInterpolation::kLinear, int threads = 1);
 
   /// @brief Moves from step p to p+1 with the forces of step p (Eq. 3-5), then solves the
   /// contact forces of step p+1. dissipated() then includes the contact work of p+1.
@@ -78,6 +80,8 @@ class ExplicitContactIntegrator {
   /// @param threads the number asked for (>= 1)
   /// @return the number used; threads_note() says why when it is fewer
   int set_threads(int threads);
+  /// @brief The step's threads in use (1 unless split).
+  int threads() const { return team_ ? team_->size() : 1; }
   /// @brief Why fewer threads are used than were asked for ("" when as asked).
   const std::string& threads_note() const { return threads_note_; }
 
@@ -153,6 +157,8 @@ class ExplicitContactIntegrator {
   }
   /// Moves from p to p+1 with the forces of the last solve_contacts().
   void advance();
+  /// The team for the parts fint_ has made (set_threads after the split; the reason when fewer).
+  int start_team(int threads);
   void apply_Minv(const Eigen::VectorXd& in, Eigen::VectorXd& out) const { minv_.apply(in, out); }
   void apply_H(const Eigen::VectorXd& f, Eigen::VectorXd& out);
   /// V^p = Vbar^p + dt/2 M^-1 f_c (Eq. 5) on demand (V is read only on output rows).

@@ -37,16 +37,16 @@ Eigen::VectorXd spread_vector(int n) {
 
 }  // namespace
 
-InternalForce::InternalForce(const Model& model, const std::vector<bool>& corotational)
+InternalForce::InternalForce(const Model& model, const std::vector<bool>& corotational, int parts)
     : model_(model), K_(&model.K()) {
   if (model.dofs_per_node() != 3) {  // rods never rotate
-    build_blocks();
+    build_blocks(parts);
     return;
   }
   for (int e = 0; e < static_cast<int>(model.elements().size()); ++e)
     if (corotational[model.elements()[e].body]) corot_elements_.push_back(e);
   if (corot_elements_.empty()) {
-    build_blocks();
+    build_blocks(parts);
     return;
   }
   // Linear part: K minus the corotational elements' reference stiffness.
@@ -65,24 +65,15 @@ InternalForce::InternalForce(const Model& model, const std::vector<bool>& corota
   K_ = &K_linear_;
 }
 
-void InternalForce::build_blocks() {
+void InternalForce::build_blocks(int parts) {
+  // Each group's block: a group follows the last elastic element's (groups are runs of equal
+  // consecutive elements), and shares the last block when its matrix is the same.
   const int w = 2 * model_.dofs_per_node();
-  std::vector<std::array<int, 6>> eqs;
-  std::vector<int> block_of;
-  eqs.reserve(model_.elements().size());
-  block_of.reserve(model_.elements().size());
+  std::vector<int> block_of_group;
   int last = -1;  // the group of the last elastic element
   for (int e = 0; e < static_cast<int>(model_.elements().size()); ++e) {
     const int g = model_.element_group(e);
-    if (g < 0) continue;  // a rigid body's element: no element stiffness
-    const Eigen::Matrix<int, 6, 1> eq = model_.element_equations(e);
-    std::array<int, 6> be{};
-    for (int i = 0; i < 6; ++i) be[i] = i < w ? eq(i) : -1;
-    eqs.push_back(be);
-    if (g == last) {  // the same block as the last
-      block_of.push_back(block_of.back());
-      continue;
-    }
+    if (g < 0 || g == last) continue;  // a rigid body's element (no stiffness), or the same block
     const Eigen::MatrixXd& Ke = model_.reference_stiffness(e);
     last = g;
     const std::size_t nb = blocks_.size() / (w * w);
@@ -92,10 +83,11 @@ void InternalForce::build_blocks() {
     if (!same)
       for (int i = 0; i < w; ++i)
         for (int j = 0; j < w; ++j) blocks_.push_back(Ke(i, j));
-    block_of.push_back(static_cast<int>(blocks_.size() / (w * w)) - 1);
+    block_of_group.resize(static_cast<std::size_t>(g) + 1, -1);
+    block_of_group[g] = static_cast<int>(blocks_.size() / (w * w)) - 1;
   }
   const int n = model_.size();
-  use_blocks_ = n > 0 && build_spans(eqs, block_of, w);
+  use_blocks_ = n > 0 && build_spans(block_of_group, w);
   // Kept only when the blocks are the whole of K (no other stiffness assembled into it): the
   // two products agree on a vector with no special structure, to the roundoff of the sums
   // (1e-12 of sum |K_ij| |x_j| per row; a missing or extra term of K shows at O(1)), and every
@@ -104,7 +96,7 @@ void InternalForce::build_blocks() {
     const Eigen::VectorXd x = spread_vector(n);
     Eigen::VectorXd kx(n), bx(n), scale(n);
     kx.noalias() = model_.K() * x;
-    scale.noalias() = model_.K().cwiseAbs() * x.cwiseAbs();
+    scale.noalias() = model_.K().cwiseAbs() * x;  // x > 0: |x| is x
     std::vector<int> finished(n, 0);
     auto count = [&](int lo, int hi) {
       for (int i = lo; i < hi; ++i) ++finished[i];
@@ -112,6 +104,7 @@ void InternalForce::build_blocks() {
     apply_streamed(x, bx, count);
     use_blocks_ = ((kx - bx).cwiseAbs().array() <= 1e-12 * scale.array()).all() &&
                   std::all_of(finished.begin(), finished.end(), [](int c) { return c == 1; });
+    if (use_blocks_ && parts > 1) split(parts, x, bx);  // the same vector and its product
   }
   if (!use_blocks_) {
     blocks_.clear();
@@ -120,17 +113,35 @@ void InternalForce::build_blocks() {
   }
 }
 
-bool InternalForce::build_spans(const std::vector<std::array<int, 6>>& eqs, const std::vector<int>& block_of,
-                                int w) {
-  const int n = model_.size(), ne = static_cast<int>(eqs.size()), per = w / 2;
+bool InternalForce::build_spans(const std::vector<int>& block_of_group, int w) {
+  const int n = model_.size(), per = w / 2;
+  // The elastic elements in model order (e counts them), each one's equations (w of them, -1
+  // after) and block, formed when needed rather than stored.
+  std::vector<int> elastic;  // model element of each elastic element, when some are rigid
+  const auto& els = model_.elements();
+  const bool all_elastic =
+      std::none_of(els.begin(), els.end(), [](const Model::Element& el) { return el.rigid; });
+  if (!all_elastic)
+    for (int m = 0; m < static_cast<int>(els.size()); ++m)
+      if (model_.element_group(m) >= 0) elastic.push_back(m);
+  const int ne = all_elastic ? static_cast<int>(els.size()) : static_cast<int>(elastic.size());
+  auto model_element = [&](int e) { return all_elastic ? e : elastic[e]; };
+  auto equations = [&](int e) {
+    const Eigen::Matrix<int, 6, 1> eq = model_.element_equations(model_element(e));
+    std::array<int, 6> be{};
+    for (int i = 0; i < 6; ++i) be[i] = i < w ? eq(i) : -1;
+    return be;
+  };
   // The first and the last element (in model order) that touch each equation.
   std::vector<int> first(n, -1), last(n, -1);
-  for (int e = 0; e < ne; ++e)
+  for (int e = 0; e < ne; ++e) {
+    const std::array<int, 6> eq = equations(e);
     for (int i = 0; i < w; ++i)
-      if (const int q = eqs[e][i]; q >= 0) {
+      if (const int q = eq[i]; q >= 0) {
         if (first[q] < 0) first[q] = e;
         last[q] = e;
       }
+  }
   untouched_.clear();
   for (int q = 0; q < n; ++q)
     if (first[q] < 0) {
@@ -141,11 +152,11 @@ bool InternalForce::build_spans(const std::vector<std::array<int, 6>>& eqs, cons
     }
   // The equations whose first (or last) element is e, as one range [lo, hi); lo = hi = 0 when
   // there are none. False when they are not one range.
-  auto owned = [&](int e, const std::vector<int>& owner, int& lo, int& hi) {
+  auto owned = [&](int e, const std::array<int, 6>& eq, const std::vector<int>& owner, int& lo, int& hi) {
     lo = hi = 0;
     int members = 0, mn = n, mx = -1;
     for (int i = 0; i < w; ++i)
-      if (const int q = eqs[e][i]; q >= 0 && owner[q] == e) {
+      if (const int q = eq[i]; q >= 0 && owner[q] == e) {
         ++members;
         mn = std::min(mn, q);
         mx = std::max(mx, q);
@@ -157,11 +168,12 @@ bool InternalForce::build_spans(const std::vector<std::array<int, 6>>& eqs, cons
   };
   spans_.clear();
   for (int e = 0; e < ne; ++e) {
+    const std::array<int, 6> eq = equations(e);
     Span s{};
     s.count = 1;
-    s.block = block_of[e];
-    for (int i = 0; i < 6; ++i) s.eq[i] = eqs[e][i];
-    if (!owned(e, first, s.zero_lo, s.zero_hi) || !owned(e, last, s.done_lo, s.done_hi)) {
+    s.block = block_of_group[model_.element_group(model_element(e))];
+    for (int i = 0; i < 6; ++i) s.eq[i] = eq[i];
+    if (!owned(e, eq, first, s.zero_lo, s.zero_hi) || !owned(e, eq, last, s.done_lo, s.done_hi)) {
       spans_.clear();
       untouched_.clear();
       return false;
@@ -198,7 +210,15 @@ const std::vector<std::array<int, 2>> InternalForce::kNone;
 int InternalForce::set_parts(int parts) {
   parts_.clear();
   boundary_.clear();
-  if (!use_blocks_ || parts < 2 || !build_parts(parts)) {
+  if (!use_blocks_ || parts < 2) return 1;
+  const Eigen::VectorXd x = spread_vector(model_.size());
+  Eigen::VectorXd whole(x.size());
+  apply_streamed(x, whole, [](int, int) {});
+  return split(parts, x, whole);
+}
+
+int InternalForce::split(int parts, const Eigen::VectorXd& x, const Eigen::VectorXd& whole) {
+  if (!build_parts(parts)) {
     parts_.clear();
     boundary_.clear();
     return 1;
@@ -206,18 +226,16 @@ int InternalForce::set_parts(int parts) {
   // Kept only when the parts, run one after the other, give apply_streamed()'s bits on a vector
   // with no special structure and finish every equation exactly once.
   const int n = model_.size();
-  const Eigen::VectorXd x = spread_vector(n);
-  Eigen::VectorXd whole(n), split(n);
-  apply_streamed(x, whole, [](int, int) {});
+  Eigen::VectorXd parted(n);
   std::vector<int> finished(n, 0);
   auto count = [&](int lo, int hi) {
     for (int i = lo; i < hi; ++i) ++finished[i];
   };
-  for (int t = 0; t < parts; ++t) apply_part(t, x, split, count);
-  finish_parts(split, count);
+  for (int t = 0; t < parts; ++t) apply_part(t, x, parted, count);
+  finish_parts(parted, count);
   bool same = std::all_of(finished.begin(), finished.end(), [](int c) { return c == 1; });
   for (int i = 0; same && i < n; ++i)
-    same = std::bit_cast<std::uint64_t>(whole[i]) == std::bit_cast<std::uint64_t>(split[i]);
+    same = std::bit_cast<std::uint64_t>(whole[i]) == std::bit_cast<std::uint64_t>(parted[i]);
   if (!same) {
     parts_.clear();
     boundary_.clear();

@@ -16,8 +16,10 @@ namespace beamimpact::paper {
 /// @brief Internal (elastic) force of the model.
 class InternalForce {
  public:
-  /// @brief corotational[b]: body b uses the corotational element (frame layout only).
-  InternalForce(const Model& model, const std::vector<bool>& corotational);
+  /// @brief corotational[b]: body b uses the corotational element (frame layout only); the
+  /// product split into `parts` parts when it can be (set_parts(parts), checked on the same
+  /// vector as the element blocks).
+  InternalForce(const Model& model, const std::vector<bool>& corotational, int parts = 1);
   /// @brief f = f_int(U). No allocation.
   void apply(const Eigen::VectorXd& U, Eigen::VectorXd& f) const;
   /// @brief f = f_int(U) as apply() (the same operations on every entry, so the same bits),
@@ -105,10 +107,11 @@ class InternalForce {
   };
   /// Builds the element blocks of K when nothing is corotational; keeps them only when they
   /// reassemble K (to roundoff): then apply() is element by element, as the hand kernel.
-  void build_blocks();
-  /// Groups the elements (equations eq, block index each, in order) into spans_; false when
-  /// some element's first- or last-touched equations are not one range (then no spans).
-  bool build_spans(const std::vector<std::array<int, 6>>& eq, const std::vector<int>& block, int w);
+  void build_blocks(int parts);
+  /// Groups the elastic elements (in order; the block of each element group given, w equations
+  /// each) into spans_; false when some element's first- or last-touched equations are not one
+  /// range (then no spans).
+  bool build_spans(const std::vector<int>& block_of_group, int w);
   /// The span product for W = 2 x DOFs per node (apply_streamed without the fallback).
   template <int W, class Done>
   void apply_spans(const Eigen::VectorXd& U, Eigen::VectorXd& f, Done&& done) const;
@@ -119,6 +122,8 @@ class InternalForce {
                     const double* u, double* out, double* side, Done&& done) const;
   /// The parts of elements [k0, k1) for every range; false when some piece cannot be made.
   bool build_parts(int parts);
+  /// set_parts() given a vector with no special structure and its apply_streamed() product.
+  int split(int parts, const Eigen::VectorXd& x, const Eigen::VectorXd& whole);
   const Model& model_;
   const SparseMatrix* K_;
   std::vector<double> blocks_;  ///< distinct element blocks, W x W row-major each

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
@@ -104,22 +105,32 @@ struct Solved {
   int e, f;
 };
 
-/// The run's key: each element's section, geometry and equation pattern relative to the run's
-/// first equation. An equal key gives equal matrices.
-void run_key(const Model& model, int e, int f, const std::vector<Eigen::Matrix<int, 6, 1>>& eqk,
-             std::vector<double>& key) {
+/// Whether the runs of elements from e and from le (their equations eqk and eql) have equal
+/// matrices: as many elements, each with the same section and geometry, the same axes at its
+/// nodes when some node is in its body's axes, and the same equation pattern relative to its
+/// run's first equation. Compared in place, element by element (no key formed).
+bool same_run(const Model& model, int e, const std::vector<Eigen::Matrix<int, 6, 1>>& eqk, int le,
+              const std::vector<Eigen::Matrix<int, 6, 1>>& eql) {
+  if (eql.empty() || eqk.size() != eql.size()) return false;
   const std::vector<Model::Element>& els = model.elements();
   const int ne = 2 * model.dofs_per_node();
-  key.clear();
-  const int first_eq = eqk.front().maxCoeff();
-  for (int k = e; k < f; ++k) {
-    const Model::Element& el = els[k];
-    key.insert(key.end(), {el.E, el.area, el.inertia, el.rho, el.length, el.c, el.s});
+  const int a0 = eqk.front().maxCoeff(), b0 = eql.front().maxCoeff();
+  for (std::size_t k = 0; k < eqk.size(); ++k) {
+    const Model::Element &x = els[e + k], &y = els[le + k];
+    if (!(x.E == y.E && x.area == y.area && x.inertia == y.inertia && x.rho == y.rho &&
+          x.length == y.length && x.c == y.c && x.s == y.s))
+      return false;
     if (model.any_rotated())  // a node in its body's axes changes the element's matrices
-      for (int n : {el.n1, el.n2}) key.insert(key.end(), {model.node_axis(n)[0], model.node_axis(n)[1]});
-    const Eigen::Matrix<int, 6, 1>& eq = eqk[k - e];
-    for (int i = 0; i < ne; ++i) key.push_back(eq(i) >= 0 ? eq(i) - first_eq : -1e9);
+      for (const auto& [p, q] : {std::pair{x.n1, y.n1}, std::pair{x.n2, y.n2}})
+        if (!(model.node_axis(p)[0] == model.node_axis(q)[0] &&
+              model.node_axis(p)[1] == model.node_axis(q)[1]))
+          return false;
+    for (int i = 0; i < ne; ++i) {
+      const int p = eqk[k](i), q = eql[k](i);
+      if ((p >= 0) != (q >= 0) || (p >= 0 && p - a0 != q - b0)) return false;
+    }
   }
+  return true;
 }
 
 /// A run with the equations it shares with the rest of its body held at zero is the whole
@@ -189,8 +200,8 @@ SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_
   double lam = 0.0, lam_last = 0.0, bracket_lower = 0.0;
   std::vector<Solved> solved;  // the runs Laguerre's iteration solved
   RunScratch scratch;
-  std::vector<Eigen::Matrix<int, 6, 1>> eqk;  // the run's elements' equations
-  std::vector<double> key, key_last;
+  std::vector<Eigen::Matrix<int, 6, 1>> eqk, eq_last;  // the run's elements' equations, the last new run's
+  int e_last = 0;                                      // the last new run's first element
   for (int e = 0; e < nel;) {
     if (els[e].rigid) {  // a rigid body has no element stiffness
       ++e;
@@ -201,13 +212,13 @@ SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_
     if ((e > 0 && els[e - 1].body == els[e].body) || (f < nel && els[f].body == els[e].body))
       out.exact = false;
     run_equations(model, e, f, eqk);
-    run_key(model, e, f, eqk, key);
-    if (key == key_last) {  // equal matrices: reuse the last eigenvalue
+    if (same_run(model, e, eqk, e_last, eq_last)) {  // equal matrices: reuse the last eigenvalue
       lam = std::max(lam, lam_last);
       e = f;
       continue;
     }
-    key_last = key;
+    e_last = e;
+    eq_last = eqk;
     const EnvelopePencil run = run_pencil(model, e, eqk, {}, scratch);
     const int d = run.size();
     lam_last = 0.0;  // no free DOF: nothing moves

@@ -235,20 +235,16 @@ void record_step(const ExplicitContactIntegrator& integ, long p, long N, const S
   rec.add_row(std::move(row));
 }
 
-/// The threads asked for (by the run, else by the scene, else the default, then written into
-/// assumed), and those used, with the reason when fewer, into summary.json ("threads",
-/// "threads_note").
-void set_threads(int run_threads, const Options& o, int dofs, ExplicitContactIntegrator& integ,
-                 SimulationResult& r) {
-  int asked = run_threads > 0 ? run_threads : o.threads;
-  if (asked == 0) {
-    asked = default_threads(dofs);
-    r.assumed["paper.threads"] =
-        fmt::format("{}: the machine's {} hardware threads, 1 below {} equations (this model: {})", asked,
-                    std::max(1u, std::thread::hardware_concurrency()), kThreadsMinDofs, dofs);
-  }
-  r.extra["threads"] = integ.set_threads(asked);
-  if (!integ.threads_note().empty()) r.extra["threads_note"] = integ.threads_note();
+/// The threads asked for: by the run, else by the scene, else the default (then written into
+/// assumed).
+int threads_asked(int run_threads, const Options& o, int dofs, SimulationResult& r) {
+  if (run_threads > 0) return run_threads;
+  if (o.threads > 0) return o.threads;
+  const int asked = default_threads(dofs);
+  r.assumed["paper.threads"] =
+      fmt::format("{}: the machine's {} hardware threads, 1 below {} equations (this model: {})", asked,
+                  std::max(1u, std::thread::hardware_concurrency()), kThreadsMinDofs, dofs);
+  return asked;
 }
 
 }  // namespace
@@ -293,9 +289,12 @@ SimulationResult solve(const Scene& scene_in, const std::filesystem::path& field
   r.steps = N;
   set_merge_rule(options, r.dt, rec);
 
-  ExplicitContactIntegrator integ(model, scene, effects, r.dt, options.surface);
+  ExplicitContactIntegrator integ(model, scene, effects, r.dt, options.surface,
+                                  threads_asked(threads, options, model.size(), r));
   integ.set_closure_slip(options.closure_slip);
-  set_threads(threads, options, model.size(), integ, r);
+  // The threads used, with the reason when fewer than asked.
+  r.extra["threads"] = integ.threads();
+  if (!integ.threads_note().empty()) r.extra["threads_note"] = integ.threads_note();
   rec.set_initial_energy(integ.initial_energy());
   std::vector<DeformedSurface> surfaces;  // the real gap of each pair, from the deformed geometry
   for (const ContactPair& pair : integ.pairs())

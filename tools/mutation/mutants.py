@@ -262,7 +262,7 @@ MUTANTS = [
          targets=["cli_test", "beamimpact", "beamimpact_python"]),
     dict(name="threads_reports_asked", layer="threads", ci=False,
          what="summary.json's threads is the count asked for, not the one used",
-         edits=[("solver/paper/solve.cc", 'r.extra["threads"] = integ.set_threads(asked);',
-                 'integ.set_threads(asked);\n  r.extra["threads"] = asked;')],
+         edits=[("solver/paper/solve.cc", 'r.extra["threads"] = integ.threads();',
+                 'r.extra["threads"] = threads_asked(threads, options, model.size(), r);')],
          verify=False, tests=["Cli.ThreadsUsedAndWhyFewerAreInTheSummary"], targets=["cli_test", "beamimpact"]),
 ]

@@ -35,6 +35,38 @@ Eigen::VectorXd spread_vector(int n) {
   return q;
 }
 
+/// The elastic elements of a model in model order (a rigid body's left out), each one's
+/// equations (w of them, -1 after) formed when asked rather than stored.
+class ElasticElements {
+ public:
+  ElasticElements(const Model& model, int w) : model_(model), w_(w) {
+    const auto& els = model.elements();
+    all_ = std::none_of(els.begin(), els.end(), [](const Model::Element& el) { return el.rigid; });
+    if (!all_)
+      for (int m = 0; m < static_cast<int>(els.size()); ++m)
+        if (model.element_group(m) >= 0) index_.push_back(m);
+  }
+  /// The number of elastic elements.
+  int size() const {
+    return all_ ? static_cast<int>(model_.elements().size()) : static_cast<int>(index_.size());
+  }
+  /// The model's index of elastic element e.
+  int model_element(int e) const { return all_ ? e : index_[e]; }
+  /// Elastic element e's equations.
+  std::array<int, 6> equations(int e) const {
+    const Eigen::Matrix<int, 6, 1> eq = model_.element_equations(model_element(e));
+    std::array<int, 6> be{};
+    for (int i = 0; i < 6; ++i) be[i] = i < w_ ? eq(i) : -1;
+    return be;
+  }
+
+ private:
+  const Model& model_;
+  int w_;
+  bool all_ = true;
+  std::vector<int> index_;  ///< the model element of each elastic element, when some are rigid
+};
+
 }  // namespace
 
 InternalForce::InternalForce(const Model& model, const std::vector<bool>& corotational, int parts)
@@ -115,27 +147,12 @@ void InternalForce::build_blocks(int parts) {
 
 bool InternalForce::build_spans(const std::vector<int>& block_of_group, int w) {
   const int n = model_.size(), per = w / 2;
-  // The elastic elements in model order (e counts them), each one's equations (w of them, -1
-  // after) and block, formed when needed rather than stored.
-  std::vector<int> elastic;  // model element of each elastic element, when some are rigid
-  const auto& els = model_.elements();
-  const bool all_elastic =
-      std::none_of(els.begin(), els.end(), [](const Model::Element& el) { return el.rigid; });
-  if (!all_elastic)
-    for (int m = 0; m < static_cast<int>(els.size()); ++m)
-      if (model_.element_group(m) >= 0) elastic.push_back(m);
-  const int ne = all_elastic ? static_cast<int>(els.size()) : static_cast<int>(elastic.size());
-  auto model_element = [&](int e) { return all_elastic ? e : elastic[e]; };
-  auto equations = [&](int e) {
-    const Eigen::Matrix<int, 6, 1> eq = model_.element_equations(model_element(e));
-    std::array<int, 6> be{};
-    for (int i = 0; i < 6; ++i) be[i] = i < w ? eq(i) : -1;
-    return be;
-  };
+  const ElasticElements elastic(model_, w);
+  const int ne = elastic.size();
   // The first and the last element (in model order) that touch each equation.
   std::vector<int> first(n, -1), last(n, -1);
   for (int e = 0; e < ne; ++e) {
-    const std::array<int, 6> eq = equations(e);
+    const std::array<int, 6> eq = elastic.equations(e);
     for (int i = 0; i < w; ++i)
       if (const int q = eq[i]; q >= 0) {
         if (first[q] < 0) first[q] = e;
@@ -168,10 +185,10 @@ bool InternalForce::build_spans(const std::vector<int>& block_of_group, int w) {
   };
   spans_.clear();
   for (int e = 0; e < ne; ++e) {
-    const std::array<int, 6> eq = equations(e);
+    const std::array<int, 6> eq = elastic.equations(e);
     Span s{};
     s.count = 1;
-    s.block = block_of_group[model_.element_group(model_element(e))];
+    s.block = block_of_group[model_.element_group(elastic.model_element(e))];
     for (int i = 0; i < 6; ++i) s.eq[i] = eq[i];
     if (!owned(e, eq, first, s.zero_lo, s.zero_hi) || !owned(e, eq, last, s.done_lo, s.done_hi)) {
       spans_.clear();

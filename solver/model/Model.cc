@@ -157,8 +157,8 @@ std::vector<char> Model::add_bodies(const Scene& scene) {
     const double phi =
         timoshenko ? shear_parameter(body.inertia, body.area, le, body.shear_coefficient, body.poisson) : 0.0;
     for (int i = 0; i < body.elements; ++i)
-      elements_.push_back({b, body_first_node_[b] + i, body_first_node_[b] + i + 1, body.E, body.area,
-                           body.inertia, body.rho, le, d[0], d[1], body.rigid, timoshenko, phi});
+      elements_.push_back({b, body_first_node_[b] + i, body_first_node_[b] + i + 1, body.rigid, timoshenko,
+                           body.E, body.area, body.inertia, body.rho, le, d[0], d[1], phi});
   }
   if (!frame_.empty()) frame_.resize(node_pos_.size(), -1);
   return fixed;

@@ -114,10 +114,10 @@ class Model {
   /// @brief One element: its body, global node ids, section and reference geometry.
   struct Element {
     int body, n1, n2;
-    double E, area, inertia, rho;  ///< N/m^2, m^2, m^4, kg/m^3
-    double length, c, s;           ///< m; direction cosines of the reference axis
     bool rigid = false;            ///< of a rigid body: geometry only (no stiffness, no mass of its own)
     bool timoshenko = false;       ///< Timoshenko element (timoshenko_element.hpp), else Euler-Bernoulli
+    double E, area, inertia, rho;  ///< N/m^2, m^2, m^4, kg/m^3
+    double length, c, s;           ///< m; direction cosines of the reference axis
     double phi = 0.0;              ///< shear parameter 12 E I / (kappa G A length^2); 0 when Euler-Bernoulli
   };
   /// @brief The element list (per-element work: corotation, bounds).

@@ -11,15 +11,24 @@ Vec2 sub(const Vec2& a, const Vec2& b) { return {a[0] - b[0], a[1] - b[1]}; }
 double dot(const Vec2& a, const Vec2& b) { return a[0] * b[0] + a[1] * b[1]; }
 double cross(const Vec2& a, const Vec2& b) { return a[0] * b[1] - a[1] * b[0]; }
 
+/// Orders elements and body indices by body (std::equal_range over model.elements()).
+struct ByBody {
+  bool operator()(const Model::Element& e, int b) const { return e.body < b; }
+  bool operator()(int b, const Model::Element& e) const { return b < e.body; }
+};
+
 }  // namespace
 
 DeformedSurface::DeformedSurface(const Model& model, int body, int striker_node, Centreline line)
     : model_(model), striker_(striker_node), line_(line) {
-  for (int e = 0; e < static_cast<int>(model.elements().size()); ++e)
-    if (model.elements()[e].body == body) elements_.push_back(e);
-  if (elements_.empty()) throw std::logic_error("DeformedSurface: the body has no elements");
-  const auto& first = model.elements()[elements_.front()];
-  const auto& last = model.elements()[elements_.back()];
+  // The model lists the elements body by body: the body's are one range, found by bisection.
+  const auto& els = model.elements();
+  const auto [lo, hi] = std::equal_range(els.begin(), els.end(), body, ByBody{});
+  if (lo == hi) throw std::logic_error("DeformedSurface: the body has no elements");
+  first_ = static_cast<int>(lo - els.begin());
+  count_ = static_cast<int>(hi - lo);
+  const auto& first = *lo;
+  const auto& last = *(hi - 1);
   const Vec2 p0 = model.node_position(first.n1), p1 = model.node_position(last.n2);
   const Vec2 axis = sub(p1, p0);
   const double L = std::sqrt(dot(axis, axis));
@@ -30,7 +39,7 @@ DeformedSurface::DeformedSurface(const Model& model, int body, int striker_node,
 }
 
 DeformedSurface::Shape DeformedSurface::shape(const Eigen::VectorXd& U, int k) const {
-  const Model::Element& el = model_.elements()[elements_[k]];
+  const Model::Element& el = model_.elements()[first_ + k];
   const Vec2 X1 = model_.node_position(el.n1), X2 = model_.node_position(el.n2);
   const Vec2 u1 = model_.node_vector(U, el.n1), u2 = model_.node_vector(U, el.n2);
   Shape s;
@@ -60,7 +69,7 @@ double DeformedSurface::turn(const Eigen::VectorXd& U, int k, double xi) const {
   // d point / d xi = c + w'(xi) n, w' the derivative of the cubic in point().
   const double dw = s.L * ((1 - 4 * xi + 3 * xi * xi) * s.phi1 + (-2 * xi + 3 * xi * xi) * s.phi2);
   const Vec2 tangent{s.c[0] + dw * s.n[0], s.c[1] + dw * s.n[1]};
-  const Model::Element& el = model_.elements()[elements_[k]];
+  const Model::Element& el = model_.elements()[first_ + k];
   return std::atan2(cross({el.c, el.s}, tangent), dot({el.c, el.s}, tangent));
 }
 
@@ -68,7 +77,7 @@ RealGap DeformedSurface::gap(const Eigen::VectorXd& U) {
   const Vec2 X = model_.node_position(striker_), us = model_.node_vector(U, striker_);
   const Vec2 x{X[0] + us[0], X[1] + us[1]};
   RealGap r;
-  const int last = static_cast<int>(elements_.size()) - 1;
+  const int last = count_ - 1;
   if (end_on_ != 0) {
     // End-on: the distance beyond the target's end along the end element's deformed direction.
     const int k = end_on_ < 0 ? 0 : last;

@@ -58,7 +58,8 @@ class DeformedSurface {
   };
   Shape shape(const Eigen::VectorXd& U, int e) const;
   const Model& model_;
-  std::vector<int> elements_;  ///< the body's element indices into model.elements(), in order
+  int first_ = 0;  ///< the body's first element in model.elements() (a body's elements follow each other)
+  int count_ = 0;  ///< the body's elements
   int striker_;
   double side_ = 1.0;  ///< +1: striker left of the target's axis (reference), -1: right
   int end_on_ = 0;     ///< 0: surface contact; -1 / +1: end-on at the start / end

@@ -411,7 +411,9 @@ std::array<double, 3> InternalForce::end_forces(int e, const Eigen::VectorXd& U)
 }
 
 double InternalForce::strain_energy(const Eigen::VectorXd& U) const {
-  double e = 0.5 * U.dot((*K_) * U);
+  ku_.resize(U.size());
+  ku_.noalias() = (*K_) * U;
+  double e = 0.5 * U.dot(ku_);
   Eigen::Matrix<int, 6, 1> eq;
   double x[6];
   for (int i : corot_elements_) {

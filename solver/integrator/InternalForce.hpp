@@ -62,7 +62,8 @@ class InternalForce {
   /// @param U displacement
   /// @param out resized to the number of elements and overwritten
   void end_forces(const Eigen::VectorXd& U, std::vector<std::array<double, 3>>& out) const;
-  /// @brief Strain energy (J) at U.
+  /// @brief Strain energy (J) at U. K U goes into a scratch vector kept between calls (a history
+  /// row allocates nothing), so calls on one object must not run concurrently.
   double strain_energy(const Eigen::VectorXd& U) const;
   /// @brief True when some body is corotational.
   bool nonlinear() const { return !corot_elements_.empty(); }
@@ -135,6 +136,7 @@ class InternalForce {
   bool use_blocks_ = false;
   SparseMatrix K_linear_;  ///< used only when some elements are corotational
   std::vector<int> corot_elements_;
+  mutable Eigen::VectorXd ku_;  ///< strain_energy's K U, sized at its first call
 };
 
 }  // namespace beamimpact::paper

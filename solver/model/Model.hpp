@@ -120,7 +120,9 @@ class Model {
     double length, c, s;           ///< m; direction cosines of the reference axis
     double phi = 0.0;              ///< shear parameter 12 E I / (kappa G A length^2); 0 when Euler-Bernoulli
   };
-  /// @brief The element list (per-element work: corotation, bounds).
+  /// @brief The element list (per-element work: corotation, bounds), body by body in the scene's
+  /// order and each body's from its start to its end: a body's elements are one range, sorted by
+  /// `body` (DeformedSurface finds it by bisection).
   const std::vector<Element>& elements() const { return elements_; }
   /// @brief The group of element e: a run of consecutive elastic elements with the same section,
   /// material, length and direction, hence equal matrices; -1 for an element of a rigid body.

@@ -12,6 +12,7 @@
 #include <solver/scene/run_cost.hpp>
 #include <solver/scene/scene_io.hpp>
 #include <solver/util/OutputLock.hpp>
+#include <solver/util/heap_policy.hpp>
 #include <solver/util/write_file_atomic.hpp>
 
 namespace beamimpact {
@@ -47,6 +48,7 @@ SimulationResult run_method(const Scene& scene, const Method& m,
   }
   // Before anything is allocated: refuse a run far beyond the ordinary (the estimate is printed).
   check_run_cost(scene, planned_dt(scene));
+  keep_freed_memory();  // a second run in this process reuses the pages of the first
   Method::Request request;
   request.threads = threads.value_or(0);
   if (scene.output.fields) {

@@ -1,20 +1,26 @@
 #include <solver/util/heap_policy.hpp>
 
+#include <algorithm>
 #include <climits>
+#include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
+#include <vector>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
+#include <sys/mman.h>
 #endif
 
 namespace beamimpact {
 namespace {
 
-constexpr int kLargestHeapBlock = 32 << 20;  ///< glibc's upper bound for M_MMAP_THRESHOLD (64-bit)
-constexpr int kKeptFreeTop = INT_MAX;        ///< M_TRIM_THRESHOLD (an int): 2 GB of free top kept
-constexpr int kHeapGrowth = 64 << 20;        ///< M_TOP_PAD: the heap grows in 64 MB steps
+constexpr int kLargestHeapBlock = 32 << 20;    ///< glibc's upper bound for M_MMAP_THRESHOLD (64-bit)
+constexpr int kKeptFreeTop = INT_MAX;          ///< M_TRIM_THRESHOLD (an int): 2 GB of free top kept
+constexpr int kHeapGrowth = 64 << 20;          ///< M_TOP_PAD: the heap grows in 64 MB steps
+constexpr std::uintptr_t kHugePage = 2 << 20;  ///< a transparent huge page (x86-64, arm64 with 4 kB pages)
 
 bool released_by_environment() {
   const char* v = std::getenv("BEAMIMPACT_RELEASE_MEMORY");
@@ -33,6 +39,31 @@ void keep_freed_memory() {
     mallopt(M_TOP_PAD, kHeapGrowth);
 #endif
   });
+}
+
+void reserve_heap(double bytes) {
+  keep_freed_memory();
+  if (released_by_environment() || !(bytes > kHeapGrowth)) return;
+#if defined(__GLIBC__)
+  static std::mutex mutex;
+  const std::lock_guard<std::mutex> lock(mutex);
+  const std::size_t want = static_cast<std::size_t>(std::min(bytes, static_cast<double>(kKeptFreeTop) / 2));
+  if (mallinfo2().fordblks >= want) return;  // free in the heap already (and marked when this made it)
+  // Blocks just under the mmap threshold come from the heap's top, one after the other.
+  constexpr std::size_t kBlock = kLargestHeapBlock - (std::size_t{1} << 20);
+  std::vector<void*> blocks;
+  for (std::size_t got = 0; got < want; got += kBlock) {
+    void* p = std::malloc(kBlock);
+    if (p == nullptr) break;
+    blocks.push_back(p);
+  }
+  for (void* p : blocks) {
+    const std::uintptr_t a = (reinterpret_cast<std::uintptr_t>(p) + kHugePage - 1) / kHugePage * kHugePage;
+    const std::uintptr_t b = (reinterpret_cast<std::uintptr_t>(p) + kBlock) / kHugePage * kHugePage;
+    if (b > a) madvise(reinterpret_cast<void*>(a), b - a, MADV_HUGEPAGE);  // a hint: failure is harmless
+  }
+  for (auto it = blocks.rbegin(); it != blocks.rend(); ++it) std::free(*it);
+#endif
 }
 
 }  // namespace beamimpact

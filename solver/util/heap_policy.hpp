@@ -18,4 +18,12 @@ namespace beamimpact {
 /// glibc (another C library) it does nothing.
 void keep_freed_memory();
 
+/// @brief Makes room for a run that will touch about `bytes` of new memory: grows the heap by that
+/// much (up to 1 GB) of untouched memory marked for transparent huge pages (madvise
+/// MADV_HUGEPAGE), unless as much is free in the heap already. The run's pages then fault
+/// in 2 MB at a time instead of 4 kB (on a kernel with transparent_hugepage "madvise" or
+/// "always"). Untouched memory costs address space only. Calls keep_freed_memory(); nothing below
+/// 64 MB, with BEAMIMPACT_RELEASE_MEMORY=1 or without glibc.
+void reserve_heap(double bytes);
+
 }  // namespace beamimpact

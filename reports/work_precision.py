@@ -138,6 +138,12 @@ def plan_for(name, quick):
     return Plan(name, path, {}, ref, rungs, note)
 
 
+def hours_at(base, mult, power):
+    """Hours of CPU a run takes at mesh multiplier `mult`, from one measured at base = (CPU s,
+    multiplier) and a cost that grows like the multiplier to `power`."""
+    return base[0] * (mult / base[1]) ** power / 3600
+
+
 def sized_plan(name, mult, quick):
     """S1 or S2 with every body's elements times `mult` (the sizes where cost matters): the paper
     integrator over fractions of the critical step, IDA over rtol, Siconos at the same mesh over
@@ -160,7 +166,7 @@ def sized_plan(name, mult, quick):
     # x22 at rtol 1e-4: 46 s) and grows like mult^2: two rungs at x100, one up to x500 (S1), none
     # beyond. Every rung is timed MIN_REPEATS times at least, however long.
     ida_base = (11, 100) if name.startswith("s1") else (46, 22)  # (CPU s at rtol 1e-4, at multiplier)
-    ida_hours = ida_base[0] * (mult / ida_base[1]) ** 2 / 3600
+    ida_hours = hours_at(ida_base, mult, 2)
     if mult <= 100 and ida_hours < 0.5:
         rungs += [Rung("IDA (rtol ladder)", f"rtol {r:g}", "ida", dict(base, **{"ida.rtol": r}))
                   for r in (1e-4, 1e-6)[: 1 if quick else 2]]
@@ -174,7 +180,7 @@ def sized_plan(name, mult, quick):
     # a run of minutes. Its steps grow like mult and a step's dense work like mult^2 at least.
     k = mult / 10
     sic_base = (152, 100) if name.startswith("s1") else (6.8, 22)  # (CPU s of the rung, at multiplier)
-    sic_hours = sic_base[0] * (mult / sic_base[1]) ** 3 / 3600
+    sic_hours = hours_at(sic_base, mult, 3)
     if sic_hours < 0.5:
         rungs.append(Rung("Siconos", f"dt {dt / k:g}", "siconos", base, ["--dt", repr(dt / k)]))
     else:

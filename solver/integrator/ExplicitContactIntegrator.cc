@@ -62,6 +62,11 @@ void velocity_sweep(int lo, int hi, double dt, const double* __restrict un, cons
   for (int i = lo; i < hi; ++i) fused_entry(i, vb[i], (-0.5 * dt) * (fn[i] + fu[i]), dt, un, fn, inv, vb, ub);
 }
 
+/// The fused step (advance_fused) serves a lumped, undamped run: a fixed diagonal mass (a
+/// consistent mass, rotating or not, is never lumped) and no damper force in the update. Only that
+/// step is split over threads.
+bool fused_step(const Model& model, bool damped) { return model.lumped() && !damped; }
+
 }  // namespace
 
 int default_threads(int dofs) {
@@ -77,9 +82,8 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
       damped_(effects.damping && model.damped()),
       friction_(effects.friction),
       minv_(model),
-      // Split only for the fused step (lumped: no rotating consistent mass; undamped).
       fint_(model, effects.corotational ? effects.rotating : std::vector<bool>(scene.bodies.size(), false),
-            model.lumped() && !damped_ ? threads : 1),
+            fused_step(model, damped_) ? threads : 1),
       search_(make_contact_pairs(model, scene, surface)),
       boxes_(search_boxes(model, scene)),
       solver_(search_.pairs, frictions(scene, search_.contact), effects.friction, model.size(),
@@ -106,7 +110,7 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
   Vbar_ = model.initial_velocity();  // no contact force at t = 0: Vbar^0 = V^0
   V_ = Vbar_;
   net_force(U_, fint_U_);
-  fused_ = model.lumped() && !damped_ && !cmass_;
+  fused_ = fused_step(model, damped_);
   start_team(threads);
   // Room for every equation a contact force can touch (a surface contact's rows move with the
   // struck point, so their size now is no bound): no allocation while stepping.

@@ -15,7 +15,7 @@ namespace beamimpact {
 /// beamimpact::run before an in-process method's set-up; idempotent and thread-safe. A process
 /// that runs a large model holds that run's memory (its peak, up to the 2 GB) after it for the
 /// next; set BEAMIMPACT_RELEASE_MEMORY=1 in the environment to keep glibc's defaults. Without
-/// glibc (another C library) it does nothing.
+/// glibc's allocator (another C library, a sanitizer's) it does nothing.
 void keep_freed_memory();
 
 /// @brief Makes room for a run that will touch about `bytes` of new memory: grows the heap by that
@@ -23,7 +23,7 @@ void keep_freed_memory();
 /// MADV_HUGEPAGE), unless as much is free in the heap already. The run's pages then fault
 /// in 2 MB at a time instead of 4 kB (on a kernel with transparent_hugepage "madvise" or
 /// "always"). Untouched memory costs address space only. Calls keep_freed_memory(); nothing below
-/// 64 MB, with BEAMIMPACT_RELEASE_MEMORY=1 or without glibc.
+/// 64 MB, with BEAMIMPACT_RELEASE_MEMORY=1 or without glibc's allocator.
 void reserve_heap(double bytes);
 
 }  // namespace beamimpact

@@ -188,6 +188,14 @@ void Model::number_equations(const Scene& scene, std::vector<char> fixed) {
       for (int c = 0; c < dpn; ++c) rigid_eq_[b][c] = dof_to_eq_[rigid_first[b] + c];
     }
   dof_to_eq_.resize(node_dofs);  // node DOFs only: equation() never sees the centres' slots
+  // Each element's equations, looked up once: the set-up asks for them several times an element.
+  const int w = 2 * dpn;
+  element_eq_.resize(elements_.size() * static_cast<std::size_t>(w));
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    const int nodes[2] = {elements_[e].n1, elements_[e].n2};
+    for (int k = 0; k < 2; ++k)
+      for (int c = 0; c < dpn; ++c) element_eq_[e * w + k * dpn + c] = equation(nodes[k], c);
+  }
 }
 
 std::vector<int> Model::form_groups() {
@@ -482,9 +490,9 @@ Eigen::VectorXd Model::translation(const std::vector<Vec2>& d) const {
 
 Eigen::Matrix<int, 6, 1> Model::element_equations(int e) const {
   Eigen::Matrix<int, 6, 1> eq = Eigen::Matrix<int, 6, 1>::Constant(-1);
-  const int nodes[2] = {elements_[e].n1, elements_[e].n2};
-  for (int k = 0; k < 2; ++k)
-    for (int c = 0; c < dofs_per_node_; ++c) eq(k * dofs_per_node_ + c) = equation(nodes[k], c);
+  const int w = 2 * dofs_per_node_;
+  const int* q = element_eq_.data() + static_cast<std::ptrdiff_t>(e) * w;
+  for (int i = 0; i < w; ++i) eq(i) = q[i];
   return eq;
 }
 

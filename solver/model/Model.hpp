@@ -178,10 +178,11 @@ class Model {
   double a0_ = 0.0, a1_ = 0.0;
   std::vector<int> body_first_node_, node_body_;
   std::vector<Vec2> node_pos_;
-  std::vector<int> frame_;      ///< node -> index into frames_, -1 global axes; empty: none rotated
-  std::vector<Vec2> frames_;    ///< unit axis of component 0 of each rotated node
-  std::vector<int> dof_to_eq_;  ///< node * dofs_per_node + c -> equation or -1
-  std::vector<int> free_;       ///< equation -> node * dofs_per_node + c
+  std::vector<int> frame_;       ///< node -> index into frames_, -1 global axes; empty: none rotated
+  std::vector<Vec2> frames_;     ///< unit axis of component 0 of each rotated node
+  std::vector<int> dof_to_eq_;   ///< node * dofs_per_node + c -> equation or -1
+  std::vector<int> free_;        ///< equation -> node * dofs_per_node + c
+  std::vector<int> element_eq_;  ///< element e's equations at [2 dofs_per_node e, ...), -1 when fixed
   std::vector<Element> elements_;
   std::vector<ElementGroup> groups_;
   std::vector<int> group_;  ///< element -> its group in groups_, -1 for a rigid body's

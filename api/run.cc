@@ -47,11 +47,10 @@ SimulationResult run_method(const Scene& scene, const Method& m,
     return r;
   }
   // Before anything is allocated: refuse a run far beyond the ordinary (the estimate is printed).
-  const double dt = planned_dt(scene);
-  check_run_cost(scene, dt);
+  const RunCost cost = check_run_cost(scene, planned_dt(scene));
   // The run's memory from a heap that keeps it for the next run and faults it in by huge pages
   // (the estimate is generous: what it reserves beyond the run's needs stays untouched).
-  reserve_heap(estimate_run_cost(scene, dt).bytes);
+  reserve_heap(cost.bytes);
   Method::Request request;
   request.threads = threads.value_or(0);
   if (scene.output.fields) {

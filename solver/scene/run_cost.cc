@@ -58,7 +58,7 @@ double estimate_auto_dt(const Scene& scene) {
   return scene.time.fraction * dt;
 }
 
-void check_run_cost(const Scene& scene, double dt) {
+RunCost check_run_cost(const Scene& scene, double dt) {
   const RunCost c = estimate_run_cost(scene, dt);
   if (!(c.steps <= kMostSteps))
     throw SceneError(scene.file, "time.dt",
@@ -81,6 +81,7 @@ void check_run_cost(const Scene& scene, double dt) {
                     c.field_bytes / 1e9, c.steps / scene.time.output_every + 1.0, kOrdinaryFieldBytes / 1e9,
                     every));
   }
+  return c;
 }
 
 long step_count(const Scene& scene, double dt) {

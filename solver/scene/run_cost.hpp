@@ -55,7 +55,8 @@ inline double planned_dt(const Scene& scene) {
 /// has more than kMostSteps steps, or exceeds kOrdinaryWork / kOrdinaryBytes without
 /// time.allow_long_run; key output.fields when the field files exceed kOrdinaryFieldBytes
 /// without it. The message states the estimate and the setting that allows the run.
-void check_run_cost(const Scene& scene, double dt);
+/// @return the estimate it checked (estimate_run_cost(scene, dt)).
+RunCost check_run_cost(const Scene& scene, double dt);
 
 /// @brief The number of steps ceil(end / dt - 1e-9) as a long, after the check against
 /// kMostSteps (SceneError on key time.dt otherwise).

@@ -43,6 +43,14 @@ bool released_by_environment() {
 
 }  // namespace
 
+bool glibc_heap() {
+#if defined(BEAMIMPACT_GLIBC_HEAP)
+  return true;
+#else
+  return false;
+#endif
+}
+
 void keep_freed_memory() {
   static std::once_flag once;
   std::call_once(once, [] {

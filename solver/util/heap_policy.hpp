@@ -10,6 +10,10 @@
 
 namespace beamimpact {
 
+/// @brief True when glibc's allocator serves malloc in this build: not another C library's, nor
+/// a sanitizer's. Only then do keep_freed_memory() and reserve_heap() act.
+bool glibc_heap();
+
 /// @brief Keeps freed blocks in the process (glibc mallopt: blocks up to 32 MB come from the heap,
 /// the heap is not trimmed below 2 GB of free top, and grows 64 MB at a time). Called by
 /// beamimpact::run before an in-process method's set-up; idempotent and thread-safe. A process

@@ -18,14 +18,6 @@
 #include <malloc.h>
 #endif
 
-#if defined(__SANITIZE_ADDRESS__)
-#define BEAMIMPACT_OWN_ALLOCATOR 1  // GCC's AddressSanitizer: its allocator, not glibc's
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define BEAMIMPACT_OWN_ALLOCATOR 1  // clang's
-#endif
-#endif
-
 namespace beamimpact {
 namespace {
 
@@ -48,9 +40,9 @@ std::string mapping_flags(const void* a) {
 }
 
 TEST(HeapPolicy, FreedLargeBlockStaysInTheProcess) {
-#if !defined(__GLIBC__) || defined(BEAMIMPACT_OWN_ALLOCATOR)
-  GTEST_SKIP() << "not glibc's allocator (a sanitizer's or another C library's): mallopt has no effect";
-#else
+  if (!glibc_heap())
+    GTEST_SKIP() << "not glibc's allocator (a sanitizer's or another C library's): the policy does nothing";
+#if defined(__GLIBC__)
   keep_freed_memory();
   keep_freed_memory();  // idempotent
   // Six blocks of 16 MB, 96 MB in all: more than the 64 MB the heap grows by, which a trim
@@ -75,9 +67,9 @@ TEST(HeapPolicy, FreedLargeBlockStaysInTheProcess) {
 // own), a second call of the same size does not grow it again, and a block allocated from
 // it lies in memory advised for transparent huge pages (VmFlags "hg" in /proc/self/smaps).
 TEST(HeapPolicy, ReservationIsFreeHeapAdvisedForHugePages) {
-#if !defined(__GLIBC__) || defined(BEAMIMPACT_OWN_ALLOCATOR)
-  GTEST_SKIP() << "not glibc's allocator (a sanitizer's or another C library's): mallopt has no effect";
-#else
+  if (!glibc_heap())
+    GTEST_SKIP() << "not glibc's allocator (a sanitizer's or another C library's): the policy does nothing";
+#if defined(__GLIBC__)
   constexpr std::size_t kReserve = std::size_t{256} << 20;
   reserve_heap(static_cast<double>(kReserve));
   const struct mallinfo2 reserved = mallinfo2();

@@ -5,9 +5,11 @@
 /// difference of whole runs, in units of the run's own step:
 ///   step          (T(2N steps) - T(N steps)) / N, no rows kept (output.history = false)
 ///   history row   (T(history, a row every step) - T(no rows)) / N
-///   field row     (T(fields every k-th step) - T(history every k-th step)) / rows, binary and ASCII
-///   fields/100    the run writing binary fields every 100 steps against the same run without
-///                 them, as a fraction of the run (the two runs interleaved, each the best of 5).
+///   field row     (T(fields every k-th step) - T(history every k-th step)) / rows, in ms and in
+///                 steps: binary in single precision (the default) and in double, ASCII in single
+///   fields/100    the run writing binary fields every 100 steps (single, then double precision)
+///                 against the same run without them, as a fraction of the run (the runs
+///                 interleaved, each the best of 5).
 /// Each other T is the best of 3 runs (the machine is shared). Field files go to a temporary folder.
 /// Run: build/benchmarks/output_benchmark [max_dofs]   (prints a Markdown table)
 #include <algorithm>
@@ -17,6 +19,7 @@
 #include <filesystem>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -34,18 +37,19 @@ using Clock = std::chrono::steady_clock;
 /// with `elements` in all (A a third), dt at 0.9 of the proven critical step. B starts moving up
 /// at 0.5 m/s between its supports, so that every node carries non-zero values from the first
 /// step (field files of zeros would flatter ASCII).
-std::string scene_text(long elements, double end, int every, bool history, bool fields, const char* format) {
+std::string scene_text(long elements, double end, int every, bool history, bool fields, const char* format,
+                       const char* precision = "single") {
   const long a = std::max(1L, elements / 3), b = std::max(2L, elements - a);
   return fmt::format(
       "name = \"output_benchmark\"\n[time]\ndt = \"auto\"\nfraction = 0.9\nend = {}\noutput_every = {}\n"
-      "[output]\nhistory = {}\nfields = {}\nfield_format = \"{}\"\n"
+      "[output]\nhistory = {}\nfields = {}\nfield_format = \"{}\"\nfield_precision = \"{}\"\n"
       "[[bodies]]\nname = \"A\"\nstart = [5.0, 5.1]\nend = [5.0, 0.1]\nelements = {}\nE = 100.0\nrho = 1.0\n"
       "area = 0.4\ninertia = 0.0053333333333333\nvelocity = [0.0, -1.0]\nsupports = []\n"
       "[[bodies]]\nname = \"B\"\nstart = [0.0, 0.0]\nend = [10.0, 0.0]\nelements = {}\nE = 100.0\nrho = 1.0\n"
       "area = 0.4\ninertia = 0.0053333333333333\nvelocity = [0.0, 0.5]\n"
       "supports = [{{ at = \"start\", fix = [\"x\", \"y\"] }}, {{ at = \"end\", fix = [\"y\"] }}]\n"
       "[[contacts]]\nstriker = \"A\"\nnode = \"end\"\ntarget = \"B\"\n",
-      end, every, history, fields, format, a, b);
+      end, every, history, fields, format, precision, a, b);
 }
 
 /// Wall time of one whole run of the scene text (seconds), and the run's result.
@@ -66,16 +70,54 @@ double best_run(const std::string& text, const std::filesystem::path& out, Simul
   return best;
 }
 
-/// Best wall times of `rounds` runs of each of two scene texts, interleaved (a, b, a, b, ...):
-/// both see the same spells of load on a shared machine.
-std::pair<double, double> best_pair(const std::string& a, const std::string& b,
-                                    const std::filesystem::path& out, int rounds) {
-  std::pair<double, double> best{1e300, 1e300};
-  for (int r = 0; r < rounds; ++r) {
-    best.first = std::min(best.first, timed_run(a, out));
-    best.second = std::min(best.second, timed_run(b, out));
-  }
+/// Best wall time of `rounds` runs of each scene text, interleaved (a, b, c, a, b, c, ...): all
+/// see the same spells of load on a shared machine.
+std::vector<double> best_interleaved(const std::vector<std::string>& texts, const std::filesystem::path& out,
+                                     int rounds) {
+  std::vector<double> best(texts.size(), 1e300);
+  for (int r = 0; r < rounds; ++r)
+    for (std::size_t k = 0; k < texts.size(); ++k) best[k] = std::min(best[k], timed_run(texts[k], out));
   return best;
+}
+
+/// Size in bytes of the field file of row `row` of the last run into `out`.
+double row_bytes(const std::filesystem::path& out, long row) {
+  return static_cast<double>(
+      std::filesystem::file_size(out / "fields" / fmt::format("step_{:06d}.vtu", row)));
+}
+
+/// Measures one size and prints its table row (see the file comment).
+void measure(double dofs, const std::filesystem::path& out) {
+  const long elements = static_cast<long>(dofs / 3);
+  SimulationResult probe;
+  best_run(scene_text(elements, 1e-9, 1, false, false, "binary"), out, &probe);  // dt of this mesh
+  const long N = dofs >= 1e6 ? 100 : 400;
+  const int every = 10;
+  const double end = static_cast<double>(N) * probe.dt;
+  const double t_n = best_run(scene_text(elements, end, 1, false, false, "binary"), out);
+  const double t_2n = best_run(scene_text(elements, 2 * end, 1, false, false, "binary"), out);
+  const double step = (t_2n - t_n) / static_cast<double>(N);
+  const double t_hist = best_run(scene_text(elements, end, 1, true, false, "binary"), out);
+  const double t_every = best_run(scene_text(elements, end, every, true, false, "binary"), out);
+  const double rows = static_cast<double>(N / every + 1);
+  // Per field row: ms and steps, and the bytes of the last row's file.
+  std::string cost, bytes;
+  for (const auto& [format, precision] :
+       {std::pair{"binary", "single"}, {"binary", "double"}, {"ascii", "single"}}) {
+    const double row =
+        (best_run(scene_text(elements, end, every, true, true, format, precision), out) - t_every) / rows;
+    cost += fmt::format(" {:.3g} ms ({:.3g}) |", row * 1e3, row / step);
+    bytes += fmt::format("{}{:.0f}", bytes.empty() ? "" : " / ", row_bytes(out, N / every) / 1e3);
+  }
+  const std::vector<double> t_100 =
+      best_interleaved({scene_text(elements, 10 * end, 100, true, false, "binary"),
+                        scene_text(elements, 10 * end, 100, true, true, "binary", "single"),
+                        scene_text(elements, 10 * end, 100, true, true, "binary", "double")},
+                       out, 5);
+  std::printf("| %.0e | %ld | %.3g | %.3g |%s %s kB | %+.1f %% | %+.1f %% |\n", dofs, N, step * 1e6,
+              (t_hist - t_n) / static_cast<double>(N) / step, cost.c_str(), bytes.c_str(),
+              100.0 * (t_100[1] - t_100[0]) / t_100[0], 100.0 * (t_100[2] - t_100[0]) / t_100[0]);
+  std::fflush(stdout);
 }
 
 }  // namespace
@@ -85,42 +127,17 @@ int main(int argc, char** argv) {
   const std::filesystem::path out = std::filesystem::temp_directory_path() / "beamimpact_output_benchmark";
   std::printf(
       "output_benchmark, beamimpact %s; S2 geometry meshed finely (lumped frames, linear), paper integrator "
-      "through beamimpact::run; each time the best of 3 whole runs; costs in steps of the same run\n\n",
+      "through beamimpact::run; each time the best of 3 whole runs; field rows in ms and (in brackets) in "
+      "steps of the same run\n\n",
       kVersion);
   std::printf(
-      "| DOFs | steps N | step (us) | history row (steps) | binary field row (steps) | ASCII field row "
-      "(steps) "
-      "| binary / ASCII bytes per row | fields every 100 steps (extra run time) |\n"
-      "|---|---|---|---|---|---|---|---|\n");
+      "| DOFs | steps N | step (us) | history row (steps) | binary field row, single | binary field row, "
+      "double "
+      "| ASCII field row, single | bytes per row: binary single / double / ASCII | fields every 100 steps, "
+      "single (extra run time) | the same, double |\n"
+      "|---|---|---|---|---|---|---|---|---|---|\n");
   Progress::Silence quiet;
-  for (double dofs = 1e4; dofs <= max_dofs * 1.0001; dofs *= 10) {
-    const long elements = static_cast<long>(dofs / 3);
-    SimulationResult probe;
-    best_run(scene_text(elements, 1e-9, 1, false, false, "binary"), out, &probe);  // dt of this mesh
-    const long N = dofs >= 1e6 ? 100 : 400;
-    const int every = 10;
-    const double end = static_cast<double>(N) * probe.dt;
-    const double t_n = best_run(scene_text(elements, end, 1, false, false, "binary"), out);
-    const double t_2n = best_run(scene_text(elements, 2 * end, 1, false, false, "binary"), out);
-    const double step = (t_2n - t_n) / static_cast<double>(N);
-    const double t_hist = best_run(scene_text(elements, end, 1, true, false, "binary"), out);
-    const double t_every = best_run(scene_text(elements, end, every, true, false, "binary"), out);
-    const double rows = static_cast<double>(N / every + 1);
-    const double t_bin = best_run(scene_text(elements, end, every, true, true, "binary"), out);
-    const auto bytes = [&] {
-      return std::filesystem::file_size(out / "fields" / fmt::format("step_{:06d}.vtu", N / every));
-    };
-    const double bin_bytes = static_cast<double>(bytes());
-    const double t_ascii = best_run(scene_text(elements, end, every, true, true, "ascii"), out);
-    const double ascii_bytes = static_cast<double>(bytes());
-    const auto [t_100, t_100f] = best_pair(scene_text(elements, 10 * end, 100, true, false, "binary"),
-                                           scene_text(elements, 10 * end, 100, true, true, "binary"), out, 5);
-    std::printf("| %.0e | %ld | %.3g | %.3g | %.3g | %.3g | %.0f / %.0f kB | %+.1f %% |\n", dofs, N,
-                step * 1e6, (t_hist - t_n) / static_cast<double>(N) / step, (t_bin - t_every) / rows / step,
-                (t_ascii - t_every) / rows / step, bin_bytes / 1e3, ascii_bytes / 1e3,
-                100.0 * (t_100f - t_100) / t_100);
-    std::fflush(stdout);
-  }
+  for (double dofs = 1e4; dofs <= max_dofs * 1.0001; dofs *= 10) measure(dofs, out);
   std::filesystem::remove_all(out);
   return 0;
 }

@@ -22,7 +22,7 @@ def steps(run_dir: Union[str, os.PathLike]) -> list[tuple[float, str]]:
     return [(float(d.get("timestep")), os.path.join(run_dir, d.get("file"))) for d in root.iter("DataSet")]
 
 
-_DTYPES = {"Float64": "<f8", "Int64": "<i8", "Int32": "<i4", "UInt8": "u1"}
+_DTYPES = {"Float64": "<f8", "Float32": "<f4", "Int64": "<i8", "Int32": "<i4", "UInt8": "u1"}
 _APPENDED = b'<AppendedData encoding="raw">'
 
 
@@ -40,8 +40,8 @@ def _parse(path):
 
 def _values(d, raw):
     """The values of one DataArray, inline (ascii) or from the appended block at its offset."""
-    if d.get("format") != "appended":
-        return np.array(d.text.split(), dtype=float)
+    if d.get("format") != "appended":  # Float32 text is read as float32: its shortest decimals
+        return np.array(d.text.split(), dtype=_DTYPES[d.get("type")]).astype(float)  # name that float
     at = int(d.get("offset"))
     nbytes = int(np.frombuffer(raw[at:at + 8], dtype="<u8")[0])
     return np.frombuffer(raw[at + 8:at + 8 + nbytes], dtype=_DTYPES[d.get("type")]).astype(float)
@@ -49,7 +49,8 @@ def _values(d, raw):
 
 def read_vtu(path: Union[str, os.PathLike]) -> dict[str, Any]:
     """One step: {"points": (n, 3) reference positions, "bodies": [node index arrays], and each
-    point-data array by name as (n, components)}. Reads both encodings (output.field_format)."""
+    point-data array by name as (n, components)} as doubles. Reads both encodings
+    (output.field_format) and both precisions (output.field_precision)."""
     root, raw = _parse(path)
     piece = root.find("UnstructuredGrid/Piece")
     n = int(piece.get("NumberOfPoints"))

@@ -344,9 +344,10 @@ def load_scene(path, overrides=None):
             raise SceneError(file, tbl, "expected a table")
     o = _Table(doc.get("output", {}), file, "output", assumed)
     fields = o.boolean("fields", False)
-    # The beam methods' encoding choice; dolfinx's VTKFile writes the continuum's files in its
-    # own encoding whichever is asked (ParaView reads both).
+    # The beam methods' encoding and precision choices; dolfinx's VTKFile writes the continuum's
+    # files in its own encoding and precision whichever is asked (ParaView reads both).
     o.string("field_format", "binary or ascii", default="binary", allowed=("binary", "ascii"))
+    o.string("field_precision", "single or double", default="single", allowed=("single", "double"))
     if not o.boolean("history", True):
         o.fail("history", "the FEniCSx reference keeps its history rows (its summary is made from "
                           "them); expected true")

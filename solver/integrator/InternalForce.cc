@@ -395,6 +395,15 @@ std::array<double, 3> InternalForce::end_forces(int e, const Eigen::VectorXd& U)
     return section(el, l.u, l.th1, l.th2);
   }
   // The linear element: stretch along and chord rotation across the reference axis.
+  if (model_.dofs_per_node() == 3 && !model_.rotated(el.n1) && !model_.rotated(el.n2)) {
+    // Both nodes' DOFs in global axes (what node_vector() and equation() give, read in one go).
+    const Eigen::Matrix<int, 6, 1> eq = model_.element_equations(e);
+    double x[6];
+    for (int i = 0; i < 6; ++i) x[i] = eq[i] >= 0 ? U(eq[i]) : 0.0;
+    const double du = x[3] - x[0], dv = x[4] - x[1];
+    const double turn = (-el.s * du + el.c * dv) / el.length;
+    return section(el, el.c * du + el.s * dv, x[2] - turn, x[5] - turn);
+  }
   const Vec2 u1 = model_.node_vector(U, el.n1), u2 = model_.node_vector(U, el.n2);
   const double du = u2[0] - u1[0], dv = u2[1] - u1[1];
   double th1 = 0.0, th2 = 0.0;

@@ -285,6 +285,10 @@ SimulationResult solve(const Scene& scene_in, const std::filesystem::path& field
   const CriticalStep cs = critical_step(model);
   r.critical_dt = cs.dt;
   r.dt = choose_dt(scene, cs, r);
+  // The run was admitted at the wave estimate of the step (planned_dt); a frame's bending step can
+  // be far below it, and the steps, the work and the field files grow with 1/dt: checked again
+  // at the step the run takes, before anything is written.
+  check_run_cost(scene, r.dt);
   const long N = step_count(scene, r.dt);
   r.steps = N;
   set_merge_rule(options, r.dt, rec);
@@ -300,7 +304,8 @@ SimulationResult solve(const Scene& scene_in, const std::filesystem::path& field
   for (const ContactPair& pair : integ.pairs())
     surfaces.emplace_back(model, pair.target_body(), pair.striker_node());
   std::optional<FieldWriter> fields;
-  if (!fields_dir.empty()) fields.emplace(model, fields_dir, scene.output.field_format);
+  if (!fields_dir.empty())
+    fields.emplace(model, fields_dir, scene.output.field_format, scene.output.field_precision);
   Progress progress("paper", scene.time.end);
   progress.set_dofs_per_update(model.size());
   std::vector<TurnedSlide> slides(scene.contacts.size());

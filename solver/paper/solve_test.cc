@@ -1,4 +1,4 @@
-// The oblique collision (issue 3): Coulomb friction with stick and slip, the sliding contact
+// The oblique collision: Coulomb friction with stick and slip, the sliding contact
 // point, the rotating striker, and that a scene runs only the effects it calls for.
 #include <solver/paper/solve.hpp>
 
@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <solver/integrator/ExplicitContactIntegrator.hpp>
+#include <solver/scene/SceneError.hpp>
 #include <solver/scene/scene_io.hpp>
 #include <solver/testing/test_scenes.hpp>
 
@@ -362,6 +363,25 @@ TEST(GrazingSlide, CrossingAnElementBoundaryKeepsTheForceSmooth) {
   // reason as for S4 (the physical-velocity energy), measured 0.25 % of E0.
   for (const HistoryRow& row : r.history)
     EXPECT_LE(row.kinetic + row.strain + row.dissipated, r.energy_initial * 1.03) << "t=" << row.t;
+}
+
+// ---- Cost of the run at its own step -------------------------------------------------------
+
+TEST(RunCost, FieldFilesAreEstimatedAtTheStepTheRunTakesNotTheWaveEstimate) {
+  // S2 for 0.09 s with B in 1000 frame elements (h = 1 cm): the axial wave admits dt = 0.9 h / c
+  // = 9e-4 s, 100 rows of 66 kB (7 MB of fields), but the bending step is about 200 times
+  // smaller (omega_max grows like 1/h^2): 2.3e4 rows, 1.5 GB. The run must be refused on
+  // output.fields before the first file is written, not fill the disk.
+  const auto dir = testing::temp_path("fine_frames_fields");
+  const Scene scene = load_scene(paper_scene("s2_transverse"), {"bodies.B.elements=1000", "time.dt=\"auto\"",
+                                                                "time.end=0.09", "output.fields=true"});
+  try {
+    paper::solve(scene, dir);
+    FAIL() << "expected a refusal";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.key(), "output.fields");
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "fields"));
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 #include <type_traits>
 
@@ -20,53 +21,72 @@ std::filesystem::path part_of(const std::filesystem::path& p) { return p.string(
 template <typename T>
 constexpr const char* vtk_type() {
   if constexpr (std::is_same_v<T, double>) return "Float64";
-  if constexpr (std::is_same_v<T, std::int64_t>) return "Int64";
+  if constexpr (std::is_same_v<T, float>) return "Float32";
   if constexpr (std::is_same_v<T, std::int32_t>) return "Int32";
   if constexpr (std::is_same_v<T, std::uint8_t>) return "UInt8";
 }
 
+/// The error for a value of array `name` that T cannot hold: not finite (the run diverged), or
+/// finite but beyond single precision's range.
+template <typename T>
+std::runtime_error unstorable(const char* name, double x) {
+  if (!std::isfinite(x))
+    return std::runtime_error(fmt::format("non-finite {} in the fields: the run diverged", name));
+  return std::runtime_error(
+      fmt::format("{} = {:g} in the fields is beyond single precision (|x| > {:g}); set "
+                  "output.field_precision = \"double\"",
+                  name, x, static_cast<double>(std::numeric_limits<T>::max())));
+}
+
 /// Appends one <DataArray> of `n` tuples of `components` (at most 3) values of type T;
-/// tuple(i, v) writes tuple i's components into v[0..components). ASCII: the values inline in
-/// `xml`. Binary: an empty element in `xml` whose offset points into the appended data, and the
-/// block (UInt64 byte count, then the values in the machine's little-endian order) at `offset` =
-/// raw.size() + `base` in `raw`, written in place (no per-value append).
+/// tuple(i, v) writes tuple i's components into v[0..components) as doubles, each then rounded to
+/// T. ASCII: the values inline in `xml`, in T's shortest round-trip form. Binary: an empty element
+/// in `xml` whose offset points into the appended data, and the block (UInt64 byte count, then the
+/// values in the machine's little-endian order) at `offset` = `used` + `base` in `raw`, written
+/// in place (no per-value append; `raw` grows when it must, and is otherwise reused as it is, so
+/// a row of the same layout as the last writes over it without clearing); `used` moves past it. A value T
+/// cannot hold (not finite, or beyond its range: the conversion would be undefined) throws.
 template <typename T, typename F>
-void data_array(std::string& xml, std::string& raw, std::size_t base, FieldFormat format, const char* name,
-                int n, int components, F tuple) {
+void data_array(std::string& xml, std::string& raw, std::size_t& used, std::size_t base, FieldFormat format,
+                const char* name, int n, int components, F tuple) {
   static_assert(std::endian::native == std::endian::little, "the VTK files declare LittleEndian");
   auto out = std::back_inserter(xml);
   const bool binary = format == FieldFormat::kBinary;
   fmt::format_to(out, "<DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"{}\"",
                  vtk_type<T>(), name, components, binary ? "appended" : "ascii");
-  const auto non_finite = [name] {
-    return std::runtime_error(fmt::format("non-finite {} in the fields: the run diverged", name));
-  };
+  constexpr double kMax = static_cast<double>(std::numeric_limits<T>::max());
   double v[3];
   if (binary) {
-    fmt::format_to(out, " offset=\"{}\"/>\n", base + raw.size());
+    fmt::format_to(out, " offset=\"{}\"/>\n", base + used);
     const std::uint64_t bytes = sizeof(T) * static_cast<std::uint64_t>(n) * components;
-    const std::size_t at = raw.size();
-    raw.resize(at + sizeof bytes + bytes);
+    const std::size_t at = used;
+    used += sizeof bytes + bytes;
+    if (raw.size() < used) raw.resize(used);
     char* p = raw.data() + at;
     std::memcpy(p, &bytes, sizeof bytes);
     p += sizeof bytes;
-    bool finite = true;
+    bool storable = true;
     for (int i = 0; i < n; ++i) {
       tuple(i, v);
       for (int c = 0; c < components; ++c, p += sizeof(T)) {
-        finite &= std::isfinite(v[c]);
-        const T x = static_cast<T>(v[c]);
+        storable &= std::abs(v[c]) <= kMax;  // false for NaN too
+        const T x = storable ? static_cast<T>(v[c]) : T{};
         std::memcpy(p, &x, sizeof x);
       }
     }
-    if (!finite) throw non_finite();
+    if (!storable)  // find the first culprit for the message (the run is over)
+      for (int i = 0; i < n; ++i) {
+        tuple(i, v);
+        for (int c = 0; c < components; ++c)
+          if (!(std::abs(v[c]) <= kMax)) throw unstorable<T>(name, v[c]);
+      }
     return;
   }
   xml += ">\n";
   for (int i = 0; i < n; ++i) {
     tuple(i, v);
     for (int c = 0; c < components; ++c) {
-      if (!std::isfinite(v[c])) throw non_finite();
+      if (!(std::abs(v[c]) <= kMax)) throw unstorable<T>(name, v[c]);
       fmt::format_to(out, "{}{}", c ? " " : "", static_cast<T>(v[c]));
     }
     xml.push_back('\n');
@@ -74,10 +94,25 @@ void data_array(std::string& xml, std::string& raw, std::size_t base, FieldForma
   xml += "</DataArray>\n";
 }
 
+/// data_array of real numbers, in the precision the run asked for.
+template <typename F>
+void real_array(std::string& xml, std::string& raw, std::size_t& used, std::size_t base, FieldFormat format,
+                FieldPrecision precision, const char* name, int n, int components, F tuple) {
+  if (precision == FieldPrecision::kSingle)
+    data_array<float>(xml, raw, used, base, format, name, n, components, tuple);
+  else
+    data_array<double>(xml, raw, used, base, format, name, n, components, tuple);
+}
+
 }  // namespace
 
-FieldWriter::FieldWriter(const Model& model, std::filesystem::path dir, FieldFormat format)
-    : model_(model), dir_(std::move(dir)), format_(format), touching_(model.num_nodes(), 0) {
+FieldWriter::FieldWriter(const Model& model, std::filesystem::path dir, FieldFormat format,
+                         FieldPrecision precision)
+    : model_(model),
+      dir_(std::move(dir)),
+      format_(format),
+      precision_(precision),
+      touching_(model.num_nodes(), 0) {
   std::filesystem::remove(collection(dir_));
   std::filesystem::remove_all(dir_ / "fields");
   std::filesystem::create_directories(dir_ / "fields");
@@ -98,20 +133,23 @@ FieldWriter::FieldWriter(const Model& model, std::filesystem::path dir, FieldFor
   const int n = model.num_nodes(), nb = model.num_bodies();
   std::string& x = geometry_;
   std::string& raw = geometry_raw_;
+  std::size_t used = 0;
   fmt::format_to(std::back_inserter(x), "<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n<Points>\n", n,
                  nb);
-  data_array<double>(x, raw, 0, format_, "reference_position", n, 3, [&](int i, double* v) {
+  real_array(x, raw, used, 0, format_, precision_, "reference_position", n, 3, [&](int i, double* v) {
     const Vec2& q = model.node_position(i);
     v[0] = q[0], v[1] = q[1], v[2] = 0.0;
   });
   x += "</Points>\n<Cells>\n";
-  data_array<std::int64_t>(x, raw, 0, format_, "connectivity", n, 1, [](int i, double* v) { v[0] = i; });
-  data_array<std::int64_t>(x, raw, 0, format_, "offsets", nb, 1, [&](int body, double* v) {
+  data_array<std::int32_t>(x, raw, used, 0, format_, "connectivity", n, 1,
+                           [](int i, double* v) { v[0] = i; });
+  data_array<std::int32_t>(x, raw, used, 0, format_, "offsets", nb, 1, [&](int body, double* v) {
     v[0] = body + 1 < nb ? model.node_id(body + 1, 0) : n;
   });
-  data_array<std::uint8_t>(x, raw, 0, format_, "types", nb, 1, [](int, double* v) { v[0] = kPolyLine; });
+  data_array<std::uint8_t>(x, raw, used, 0, format_, "types", nb, 1,
+                           [](int, double* v) { v[0] = kPolyLine; });
   x += "</Cells>\n<CellData Scalars=\"body\">\n";
-  data_array<std::int32_t>(x, raw, 0, format_, "body", nb, 1, [](int body, double* v) { v[0] = body; });
+  data_array<std::int32_t>(x, raw, used, 0, format_, "body", nb, 1, [](int body, double* v) { v[0] = body; });
   x += "</CellData>\n<PointData Vectors=\"displacement\">\n";
 }
 
@@ -157,17 +195,17 @@ void FieldWriter::write_arrays(const Eigen::VectorXd& U, const Eigen::VectorXd& 
       v[2] = 0.0;
     };
   };
-  data_array<double>(xml_, raw_, base, format_, "displacement", n, 3, vec(U));
-  data_array<double>(xml_, raw_, base, format_, "velocity", n, 3, vec(V));
-  data_array<double>(xml_, raw_, base, format_, "rotation", n, 1, [&](int i, double* v) {
+  real_array(xml_, raw_, raw_used_, base, format_, precision_, "displacement", n, 3, vec(U));
+  real_array(xml_, raw_, raw_used_, base, format_, precision_, "velocity", n, 3, vec(V));
+  real_array(xml_, raw_, raw_used_, base, format_, precision_, "rotation", n, 1, [&](int i, double* v) {
     const int eq = eq_[i][2];
     v[0] = eq >= 0 ? U(eq) : 0.0;
   });
-  data_array<double>(xml_, raw_, base, format_, "axial_force", n, 1,
-                     [&](int i, double* v) { v[0] = axial_[i]; });
-  data_array<double>(xml_, raw_, base, format_, "bending_moment", n, 1,
-                     [&](int i, double* v) { v[0] = moment_[i]; });
-  data_array<double>(xml_, raw_, base, format_, "contact_force", n, 3, [&](int i, double* v) {
+  real_array(xml_, raw_, raw_used_, base, format_, precision_, "axial_force", n, 1,
+             [&](int i, double* v) { v[0] = axial_[i]; });
+  real_array(xml_, raw_, raw_used_, base, format_, precision_, "bending_moment", n, 1,
+             [&](int i, double* v) { v[0] = moment_[i]; });
+  real_array(xml_, raw_, raw_used_, base, format_, precision_, "contact_force", n, 3, [&](int i, double* v) {
     const Vec2& f = contact_force[static_cast<std::size_t>(i)];
     v[0] = f[0], v[1] = f[1], v[2] = 0.0;
   });
@@ -184,7 +222,7 @@ void FieldWriter::write(double t, const Eigen::VectorXd& U, const Eigen::VectorX
 
   const bool binary = format_ == FieldFormat::kBinary;
   xml_.clear();
-  raw_.clear();
+  raw_used_ = 0;
   fmt::format_to(
       std::back_inserter(xml_),
       "<?xml version=\"1.0\"?>\n"
@@ -203,7 +241,7 @@ void FieldWriter::write(double t, const Eigen::VectorXd& U, const Eigen::VectorX
   f.write(xml_.data(), static_cast<std::streamsize>(xml_.size()));
   if (binary) {
     f.write(geometry_raw_.data(), static_cast<std::streamsize>(geometry_raw_.size()));
-    f.write(raw_.data(), static_cast<std::streamsize>(raw_.size()));
+    f.write(raw_.data(), static_cast<std::streamsize>(raw_used_));
     f << "\n</AppendedData>\n";
   }
   f << "</VTKFile>\n";

@@ -14,7 +14,9 @@
 /// scene).
 /// Numbers are stored as output.field_format says: VTK's appended raw binary (the default: each
 /// array a block of little-endian values behind a UInt64 byte count, after the XML header) or
-/// ASCII in shortest round-trip form. Both read back bit for bit; ParaView reads both.
+/// ASCII in shortest round-trip form; real numbers in output.field_precision (Float32, the
+/// default, each the double rounded to nearest; or Float64), node indices as Int32. Both
+/// encodings read back bit for bit; ParaView reads all four combinations.
 
 #include <array>
 #include <filesystem>
@@ -36,7 +38,9 @@ class FieldWriter {
   /// @param model the beam model (nodes, elements, equations)
   /// @param dir the run directory (fields.pvd and fields/ go there)
   /// @param format how the numbers are stored (binary or ASCII)
-  FieldWriter(const Model& model, std::filesystem::path dir, FieldFormat format = FieldFormat::kBinary);
+  /// @param precision the real numbers' precision (single or double)
+  FieldWriter(const Model& model, std::filesystem::path dir, FieldFormat format = FieldFormat::kBinary,
+              FieldPrecision precision = FieldPrecision::kSingle);
   FieldWriter(const FieldWriter&) = delete;
   FieldWriter& operator=(const FieldWriter&) = delete;
   /// @brief An unfinished collection (the run failed) is removed: no .pvd vouches for it.
@@ -69,6 +73,7 @@ class FieldWriter {
   const Model& model_;
   std::filesystem::path dir_;
   FieldFormat format_;
+  FieldPrecision precision_;
   std::ofstream pvd_;  ///< fields.pvd.part while the run goes on
   long count_ = 0;
   std::vector<double> axial_, moment_;
@@ -79,6 +84,7 @@ class FieldWriter {
   std::string geometry_;      ///< each .vtu's points, cells and cell data (the same every step)
   std::string geometry_raw_;  ///< binary: their appended blocks (the same every step)
   std::string xml_, raw_;     ///< the step being written: its XML and (binary) appended blocks
+  std::size_t raw_used_ = 0;  ///< bytes of raw_ that are the step's (raw_ keeps its size)
 };
 
 }  // namespace beamimpact

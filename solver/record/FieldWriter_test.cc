@@ -5,6 +5,7 @@
 #include <solver/record/FieldWriter.hpp>
 
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -61,7 +62,8 @@ TEST(FieldWriter, SectionForcesOfExactlyRepresentedFields) {
     fint.end_forces(U, ends);
     const auto dir = temp_path("fields" + std::to_string(elements));
     {
-      FieldWriter w(model, dir, FieldFormat::kAscii);  // the values parsed as text below
+      // The values parsed as text below, in double: the 1e-9 tolerances are the double's.
+      FieldWriter w(model, dir, FieldFormat::kAscii, FieldPrecision::kDouble);
       w.write(0.0, U, V, Fc, ends);
       w.finish();
     }
@@ -94,6 +96,35 @@ TEST(FieldWriter, AnUnfinishedRunLeavesNoCollection) {
   }  // destroyed without finish(): the run threw
   EXPECT_FALSE(std::filesystem::exists(FieldWriter::collection(dir)));
   EXPECT_FALSE(std::filesystem::exists(dir / "fields.pvd.part"));
+}
+
+TEST(FieldWriter, AValueSinglePrecisionCannotHoldIsRefusedNotWrittenAsInfinity) {
+  // A contact force of 1e39 N is finite in double but beyond float's 3.4e38: converting it would
+  // be undefined behaviour (in practice inf in the file). Both encodings refuse it and name the
+  // array and the key that keeps it; in double precision it is written. NaN is refused in both.
+  const Scene scene = load_paper_scene("s1_central");
+  const Model model(scene, false);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(model.size());
+  const std::vector<std::array<double, 3>> ends(model.elements().size());
+  for (const FieldFormat format : {FieldFormat::kBinary, FieldFormat::kAscii}) {
+    std::vector<Vec2> Fc(static_cast<std::size_t>(model.num_nodes()), Vec2{0.0, 0.0});
+    Fc[3][1] = 1e39;
+    {
+      FieldWriter w(model, temp_path("huge_single"), format);
+      try {
+        w.write(0.0, zero, zero, Fc, ends);
+        ADD_FAILURE() << "expected a refusal";
+      } catch (const std::runtime_error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("contact_force"), std::string::npos) << what;
+        EXPECT_NE(what.find("output.field_precision = \"double\""), std::string::npos) << what;
+      }
+    }
+    FieldWriter d(model, temp_path("huge_double"), format, FieldPrecision::kDouble);
+    EXPECT_NO_THROW(d.write(0.0, zero, zero, Fc, ends));
+    Fc[3][1] = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(d.write(0.0, zero, zero, Fc, ends), std::runtime_error);
+  }
 }
 
 }  // namespace

@@ -87,7 +87,8 @@ nlohmann::json summary_json(const Scene& scene, const SimulationResult& r) {
                    {"output",
                     {{"history", scene.output.history},
                      {"fields", scene.output.fields},
-                     {"field_format", to_string(scene.output.field_format)}}}};
+                     {"field_format", to_string(scene.output.field_format)},
+                     {"field_precision", to_string(scene.output.field_precision)}}}};
   json s = {{"scene", scene.name},
             {"scene_file", scene.file},
             {"scene_sha256", scene.sha256},

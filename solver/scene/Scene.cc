@@ -25,6 +25,7 @@ const char* to_string(MassKind m) { return m == MassKind::kLumped ? "lumped" : "
 const char* to_string(RotaryInertia r) { return r == RotaryInertia::kHrz ? "hrz" : "section"; }
 const char* to_string(Kinematics k) { return k == Kinematics::kLinear ? "linear" : "corotational"; }
 const char* to_string(FieldFormat f) { return f == FieldFormat::kBinary ? "binary" : "ascii"; }
+const char* to_string(FieldPrecision p) { return p == FieldPrecision::kSingle ? "single" : "double"; }
 const char* to_string(ContactLaw l) { return l == ContactLaw::kHard ? "hard" : "hertz"; }
 const char* to_string(BeamTheory t) {
   return t == BeamTheory::kEulerBernoulli ? "euler-bernoulli" : "timoshenko";

@@ -28,6 +28,11 @@ struct TimeSettings {
 /// decimals). Both read back bit for bit.
 enum class FieldFormat { kBinary, kAscii };
 
+/// @brief Precision of the real numbers in the field files: single (Float32, the default: half
+/// the bytes of double, and what a viewer draws with; each value the double rounded to nearest)
+/// or double (Float64: the solver's numbers bit for bit). Node indices are Int32 either way.
+enum class FieldPrecision { kSingle, kDouble };
+
 /// @brief What a run writes besides summary.json: [output] table.
 struct OutputSettings {
   /// history.csv rows kept and written (false: only the first and last rows' energies reach the
@@ -38,6 +43,8 @@ struct OutputSettings {
   bool fields = false;
   /// Encoding of the field files (output.field_format = "binary" | "ascii").
   FieldFormat field_format = FieldFormat::kBinary;
+  /// Precision of their real numbers (output.field_precision = "single" | "double").
+  FieldPrecision field_precision = FieldPrecision::kSingle;
 };
 
 /// @brief Mass lumping choice for the element mass matrix.
@@ -56,6 +63,7 @@ const char* to_string(MassKind m);
 const char* to_string(RotaryInertia r);
 const char* to_string(Kinematics k);
 const char* to_string(FieldFormat f);
+const char* to_string(FieldPrecision p);
 /// @brief "euler-bernoulli" | "timoshenko".
 const char* to_string(BeamTheory t);
 

@@ -337,6 +337,9 @@ void read_output(TableReader& top, Scene& sc) {
   sc.output.field_format = r.choice_or("field_format", "binary", {"binary", "ascii"}) == "binary"
                                ? FieldFormat::kBinary
                                : FieldFormat::kAscii;
+  sc.output.field_precision = r.choice_or("field_precision", "single", {"single", "double"}) == "single"
+                                  ? FieldPrecision::kSingle
+                                  : FieldPrecision::kDouble;
   r.finish();
 }
 

@@ -1,7 +1,9 @@
 """Field output (`beamimpact run --fields`): the VTK files against the run's own history.csv and
 against the exact 1D wave solution of S1. The files are read with VTK's own XML reader (Debian's
 python3-vtk9, the library ParaView reads them with), not with the project's reader, and the
-binary and ASCII encodings are checked to hold the same bits. Run from ctest: BEAMIMPACT_EXE and
+binary and ASCII encodings are checked to hold the same bits, in double precision (the solver's
+numbers, compared with history.csv exactly) and in single (the default: each value the double
+rounded to nearest). Run from ctest: BEAMIMPACT_EXE and
 BEAMIMPACT_SOURCE name the program and the source tree."""
 import csv
 import os
@@ -9,13 +11,16 @@ import subprocess
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
+import numpy as np
 import pytest
 from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonCore import VTK_DOUBLE, VTK_FLOAT
 from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
 EXE = os.environ["BEAMIMPACT_EXE"]
 SCENES = Path(os.environ["BEAMIMPACT_SOURCE"]) / "verification" / "scenes" / "paper"
+DOUBLE = ("--set", "output.field_precision=double")
 
 
 def run(tmp_path, scene, *args):
@@ -25,9 +30,10 @@ def run(tmp_path, scene, *args):
     return out
 
 
-def arrays(vtu):
+def arrays(vtu, real=VTK_DOUBLE):
     """Every DataArray of a .vtu by name, as lists of floats, read by VTK (ParaView's reader): an
-    error or warning of the reader fails the test, so does a file it cannot read whole."""
+    error or warning of the reader fails the test, so does a file it cannot read whole, and so
+    does a real array (points, point data) not of VTK type `real`."""
     r = vtkXMLUnstructuredGridReader()
     complaints = []
     r.AddObserver(vtkCommand.ErrorEvent, lambda *_: complaints.append("error"))
@@ -42,18 +48,22 @@ def arrays(vtu):
          "types": vtk_to_numpy(g.GetCellTypesArray()).tolist(),
          "body": vtk_to_numpy(g.GetCellData().GetArray("body")).tolist()}
     pd = g.GetPointData()
+    assert g.GetPoints().GetDataType() == real
     for k in range(pd.GetNumberOfArrays()):
+        assert pd.GetArray(k).GetDataType() == real, pd.GetArrayName(k)
         a[pd.GetArrayName(k)] = vtk_to_numpy(pd.GetArray(k)).ravel().tolist()
     a = {name: [float(x) for x in values] for name, values in a.items()}
     return g.GetNumberOfPoints(), g.GetNumberOfCells(), a
 
 
-def ascii_arrays(vtu):
-    """Every DataArray of an ASCII .vtu by name, parsed as XML text (parsing fails on malformed XML)."""
+def ascii_arrays(vtu, real=float):
+    """Every DataArray of an ASCII .vtu by name, parsed as XML text (parsing fails on malformed XML);
+    the real arrays' text is read as `real` (float or np.float32), the others as integers."""
     root = ET.parse(vtu).getroot()
     assert root.get("type") == "UnstructuredGrid"
     piece = root.find("UnstructuredGrid/Piece")
-    a = {d.get("Name"): [float(x) for x in d.text.split()] for d in root.iter("DataArray")}
+    parse = lambda d: real if d.get("type").startswith("Float") and d.get("Name") != "TimeValue" else float
+    a = {d.get("Name"): [float(parse(d)(x)) for x in d.text.split()] for d in root.iter("DataArray")}
     return int(piece.get("NumberOfPoints")), int(piece.get("NumberOfCells")), a
 
 
@@ -69,7 +79,14 @@ def collection(out):
 
 @pytest.fixture(scope="module")
 def s1(tmp_path_factory):
-    return run(tmp_path_factory.mktemp("fields"), "s1_central", "--fields")
+    """S1's fields in double precision: the solver's numbers, comparable with history.csv bit for bit."""
+    return run(tmp_path_factory.mktemp("fields"), "s1_central", "--fields", *DOUBLE)
+
+
+@pytest.fixture(scope="module")
+def s1_single(tmp_path_factory):
+    """The same run's fields as written by default (single precision)."""
+    return run(tmp_path_factory.mktemp("fields_single"), "s1_central", "--fields")
 
 
 def test_pvd_lists_every_output_row_with_its_time(s1):
@@ -120,7 +137,7 @@ def test_a_rigid_striker_carries_the_force_at_its_contact_node(tmp_path):
     # carry none (a rigid body's centre force is not a nodal force). Exact: weights 1 and 0.
     out = tmp_path / "rigid"
     subprocess.run([EXE, "run", str(SCENES.parent / "extra" / "rigid_rod_oblique.toml"), "--out", str(out),
-                    "--quiet", "--fields"], check=True)
+                    "--quiet", "--fields", *DOUBLE], check=True)
     loaded = 0
     for row, (_, f) in zip(history(out), collection(out)):
         _, _, a = arrays(f)
@@ -159,7 +176,7 @@ def test_bending_scene_writes_rotations_and_moments(tmp_path):
     out = run(tmp_path, "s4_oblique_45", "--fields")
     rows, steps = history(out), collection(out)
     assert len(steps) == len(rows)
-    n, _, a = arrays(steps[-1][1])
+    n, _, a = arrays(steps[-1][1], VTK_FLOAT)
     assert any(x != 0.0 for x in a["rotation"]) and any(x != 0.0 for x in a["bending_moment"])
 
 
@@ -182,38 +199,71 @@ def test_history_false_keeps_no_rows_but_the_same_energies(tmp_path, s1):
     out = run(tmp_path, "s1_central", "--set", "output.history=false")
     assert not (out / "history.csv").exists()
     lean, full = (json.loads((d / "summary.json").read_text()) for d in (out, s1))
-    assert lean["settings"]["output"] == {"history": False, "fields": False, "field_format": "binary"}
+    assert lean["settings"]["output"] == {"history": False, "fields": False, "field_format": "binary",
+                                          "field_precision": "single"}  # the defaults, written out
     for key in ("energy_initial", "energy_final", "momentum_drift_max"):
         assert lean[key] == full[key]  # the same run; only the rows were not kept
     assert lean["contacts"][0]["impulse_normal"] == full["contacts"][0]["impulse_normal"]
 
 
-def test_binary_and_ascii_files_hold_the_same_bits(tmp_path, s1):
+@pytest.mark.parametrize("precision", ["double", "single"])
+def test_binary_and_ascii_files_hold_the_same_bits(tmp_path, s1, s1_single, precision):
     # The same run written in both encodings: the binary file is the default (appended raw,
-    # UInt64 block headers); the ASCII one prints shortest round-trip decimals. Every value of
-    # every array must be the same double.
-    out = run(tmp_path, "s1_central", "--fields", "--set", "output.field_format=ascii")
-    text, binary = collection(out), collection(s1)
+    # UInt64 block headers); the ASCII one prints shortest round-trip decimals of the stored type.
+    # Every value of every array must be the same number (single: the same float, so the ASCII
+    # text is read as float32 before the comparison in double).
+    out = run(tmp_path, "s1_central", "--fields", "--set", "output.field_format=ascii",
+              "--set", f"output.field_precision={precision}")
+    text, binary = collection(out), collection(s1 if precision == "double" else s1_single)
+    real = VTK_DOUBLE if precision == "double" else VTK_FLOAT
     assert len(text) == len(binary)
     for (t1, f1), (t2, f2) in list(zip(text, binary))[::40]:
         assert t1 == t2
-        n1, c1, a1 = ascii_arrays(f1)
-        n2, c2, a2 = arrays(f2)
+        n1, c1, a1 = ascii_arrays(f1, np.float32 if precision == "single" else float)
+        n2, c2, a2 = arrays(f2, real)
         assert (n1, c1) == (n2, c2)
         for name in a1:
             if name != "TimeValue":
                 assert a1[name] == a2[name], name
 
 
-def test_the_python_reader_reads_both_encodings_as_vtk_does(tmp_path, s1):
+def test_single_precision_values_are_the_doubles_rounded_to_nearest(s1, s1_single):
+    # The default field files hold float32: each value must be the double-precision file's value
+    # rounded to the nearest float (numpy's float64 -> float32 cast is IEEE round-to-nearest-even),
+    # not truncated and not computed separately; node indices and cells are the same.
+    double, single = collection(s1), collection(s1_single)
+    assert [t for t, _ in double] == [t for t, _ in single]
+    checked = 0
+    for (_, fd), (_, fs) in list(zip(double, single))[::20]:
+        nd, cd, ad = arrays(fd, VTK_DOUBLE)
+        ns, cs, as_ = arrays(fs, VTK_FLOAT)
+        assert (nd, cd) == (ns, cs) and ad.keys() == as_.keys()
+        for name, values in ad.items():
+            rounded = np.asarray(values, dtype=np.float64).astype(np.float32).astype(np.float64)
+            assert as_[name] == rounded.tolist(), name
+            checked += sum(1 for x in values if x != float(np.float32(x)))
+    assert checked > 0  # some doubles were not floats: the rounding was exercised
+    # Binary sizes: a node carries 15 real numbers (point 3, displacement 3, velocity 3, rotation,
+    # axial force, bending moment, contact force 3), each 4 bytes smaller in single precision, so
+    # the files differ by 60 bytes a node; the headers differ only in a few offset digits (1 byte
+    # a node of S1's 22 allowed).
+    saved = double[-1][1].stat().st_size - single[-1][1].stat().st_size
+    assert saved / 22 == pytest.approx(60, abs=1)
+
+
+def test_the_python_reader_reads_both_encodings_as_vtk_does(tmp_path, s1, s1_single):
     # python/beamimpact/fields.py (used by reports/animate.py and beamimpact.read_fields) against
-    # VTK's reader on the same binary file, and on the ASCII file of the same run.
+    # VTK's reader on the same binary file, and on the ASCII file of the same run, in both precisions.
     import sys
     sys.path.insert(0, str(Path(os.environ["BEAMIMPACT_SOURCE"]) / "python" / "beamimpact"))
     import fields as reader
-    out = run(tmp_path, "s1_central", "--fields", "--set", "output.field_format=ascii", "--set", "time.end=0.6")
-    for f in (collection(s1)[55][1], collection(out)[55][1]):
-        _, _, a = arrays(f)
+    text = run(tmp_path, "s1_central", "--fields", "--set", "output.field_format=ascii", "--set", "time.end=0.6", *DOUBLE)
+    text32 = run(tmp_path / "single", "s1_central", "--fields", "--set", "output.field_format=ascii",
+                 "--set", "time.end=0.6")
+    files = [(collection(s1)[55][1], VTK_DOUBLE), (collection(text)[55][1], VTK_DOUBLE),
+             (collection(s1_single)[55][1], VTK_FLOAT), (collection(text32)[55][1], VTK_FLOAT)]
+    for f, real in files:
+        _, _, a = arrays(f, real)
         frame = reader.read_vtu(f)
         assert frame["displacement"].ravel().tolist() == a["displacement"]
         assert frame["contact_force"].ravel().tolist() == a["contact_force"]
@@ -225,3 +275,10 @@ def test_a_bad_field_format_is_refused_with_the_key(tmp_path):
                         "--set", "output.field_format=hdf5"], capture_output=True, text=True)
     assert p.returncode == 2
     assert "output.field_format" in p.stderr and "binary" in p.stderr
+
+
+def test_a_bad_field_precision_is_refused_with_the_key(tmp_path):
+    p = subprocess.run([EXE, "run", str(SCENES / "s1_central.toml"), "--out", str(tmp_path / "x"), "--fields",
+                        "--set", "output.field_precision=half"], capture_output=True, text=True)
+    assert p.returncode == 2
+    assert "output.field_precision" in p.stderr and "single" in p.stderr and "double" in p.stderr

@@ -1,4 +1,4 @@
-# Sanitizers and debug checks (issue 16), for every target of the project.
+# Sanitizers and debug checks, for every target of the project.
 # - Debug builds: -D_GLIBCXX_ASSERTIONS (bounds-checked operator[], front/back on empty, ...).
 # - BEAMIMPACT_SANITIZE=ON: AddressSanitizer + UndefinedBehaviorSanitizer, any error aborts.
 #   float-cast-overflow (a double too large for its integer type, e.g. a step count) is not part

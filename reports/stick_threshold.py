@@ -2,8 +2,8 @@
 """@brief The discrete stick threshold of the paper's closure step against the closure phase.
 
 At the step in which an open contact closes, the paper's stick test compares the tangential
-increment of the whole step with a penetration that builds up only after the closure instant
-(issue 12). The smallest mu at which the closure step sticks therefore moves with where in the
+increment of the whole step with a penetration that builds up only after the closure instant.
+The smallest mu at which the closure step sticks therefore moves with where in the
 step the contact closes. This script measures that threshold, black-box, with the `beamimpact`
 program: S4 (verification/scenes/paper/s4_oblique_*.toml) is started with the striker shifted
 along its velocity by f |v| dt (f = 0, 1/N, ..., (N-1)/N: the closure phase phi sweeps one step),

@@ -1,4 +1,4 @@
-// Hard cases of the paper's integrator (issue 12), each checked against the deformed geometry
+// Hard cases of the paper's integrator, each checked against the deformed geometry
 // (node positions + displacements from the history rows), never against the solver's own gap.
 #include <solver/paper/solve.hpp>
 
@@ -198,7 +198,7 @@ TEST(HardCases, TurnedTargetWithoutASlideDoesNotWarn) {
     EXPECT_EQ(w.get<std::string>().find("turned"), std::string::npos) << w;
 }
 
-// ---- The real gap (issue 11/12): measured every step from the deformed geometry -------------
+// ---- The real gap: measured every step from the deformed geometry --------------------------
 
 /// The smallest real gap of contact c over the run (m), computed here at every step from the
 /// integrator's U with the target's own interpolation (model/deformed_geometry), not from the

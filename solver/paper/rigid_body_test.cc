@@ -1,4 +1,4 @@
-// Rigid bodies (issue 11): a rigid rod falling without spin onto an immovable rigid surface with
+// Rigid bodies: a rigid rod falling without spin onto an immovable rigid surface with
 // Coulomb friction, against the closed form of references.md section 3 (restitution 0).
 #include <solver/paper/solve.hpp>
 

@@ -208,7 +208,7 @@ ContactState closure_state(int angle, double f, double mu, const std::string& cl
 // increment| / |penetration|; measured from the closure instant both grow at the approach speeds,
 // so the threshold is v_t / v_n = cot(alpha0) exactly, at every closure phase. The option
 // closure_slip = "from_closure" must give exactly that (bracketed at 1e-6: the phase follows from
-// rigid free flight, exact to roundoff). The paper's whole-step test does not (issue 12: measured
+// rigid free flight, exact to roundoff). The paper's whole-step test does not (measured
 // thresholds 0.61 to 8.6 at 60 deg): its threshold is cot(alpha0) / (1 - phi), checked below.
 TEST(Friction, ClosureStepStickThresholdIsCotAlphaFromTheClosureInstant) {
   for (int a : {60, 45}) {

@@ -118,7 +118,7 @@ TEST(Cli, BadInputExitsTwoWithOneMessageAndNoResult) {
       {"unknown support direction", "run " + bad_scene("fix = [\"y\"]", "fix = [\"across\"]"),
        "key 'bodies[1].supports[1].fix': expected some of \"x\", \"y\", \"theta\", \"axial\", \"normal\""},
       {"bad --set", "run " + paper_scene("s1_central") + " --set nonsense", "--set expects key=value"},
-      // Non-physical magnitudes (issue 16): each ended in a zero mass or an infinite energy, exit 3.
+      // Non-physical magnitudes: each ended in a zero mass or an infinite energy, exit 3.
       {"denormal rho", "run " + paper_scene("s1_central") + " --set bodies[0].rho=5e-324",
        "key 'bodies[0].rho': expected a positive number between 1e-30 and 1e30 (kg/m^3)"},
       {"huge velocity", "run " + paper_scene("s1_central") + " --set bodies[0].velocity=[1e308,0]",

@@ -251,9 +251,9 @@ TEST_F(Commands, SweepTabulatesEachStep) {
   EXPECT_EQ(run(fmt::format("sweep {} --dt -0.01 --out '{}'", s1, (tmp_ / "sw2").string())).code, 2);
 }
 
-// Bad options of compare and sweep (issue 16): exit 2 naming the option, nothing run. Before, --grid 0
-// or nan fell back to the default, --grid 1e-9 died of std::bad_alloc, --mesh 0 and an unknown
-// reference exited 3 after starting runs.
+// Bad options of compare and sweep: exit 2 naming the option, nothing run (not a fall-back to the
+// default for --grid 0 or nan, not std::bad_alloc for --grid 1e-9, not exit 3 after starting runs
+// for --mesh 0 or an unknown reference).
 TEST_F(Commands, BadCompareAndSweepOptionsExitTwo) {
   const std::string s1 = "verification/scenes/paper/s1_central.toml",
                     s2 = "verification/scenes/paper/s2_transverse.toml";

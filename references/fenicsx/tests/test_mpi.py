@@ -1,4 +1,4 @@
-"""Serial and `mpirun -n 2` runs give the same results to 1e-10 relative (issue 6).
+"""Serial and `mpirun -n 2` runs give the same results to 1e-10 relative.
 
 Runs S2 (supports, frictionless node-to-surface contact, 3 s), S4 at 60 deg (friction,
 stick and slip) up to 0.025 s (the first two contact intervals) and the bouncing bar (gravity,

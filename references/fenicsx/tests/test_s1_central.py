@@ -21,13 +21,13 @@ E, rho, A, L, v0, g0 = 100.0, 1.0, 0.4, 10.0, 1.0, 0.5
 cw = np.sqrt(E / rho)
 impulse = rho * cw * A * v0 / 2 * 2 * L / cw
 
-# Issue 6: impulse within 1 % of 4 N s. Momentum is conserved exactly, so the deficit is the
+# Impulse within 1 % of 4 N s. Momentum is conserved exactly, so the deficit is the
 # momentum that A keeps: Q2 dispersion smears the wave front, and the ringing behind it is still
 # in A at release (measured 0.28 % at the default mesh = A's final 0.0028 m/s x 4 kg).
 check = common.check
 check(abs(c["impulse_normal"] - impulse) <= 0.01 * impulse,
       f"impulse {c['impulse_normal']:.6f} N s within 1 % of {impulse} N s")
-# Issue 6: one contact interval within 0.02 s (two scene steps) of [0.5, 2.5] s.
+# One contact interval within 0.02 s (two scene steps) of [0.5, 2.5] s.
 iv = c["intervals"]
 check(len(iv) == 1, f"one contact interval: {iv}")
 check(abs(iv[0][0] - g0 / v0) <= 0.02 and abs(iv[0][1] - (g0 / v0 + 2 * L / cw)) <= 0.02,

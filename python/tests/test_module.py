@@ -202,11 +202,12 @@ def test_no_history_no_memory_growth_over_a_million_steps():
 
 def test_fields_from_python_read_back(tmp_path):
     # run(fields=True) writes the same VTK fields as `beamimpact run --fields`; read_fields streams
-    # them: one frame per history row, the striker node (A's end, node 10) moving as ua in history.
+    # them: one frame per history row, the striker node (A's end, node 10) moving as ua in history
+    # (the fields in single precision, the default: history's double rounded to the nearest float).
     r = beamimpact.run(PAPER / "s1_central.toml", out=tmp_path / "s1", fields=True, progress=False)
     frames = list(beamimpact.read_fields(tmp_path / "s1"))
     assert [t for t, _ in frames] == list(r.columns["t"])
-    assert [f["displacement"][10, 0] for _, f in frames] == list(r.columns["ua_x"])
+    assert [f["displacement"][10, 0] for _, f in frames] == [float(np.float32(u)) for u in r.columns["ua_x"]]
     assert all(len(f["points"]) == 22 for _, f in frames)
     with pytest.raises(beamimpact.SceneError, match="output.fields.*output directory"):
         beamimpact.run(PAPER / "s1_central.toml", fields=True, progress=False)

@@ -36,10 +36,10 @@ Eigen::VectorXd spread_vector(int n) {
 }
 
 /// The elastic elements of a model in model order (a rigid body's left out), each one's
-/// equations (w of them, -1 after) formed when asked rather than stored.
+/// equations read in place from the model.
 class ElasticElements {
  public:
-  ElasticElements(const Model& model, int w) : model_(model), w_(w) {
+  explicit ElasticElements(const Model& model) : model_(model) {
     const auto& els = model.elements();
     all_ = std::none_of(els.begin(), els.end(), [](const Model::Element& el) { return el.rigid; });
     if (!all_)
@@ -52,17 +52,11 @@ class ElasticElements {
   }
   /// The model's index of elastic element e.
   int model_element(int e) const { return all_ ? e : index_[e]; }
-  /// Elastic element e's equations.
-  std::array<int, 6> equations(int e) const {
-    const Eigen::Matrix<int, 6, 1> eq = model_.element_equations(model_element(e));
-    std::array<int, 6> be{};
-    for (int i = 0; i < 6; ++i) be[i] = i < w_ ? eq(i) : -1;
-    return be;
-  }
+  /// Elastic element e's w equations, in place.
+  const int* equations(int e) const { return model_.element_dofs(model_element(e)).data(); }
 
  private:
   const Model& model_;
-  int w_;
   bool all_ = true;
   std::vector<int> index_;  ///< the model element of each elastic element, when some are rigid
 };
@@ -147,12 +141,12 @@ void InternalForce::build_blocks(int parts) {
 
 bool InternalForce::build_spans(const std::vector<int>& block_of_group, int w) {
   const int n = model_.size(), per = w / 2;
-  const ElasticElements elastic(model_, w);
+  const ElasticElements elastic(model_);
   const int ne = elastic.size();
   // The first and the last element (in model order) that touch each equation.
   std::vector<int> first(n, -1), last(n, -1);
   for (int e = 0; e < ne; ++e) {
-    const std::array<int, 6> eq = elastic.equations(e);
+    const int* eq = elastic.equations(e);
     for (int i = 0; i < w; ++i)
       if (const int q = eq[i]; q >= 0) {
         if (first[q] < 0) first[q] = e;
@@ -169,7 +163,7 @@ bool InternalForce::build_spans(const std::vector<int>& block_of_group, int w) {
     }
   // The equations whose first (or last) element is e, as one range [lo, hi); lo = hi = 0 when
   // there are none. False when they are not one range.
-  auto owned = [&](int e, const std::array<int, 6>& eq, const std::vector<int>& owner, int& lo, int& hi) {
+  auto owned = [&](int e, const int* eq, const std::vector<int>& owner, int& lo, int& hi) {
     lo = hi = 0;
     int members = 0, mn = n, mx = -1;
     for (int i = 0; i < w; ++i)
@@ -185,11 +179,11 @@ bool InternalForce::build_spans(const std::vector<int>& block_of_group, int w) {
   };
   spans_.clear();
   for (int e = 0; e < ne; ++e) {
-    const std::array<int, 6> eq = elastic.equations(e);
+    const int* eq = elastic.equations(e);
     Span s{};
     s.count = 1;
     s.block = block_of_group[model_.element_group(elastic.model_element(e))];
-    for (int i = 0; i < 6; ++i) s.eq[i] = eq[i];
+    for (int i = 0; i < 6; ++i) s.eq[i] = i < w ? eq[i] : -1;
     if (!owned(e, eq, first, s.zero_lo, s.zero_hi) || !owned(e, eq, last, s.done_lo, s.done_hi)) {
       spans_.clear();
       untouched_.clear();

@@ -16,6 +16,8 @@
 /// for both; code that reads components 0 and 1 of equation() directly must use node_axis().
 
 #include <array>
+#include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -142,6 +144,13 @@ class Model {
   bool rigid(int b) const { return rigid_eq_[b][0] != kNotRigid; }
   /// @brief Equation index of each of the element's 6 (frame) or 2 (rod) DOFs, -1 when fixed.
   Eigen::Matrix<int, 6, 1> element_equations(int e) const;
+  /// @brief element_equations(e) in place: its 2 x dofs_per_node() entries, no copy (the set-up's
+  /// loops over every element read them this way).
+  /// @param e element index
+  std::span<const int> element_dofs(int e) const {
+    const std::size_t w = 2 * static_cast<std::size_t>(dofs_per_node_);
+    return {element_eq_.data() + static_cast<std::size_t>(e) * w, w};
+  }
 
  private:
   static constexpr int kNotRigid = -2;
@@ -160,6 +169,8 @@ class Model {
   std::vector<char> add_bodies(const Scene& scene);
   void number_equations(const Scene& scene, std::vector<char> fixed);
   std::vector<int> form_groups();
+  /// The elements of body b, [first, end): each body's nodes are its elements plus one.
+  std::array<int, 2> body_elements(int b) const;
   struct Assembly;  ///< the assembly's scratch (Model.cc)
   void assemble(const Scene& scene, const std::vector<int>& group_first);
   /// Each group's nonzero entries of K_e and M_e and its M_e r for the rigid translations.

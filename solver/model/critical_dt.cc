@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -105,17 +106,23 @@ struct Solved {
   int e, f;
 };
 
-/// Whether the runs of elements from e and from le (their equations eqk and eql) have equal
-/// matrices: as many elements, each with the same section and geometry, the same axes at its
-/// nodes when some node is in its body's axes, and the same equation pattern relative to its
-/// run's first equation. Compared in place, element by element (no key formed).
-bool same_run(const Model& model, int e, const std::vector<Eigen::Matrix<int, 6, 1>>& eqk, int le,
-              const std::vector<Eigen::Matrix<int, 6, 1>>& eql) {
-  if (eql.empty() || eqk.size() != eql.size()) return false;
+/// The largest of element e's equations (-1 when all are fixed).
+int top_equation(const Model& model, int e) {
+  const std::span<const int> q = model.element_dofs(e);
+  return std::max(-1, *std::max_element(q.begin(), q.end()));
+}
+
+/// Whether the runs of `count` elements from e and `count_l` from le have equal matrices: as
+/// many elements, each with the same section and geometry, the same axes at its nodes when some
+/// node is in its body's axes, and the same equation pattern relative to its run's first
+/// element's largest equation. Compared in place, element by element (no key formed, no
+/// equations copied).
+bool same_run(const Model& model, int e, int count, int le, int count_l) {
+  if (count_l == 0 || count != count_l) return false;
   const std::vector<Model::Element>& els = model.elements();
   const int ne = 2 * model.dofs_per_node();
-  const int a0 = eqk.front().maxCoeff(), b0 = eql.front().maxCoeff();
-  for (std::size_t k = 0; k < eqk.size(); ++k) {
+  const int a0 = top_equation(model, e), b0 = top_equation(model, le);
+  for (int k = 0; k < count; ++k) {
     const Model::Element &x = els[e + k], &y = els[le + k];
     if (!(x.E == y.E && x.area == y.area && x.inertia == y.inertia && x.rho == y.rho &&
           x.length == y.length && x.c == y.c && x.s == y.s))
@@ -125,8 +132,9 @@ bool same_run(const Model& model, int e, const std::vector<Eigen::Matrix<int, 6,
         if (!(model.node_axis(p)[0] == model.node_axis(q)[0] &&
               model.node_axis(p)[1] == model.node_axis(q)[1]))
           return false;
+    const std::span<const int> eqk = model.element_dofs(e + k), eql = model.element_dofs(le + k);
     for (int i = 0; i < ne; ++i) {
-      const int p = eqk[k](i), q = eql[k](i);
+      const int p = eqk[i], q = eql[i];
       if ((p >= 0) != (q >= 0) || (p >= 0 && p - a0 != q - b0)) return false;
     }
   }
@@ -200,8 +208,8 @@ SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_
   double lam = 0.0, lam_last = 0.0, bracket_lower = 0.0;
   std::vector<Solved> solved;  // the runs Laguerre's iteration solved
   RunScratch scratch;
-  std::vector<Eigen::Matrix<int, 6, 1>> eqk, eq_last;  // the run's elements' equations, the last new run's
-  int e_last = 0;                                      // the last new run's first element
+  std::vector<Eigen::Matrix<int, 6, 1>> eqk;  // the run's elements' equations
+  int e_last = 0, count_last = 0;             // the last new run's first element and size
   for (int e = 0; e < nel;) {
     if (els[e].rigid) {  // a rigid body has no element stiffness
       ++e;
@@ -211,14 +219,14 @@ SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_
     while (f < nel && f - e < max_elements && els[f].body == els[e].body && !els[f].rigid) ++f;
     if ((e > 0 && els[e - 1].body == els[e].body) || (f < nel && els[f].body == els[e].body))
       out.exact = false;
-    run_equations(model, e, f, eqk);
-    if (same_run(model, e, eqk, e_last, eq_last)) {  // equal matrices: reuse the last eigenvalue
+    if (same_run(model, e, f - e, e_last, count_last)) {  // equal matrices: reuse the last eigenvalue
       lam = std::max(lam, lam_last);
       e = f;
       continue;
     }
     e_last = e;
-    eq_last = eqk;
+    count_last = f - e;
+    run_equations(model, e, f, eqk);
     const EnvelopePencil run = run_pencil(model, e, eqk, {}, scratch);
     const int d = run.size();
     lam_last = 0.0;  // no free DOF: nothing moves

@@ -113,6 +113,10 @@ class Model {
   double body_mass(int b) const { return body_mass_[b]; }
   /// @brief Number of bodies.
   int num_bodies() const { return static_cast<int>(body_first_node_.size()); }
+  /// @brief The range [first, end) of body b's elements in elements() (a body's elements are
+  /// consecutive: per-body loops need not read every element's `body`).
+  /// @param b body index
+  std::array<int, 2> body_elements(int b) const;
   /// @brief One element: its body, global node ids, section and reference geometry.
   struct Element {
     int body, n1, n2;
@@ -169,8 +173,6 @@ class Model {
   std::vector<char> add_bodies(const Scene& scene);
   void number_equations(const Scene& scene, std::vector<char> fixed);
   std::vector<int> form_groups();
-  /// The elements of body b, [first, end): each body's nodes are its elements plus one.
-  std::array<int, 2> body_elements(int b) const;
   struct Assembly;  ///< the assembly's scratch (Model.cc)
   void assemble(const Scene& scene, const std::vector<int>& group_first);
   /// Each group's nonzero entries of K_e and M_e and its M_e r for the rigid translations.

@@ -220,15 +220,15 @@ std::vector<int> Model::form_groups() {
   group_.assign(elements_.size(), -1);
   std::vector<int> group_first;  // the first element of each group
   int last = -1;                 // the current group's first element
-  bool last_equal = false;       // same_element_matrices(last, last): false with a NaN field
   for (int b = 0; b < num_bodies(); ++b) {
     const auto [first, end] = body_elements(b);
     if (first == end || elements_[first].rigid) continue;  // geometry only
+    // add_bodies gives a body's elements copies of the same fields: with no node in its body's
+    // axes, each after the first compares with `last` as the first did (joined: true), or as
+    // `last` with itself when the body started the group (false with a NaN field).
+    bool joined = false;
     for (int e = first; e < end; ++e) {
-      // add_bodies gives a body's elements copies of the same fields: with no node in its body's
-      // axes, e compares with `last` of its body as `last` compares with itself.
-      const bool joins =
-          last >= first && !any_rotated() ? last_equal : last >= 0 && same_element_matrices(e, last);
+      const bool joins = e > first && !any_rotated() ? joined : last >= 0 && same_element_matrices(e, last);
       if (!joins) {
         const Element& el = elements_[e];
         ElementGroup& grp =
@@ -237,8 +237,8 @@ std::vector<int> Model::form_groups() {
         if (!lumped_) to_node_axes(e, grp.M);  // a lumped mass is the same in every frame
         group_first.push_back(e);
         last = e;
-        last_equal = same_element_matrices(e, e);
       }
+      joined = joins || same_element_matrices(e, e);
       group_[e] = static_cast<int>(groups_.size()) - 1;
     }
   }

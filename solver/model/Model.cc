@@ -49,6 +49,26 @@ class ColumnBuilder {
     A_.valuePtr()[k] = v;
   }
 
+  /// add(eq[z.i], eq[z.j], z.v) for each of an element's nonzeros z in order, those of a fixed
+  /// DOF (-1) left out: the element loop's add() with the matrix's arrays held in registers.
+  void add_element(const std::vector<Nonzero>& nonzeros, const int* eq) {
+    if (!placing_) {
+      int* count = start_.data() + 1;
+      for (const Nonzero& z : nonzeros)
+        if (eq[z.i] >= 0 && eq[z.j] >= 0) ++count[eq[z.j]];
+      return;
+    }
+    int* fill = fill_.data();
+    int* row = A_.innerIndexPtr();
+    double* val = A_.valuePtr();
+    for (const Nonzero& z : nonzeros)
+      if (eq[z.i] >= 0 && eq[z.j] >= 0) {
+        const int k = fill[eq[z.j]]++;
+        row[k] = eq[z.i];
+        val[k] = z.v;
+      }
+  }
+
   /// Ends the counting pass: each column's entries get their slots, in the order they come.
   void place() {
     const int n = static_cast<int>(A_.cols());
@@ -333,8 +353,6 @@ void Model::add_rigid_masses(const Scene& scene, bool counting, Assembly& a) {
 
 void Model::add_elements(bool counting, Assembly& a) {
   const int ne = 2 * dofs_per_node_;
-  // A lumped mass is summed in the counting pass: the placing pass has only K's entries to place.
-  const bool masses = counting || !lumped_;
   for (int b = 0; b < num_bodies(); ++b) {
     const auto [first, end] = body_elements(b);
     if (rigid(b)) continue;  // geometry only
@@ -346,15 +364,12 @@ void Model::add_elements(bool counting, Assembly& a) {
         for (int c = 0; c < 2; ++c)
           for (int i = 0; i < ne; ++i)
             if (eq[i] >= 0) momentum[c][eq[i]] += grp.mr(i, c);
-      for (const Nonzero& z : grp.k)
-        if (eq[z.i] >= 0 && eq[z.j] >= 0) a.kb.add(eq[z.i], eq[z.j], z.v);
-      if (!masses) continue;
-      for (const Nonzero& z : grp.m) {
-        if (eq[z.i] < 0 || eq[z.j] < 0) continue;
-        if (!lumped_)
-          a.mb.add(eq[z.i], eq[z.j], z.v);
-        else
-          a.mdiag(eq[z.i]) += z.v;
+      a.kb.add_element(grp.k, eq);
+      if (!lumped_) {
+        a.mb.add_element(grp.m, eq);
+      } else if (counting) {
+        for (const Nonzero& z : grp.m)
+          if (eq[z.i] >= 0 && eq[z.j] >= 0) a.mdiag(eq[z.i]) += z.v;
       }
     }
   }

@@ -320,12 +320,16 @@ bool InternalForce::build_parts(int parts) {
   // Part t: elements [start[t], start[t + 1]).
   std::vector<int> start(parts + 1);
   for (int t = 0; t <= parts; ++t) start[t] = static_cast<int>(static_cast<long>(t) * ne / parts);
-  auto part_of = [&](int e) {
-    return static_cast<int>(std::upper_bound(start.begin(), start.end(), e) - start.begin()) - 1;
+  // Equation q is touched by two parts when a part starts after its first element and at or
+  // before its last.
+  auto crosses = [&](int q) {
+    for (int t = 1; t < parts; ++t)
+      if (first[q] < start[t] && start[t] <= last[q]) return true;
+    return false;
   };
   parts_.assign(parts, Part{});
   g = 0;
-  int t = 0;  // part_of(g), stepped with g (the parts' starts increase: ne >= 2 parts)
+  int t = 0;  // the part of element g, stepped with g (the parts' starts increase: ne >= 2 parts)
   for (const Span& sp : spans_)
     for (int k = 0; k < sp.count; ++k, ++g) {
       while (g >= start[t + 1]) ++t;
@@ -362,7 +366,7 @@ bool InternalForce::build_parts(int parts) {
     }
   for (Part& p : parts_) p.side.assign(p.side_eq.size(), 0.0);
   for (int q = 0; q < n; ++q)
-    if (first[q] >= 0 && part_of(first[q]) != part_of(last[q])) {
+    if (first[q] >= 0 && crosses(q)) {
       if (!boundary_.empty() && boundary_.back()[1] == q)
         ++boundary_.back()[1];
       else

@@ -35,11 +35,26 @@ Eigen::VectorXd spread_vector(int n) {
   return q;
 }
 
+/// kx = K x and scale = |K| x (x > 0: |x| is x) in one sweep over K, each entry summed in the
+/// order of Eigen's column-major product.
+void product_and_scale(const SparseMatrix& K, const Eigen::VectorXd& x, Eigen::VectorXd& kx,
+                       Eigen::VectorXd& scale) {
+  kx.setZero();
+  scale.setZero();
+  for (Eigen::Index j = 0; j < K.outerSize(); ++j) {
+    const double xj = x(j);
+    for (SparseMatrix::InnerIterator it(K, j); it; ++it) {
+      kx(it.index()) += it.value() * xj;
+      scale(it.index()) += std::abs(it.value()) * xj;
+    }
+  }
+}
+
 /// The elastic elements of a model in model order (a rigid body's left out), each one's
-/// equations (w of them, -1 after) formed when asked rather than stored.
+/// equations read in place from the model.
 class ElasticElements {
  public:
-  ElasticElements(const Model& model, int w) : model_(model), w_(w) {
+  explicit ElasticElements(const Model& model) : model_(model) {
     const auto& els = model.elements();
     all_ = std::none_of(els.begin(), els.end(), [](const Model::Element& el) { return el.rigid; });
     if (!all_)
@@ -52,20 +67,43 @@ class ElasticElements {
   }
   /// The model's index of elastic element e.
   int model_element(int e) const { return all_ ? e : index_[e]; }
-  /// Elastic element e's equations.
-  std::array<int, 6> equations(int e) const {
-    const Eigen::Matrix<int, 6, 1> eq = model_.element_equations(model_element(e));
-    std::array<int, 6> be{};
-    for (int i = 0; i < 6; ++i) be[i] = i < w_ ? eq(i) : -1;
-    return be;
-  }
+  /// Elastic element e's w equations, in place.
+  const int* equations(int e) const { return model_.element_dofs(model_element(e)).data(); }
 
  private:
   const Model& model_;
-  int w_;
   bool all_ = true;
   std::vector<int> index_;  ///< the model element of each elastic element, when some are rigid
 };
+
+/// The first and the last elastic element (in model order) that touch each of the n equations,
+/// -1 for none; w equations an element.
+void touching_elements(const ElasticElements& elastic, int n, int w, std::vector<int>& first,
+                       std::vector<int>& last) {
+  first.assign(n, -1);
+  last.assign(n, -1);
+  for (int e = 0; e < elastic.size(); ++e) {
+    const int* eq = elastic.equations(e);
+    for (int i = 0; i < w; ++i)
+      if (const int q = eq[i]; q >= 0) {
+        if (first[q] < 0) first[q] = e;
+        last[q] = e;
+      }
+  }
+}
+
+/// The equations no element touches (first[q] < 0), as ranges [lo, hi).
+std::vector<std::array<int, 2>> untouched_ranges(const std::vector<int>& first) {
+  std::vector<std::array<int, 2>> ranges;
+  for (int q = 0; q < static_cast<int>(first.size()); ++q)
+    if (first[q] < 0) {
+      if (!ranges.empty() && ranges.back()[1] == q)
+        ++ranges.back()[1];
+      else
+        ranges.push_back({q, q + 1});
+    }
+  return ranges;
+}
 
 }  // namespace
 
@@ -127,8 +165,7 @@ void InternalForce::build_blocks(int parts) {
   if (use_blocks_) {
     const Eigen::VectorXd x = spread_vector(n);
     Eigen::VectorXd kx(n), bx(n), scale(n);
-    kx.noalias() = model_.K() * x;
-    scale.noalias() = model_.K().cwiseAbs() * x;  // x > 0: |x| is x
+    product_and_scale(model_.K(), x, kx, scale);
     std::vector<int> finished(n, 0);
     auto count = [&](int lo, int hi) {
       for (int i = lo; i < hi; ++i) ++finished[i];
@@ -147,29 +184,14 @@ void InternalForce::build_blocks(int parts) {
 
 bool InternalForce::build_spans(const std::vector<int>& block_of_group, int w) {
   const int n = model_.size(), per = w / 2;
-  const ElasticElements elastic(model_, w);
+  const ElasticElements elastic(model_);
   const int ne = elastic.size();
-  // The first and the last element (in model order) that touch each equation.
-  std::vector<int> first(n, -1), last(n, -1);
-  for (int e = 0; e < ne; ++e) {
-    const std::array<int, 6> eq = elastic.equations(e);
-    for (int i = 0; i < w; ++i)
-      if (const int q = eq[i]; q >= 0) {
-        if (first[q] < 0) first[q] = e;
-        last[q] = e;
-      }
-  }
-  untouched_.clear();
-  for (int q = 0; q < n; ++q)
-    if (first[q] < 0) {
-      if (!untouched_.empty() && untouched_.back()[1] == q)
-        ++untouched_.back()[1];
-      else
-        untouched_.push_back({q, q + 1});
-    }
+  std::vector<int> first, last;
+  touching_elements(elastic, n, w, first, last);
+  untouched_ = untouched_ranges(first);
   // The equations whose first (or last) element is e, as one range [lo, hi); lo = hi = 0 when
   // there are none. False when they are not one range.
-  auto owned = [&](int e, const std::array<int, 6>& eq, const std::vector<int>& owner, int& lo, int& hi) {
+  auto owned = [&](int e, const int* eq, const std::vector<int>& owner, int& lo, int& hi) {
     lo = hi = 0;
     int members = 0, mn = n, mx = -1;
     for (int i = 0; i < w; ++i)
@@ -183,13 +205,31 @@ bool InternalForce::build_spans(const std::vector<int>& block_of_group, int w) {
     hi = mx + 1;
     return hi - lo == members;
   };
+  // The common case first: element e is the next of the last span, a chain, when it has that
+  // span's block, its equations advanced by one node's DOFs, and is the first element on its
+  // second node's equations and the last on its first node's (what the general test below
+  // finds, without forming the element's span).
+  auto continues_chain = [&](const int* eq, int e, int block) {
+    const Span& p = spans_.back();
+    const int q0 = p.eq[0] + p.count * per;
+    if (!p.chain || p.block != block) return false;
+    for (int i = 0; i < w; ++i)
+      if (eq[i] != q0 + i || (first[q0 + i] == e) != (i >= per) || (last[q0 + i] == e) != (i < per))
+        return false;
+    return true;
+  };
   spans_.clear();
   for (int e = 0; e < ne; ++e) {
-    const std::array<int, 6> eq = elastic.equations(e);
+    const int* eq = elastic.equations(e);
+    const int block = block_of_group[model_.element_group(elastic.model_element(e))];
+    if (!spans_.empty() && continues_chain(eq, e, block)) {
+      ++spans_.back().count;
+      continue;
+    }
     Span s{};
     s.count = 1;
-    s.block = block_of_group[model_.element_group(elastic.model_element(e))];
-    for (int i = 0; i < 6; ++i) s.eq[i] = eq[i];
+    s.block = block;
+    for (int i = 0; i < 6; ++i) s.eq[i] = i < w ? eq[i] : -1;
     if (!owned(e, eq, first, s.zero_lo, s.zero_hi) || !owned(e, eq, last, s.done_lo, s.done_hi)) {
       spans_.clear();
       untouched_.clear();
@@ -280,14 +320,20 @@ bool InternalForce::build_parts(int parts) {
   // Part t: elements [start[t], start[t + 1]).
   std::vector<int> start(parts + 1);
   for (int t = 0; t <= parts; ++t) start[t] = static_cast<int>(static_cast<long>(t) * ne / parts);
-  auto part_of = [&](int e) {
-    return static_cast<int>(std::upper_bound(start.begin(), start.end(), e) - start.begin()) - 1;
+  // Equation q is touched by two parts when a part starts after its first element and at or
+  // before its last.
+  auto crosses = [&](int q) {
+    for (int t = 1; t < parts; ++t)
+      if (first[q] < start[t] && start[t] <= last[q]) return true;
+    return false;
   };
   parts_.assign(parts, Part{});
   g = 0;
+  int t = 0;  // the part of element g, stepped with g (the parts' starts increase: ne >= 2 parts)
   for (const Span& sp : spans_)
     for (int k = 0; k < sp.count; ++k, ++g) {
-      const int t = part_of(g), k0 = start[t];
+      while (g >= start[t + 1]) ++t;
+      const int k0 = start[t];
       Part& p = parts_[t];
       unsigned apart = 0;  // rows of equations an earlier part touches first
       for (int i = 0; i < w; ++i)
@@ -320,7 +366,7 @@ bool InternalForce::build_parts(int parts) {
     }
   for (Part& p : parts_) p.side.assign(p.side_eq.size(), 0.0);
   for (int q = 0; q < n; ++q)
-    if (first[q] >= 0 && part_of(first[q]) != part_of(last[q])) {
+    if (first[q] >= 0 && crosses(q)) {
       if (!boundary_.empty() && boundary_.back()[1] == q)
         ++boundary_.back()[1];
       else

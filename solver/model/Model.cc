@@ -1,5 +1,6 @@
 #include <solver/model/Model.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -46,6 +47,26 @@ class ColumnBuilder {
     const int k = fill_[c]++;
     A_.innerIndexPtr()[k] = r;
     A_.valuePtr()[k] = v;
+  }
+
+  /// add(eq[z.i], eq[z.j], z.v) for each of an element's nonzeros z in order, those of a fixed
+  /// DOF (-1) left out: the element loop's add() with the matrix's arrays held in registers.
+  void add_element(const std::vector<Nonzero>& nonzeros, const int* eq) {
+    if (!placing_) {
+      int* count = start_.data() + 1;
+      for (const Nonzero& z : nonzeros)
+        if (eq[z.i] >= 0 && eq[z.j] >= 0) ++count[eq[z.j]];
+      return;
+    }
+    int* fill = fill_.data();
+    int* row = A_.innerIndexPtr();
+    double* val = A_.valuePtr();
+    for (const Nonzero& z : nonzeros)
+      if (eq[z.i] >= 0 && eq[z.j] >= 0) {
+        const int k = fill[eq[z.j]]++;
+        row[k] = eq[z.i];
+        val[k] = z.v;
+      }
   }
 
   /// Ends the counting pass: each column's entries get their slots, in the order they come.
@@ -189,31 +210,57 @@ void Model::number_equations(const Scene& scene, std::vector<char> fixed) {
     }
   dof_to_eq_.resize(node_dofs);  // node DOFs only: equation() never sees the centres' slots
   // Each element's equations, looked up once: the set-up asks for them several times an element.
-  const int w = 2 * dpn;
-  element_eq_.resize(elements_.size() * static_cast<std::size_t>(w));
-  for (std::size_t e = 0; e < elements_.size(); ++e) {
-    const int nodes[2] = {elements_[e].n1, elements_[e].n2};
-    for (int k = 0; k < 2; ++k)
-      for (int c = 0; c < dpn; ++c) element_eq_[e * w + k * dpn + c] = equation(nodes[k], c);
+  // An elastic body's element joins nodes n and n + 1, whose DOFs are consecutive: its equations
+  // are those DOFs' (equation() without its per-DOF body lookup).
+  const std::size_t w = 2 * static_cast<std::size_t>(dpn);
+  element_eq_.resize(elements_.size() * w);
+  for (int b = 0; b < num_bodies(); ++b) {
+    const auto [first, end] = body_elements(b);
+    for (int e = first; e < end; ++e) {
+      int* out = element_eq_.data() + static_cast<std::size_t>(e) * w;
+      const int n1 = body_first_node_[b] + (e - first);
+      if (!rigid(b)) {
+        std::copy_n(dof_to_eq_.data() + static_cast<std::size_t>(n1) * dpn, w, out);
+        continue;
+      }
+      for (int k = 0; k < 2; ++k)
+        for (int c = 0; c < dpn; ++c) out[k * dpn + c] = equation(n1 + k, c);
+    }
   }
+}
+
+std::array<int, 2> Model::body_elements(int b) const {
+  const int first_node = body_first_node_[b];
+  const int end_node = b + 1 < num_bodies() ? body_first_node_[b + 1] : num_nodes();
+  return {first_node - b, end_node - b - 1};
 }
 
 std::vector<int> Model::form_groups() {
   // Consecutive elements with equal matrices form a group; each group's matrices are formed once.
   group_.assign(elements_.size(), -1);
   std::vector<int> group_first;  // the first element of each group
-  for (int e = 0, last = -1; e < static_cast<int>(elements_.size()); ++e) {
-    const Element& el = elements_[e];
-    if (el.rigid) continue;  // geometry only
-    if (last < 0 || !same_element_matrices(e, last)) {
-      ElementGroup& grp =
-          groups_.emplace_back(ElementGroup{element_stiffness(e, el.c, el.s), element_mass(e, el.c, el.s)});
-      to_node_axes(e, grp.K);
-      if (!lumped_) to_node_axes(e, grp.M);  // a lumped mass is the same in every frame
-      group_first.push_back(e);
-      last = e;
+  int last = -1;                 // the current group's first element
+  for (int b = 0; b < num_bodies(); ++b) {
+    const auto [first, end] = body_elements(b);
+    if (first == end || elements_[first].rigid) continue;  // geometry only
+    // add_bodies gives a body's elements copies of the same fields: with no node in its body's
+    // axes, each after the first compares with `last` as the first did (joined: true), or as
+    // `last` with itself when the body started the group (false with a NaN field).
+    bool joined = false;
+    for (int e = first; e < end; ++e) {
+      const bool joins = e > first && !any_rotated() ? joined : last >= 0 && same_element_matrices(e, last);
+      if (!joins) {
+        const Element& el = elements_[e];
+        ElementGroup& grp =
+            groups_.emplace_back(ElementGroup{element_stiffness(e, el.c, el.s), element_mass(e, el.c, el.s)});
+        to_node_axes(e, grp.K);
+        if (!lumped_) to_node_axes(e, grp.M);  // a lumped mass is the same in every frame
+        group_first.push_back(e);
+        last = e;
+      }
+      joined = joins || same_element_matrices(e, e);
+      group_[e] = static_cast<int>(groups_.size()) - 1;
     }
-    group_[e] = static_cast<int>(groups_.size()) - 1;
   }
   return group_first;
 }
@@ -306,23 +353,24 @@ void Model::add_rigid_masses(const Scene& scene, bool counting, Assembly& a) {
 
 void Model::add_elements(bool counting, Assembly& a) {
   const int ne = 2 * dofs_per_node_;
-  for (int e = 0; e < static_cast<int>(elements_.size()); ++e) {
-    const Element& el = elements_[e];
-    if (el.rigid) continue;  // geometry only
-    const GroupEntries& grp = a.entries[group_[e]];
-    const Eigen::Matrix<int, 6, 1> eq = element_equations(e);
-    if (counting)
-      for (int c = 0; c < 2; ++c)
-        for (int i = 0; i < ne; ++i)
-          if (eq(i) >= 0) momentum_[el.body][c](eq(i)) += grp.mr(i, c);
-    for (const Nonzero& z : grp.k)
-      if (eq(z.i) >= 0 && eq(z.j) >= 0) a.kb.add(eq(z.i), eq(z.j), z.v);
-    for (const Nonzero& z : grp.m) {
-      if (eq(z.i) < 0 || eq(z.j) < 0) continue;
-      if (!lumped_)
-        a.mb.add(eq(z.i), eq(z.j), z.v);
-      else if (counting)
-        a.mdiag(eq(z.i)) += z.v;
+  for (int b = 0; b < num_bodies(); ++b) {
+    const auto [first, end] = body_elements(b);
+    if (rigid(b)) continue;  // geometry only
+    double* momentum[2] = {momentum_[b][0].data(), momentum_[b][1].data()};
+    for (int e = first; e < end; ++e) {
+      const GroupEntries& grp = a.entries[group_[e]];
+      const int* eq = element_eq_.data() + static_cast<std::ptrdiff_t>(e) * ne;
+      if (counting)
+        for (int c = 0; c < 2; ++c)
+          for (int i = 0; i < ne; ++i)
+            if (eq[i] >= 0) momentum[c][eq[i]] += grp.mr(i, c);
+      a.kb.add_element(grp.k, eq);
+      if (!lumped_) {
+        a.mb.add_element(grp.m, eq);
+      } else if (counting) {
+        for (const Nonzero& z : grp.m)
+          if (eq[z.i] >= 0 && eq[z.j] >= 0) a.mdiag(eq[z.i]) += z.v;
+      }
     }
   }
 }
@@ -490,9 +538,8 @@ Eigen::VectorXd Model::translation(const std::vector<Vec2>& d) const {
 
 Eigen::Matrix<int, 6, 1> Model::element_equations(int e) const {
   Eigen::Matrix<int, 6, 1> eq = Eigen::Matrix<int, 6, 1>::Constant(-1);
-  const int w = 2 * dofs_per_node_;
-  const int* q = element_eq_.data() + static_cast<std::ptrdiff_t>(e) * w;
-  for (int i = 0; i < w; ++i) eq(i) = q[i];
+  const std::span<const int> q = element_dofs(e);
+  for (std::size_t i = 0; i < q.size(); ++i) eq(static_cast<Eigen::Index>(i)) = q[i];
   return eq;
 }
 

@@ -16,6 +16,8 @@
 /// for both; code that reads components 0 and 1 of equation() directly must use node_axis().
 
 #include <array>
+#include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -111,6 +113,10 @@ class Model {
   double body_mass(int b) const { return body_mass_[b]; }
   /// @brief Number of bodies.
   int num_bodies() const { return static_cast<int>(body_first_node_.size()); }
+  /// @brief The range [first, end) of body b's elements in elements() (a body's elements are
+  /// consecutive: per-body loops need not read every element's `body`).
+  /// @param b body index
+  std::array<int, 2> body_elements(int b) const;
   /// @brief One element: its body, global node ids, section and reference geometry.
   struct Element {
     int body, n1, n2;
@@ -142,6 +148,13 @@ class Model {
   bool rigid(int b) const { return rigid_eq_[b][0] != kNotRigid; }
   /// @brief Equation index of each of the element's 6 (frame) or 2 (rod) DOFs, -1 when fixed.
   Eigen::Matrix<int, 6, 1> element_equations(int e) const;
+  /// @brief element_equations(e) in place: its 2 x dofs_per_node() entries, no copy (the set-up's
+  /// loops over every element read them this way).
+  /// @param e element index
+  std::span<const int> element_dofs(int e) const {
+    const std::size_t w = 2 * static_cast<std::size_t>(dofs_per_node_);
+    return {element_eq_.data() + static_cast<std::size_t>(e) * w, w};
+  }
 
  private:
   static constexpr int kNotRigid = -2;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -105,28 +106,42 @@ struct Solved {
   int e, f;
 };
 
-/// Whether the runs of elements from e and from le (their equations eqk and eql) have equal
-/// matrices: as many elements, each with the same section and geometry, the same axes at its
-/// nodes when some node is in its body's axes, and the same equation pattern relative to its
-/// run's first equation. Compared in place, element by element (no key formed).
-bool same_run(const Model& model, int e, const std::vector<Eigen::Matrix<int, 6, 1>>& eqk, int le,
-              const std::vector<Eigen::Matrix<int, 6, 1>>& eql) {
-  if (eql.empty() || eqk.size() != eql.size()) return false;
-  const std::vector<Model::Element>& els = model.elements();
-  const int ne = 2 * model.dofs_per_node();
-  const int a0 = eqk.front().maxCoeff(), b0 = eql.front().maxCoeff();
-  for (std::size_t k = 0; k < eqk.size(); ++k) {
-    const Model::Element &x = els[e + k], &y = els[le + k];
-    if (!(x.E == y.E && x.area == y.area && x.inertia == y.inertia && x.rho == y.rho &&
-          x.length == y.length && x.c == y.c && x.s == y.s))
+/// The largest of element e's equations (-1 when all are fixed).
+int top_equation(const Model& model, int e) {
+  const std::span<const int> q = model.element_dofs(e);
+  return std::max(-1, *std::max_element(q.begin(), q.end()));
+}
+
+/// Whether elements a and b have equal matrices: those of one group (Model::element_group) have;
+/// others when they have the same section and geometry and, when some node is in its body's
+/// axes, the same axes at their nodes.
+bool same_matrices(const Model& model, int a, int b) {
+  const int g = model.element_group(a);
+  if (g >= 0 && g == model.element_group(b)) return true;
+  const Model::Element &x = model.elements()[a], &y = model.elements()[b];
+  if (!(x.E == y.E && x.area == y.area && x.inertia == y.inertia && x.rho == y.rho && x.length == y.length &&
+        x.c == y.c && x.s == y.s))
+    return false;
+  if (!model.any_rotated()) return true;
+  for (const auto& [p, q] : {std::pair{x.n1, y.n1}, std::pair{x.n2, y.n2}})
+    if (!(model.node_axis(p)[0] == model.node_axis(q)[0] && model.node_axis(p)[1] == model.node_axis(q)[1]))
       return false;
-    if (model.any_rotated())  // a node in its body's axes changes the element's matrices
-      for (const auto& [p, q] : {std::pair{x.n1, y.n1}, std::pair{x.n2, y.n2}})
-        if (!(model.node_axis(p)[0] == model.node_axis(q)[0] &&
-              model.node_axis(p)[1] == model.node_axis(q)[1]))
-          return false;
+  return true;
+}
+
+/// Whether the runs of `count` elements from e and `count_l` from le have equal matrices: as
+/// many elements, each with the same matrices (same_matrices) and the same equation pattern
+/// relative to its run's first element's largest equation. Compared in place, element by element
+/// (no key formed, no equations copied).
+bool same_run(const Model& model, int e, int count, int le, int count_l) {
+  if (count_l == 0 || count != count_l) return false;
+  const int ne = 2 * model.dofs_per_node();
+  const int a0 = top_equation(model, e), b0 = top_equation(model, le);
+  for (int k = 0; k < count; ++k) {
+    if (!same_matrices(model, e + k, le + k)) return false;
+    const std::span<const int> eqk = model.element_dofs(e + k), eql = model.element_dofs(le + k);
     for (int i = 0; i < ne; ++i) {
-      const int p = eqk[k](i), q = eql[k](i);
+      const int p = eqk[i], q = eql[i];
       if ((p >= 0) != (q >= 0) || (p >= 0 && p - a0 != q - b0)) return false;
     }
   }
@@ -161,6 +176,50 @@ double held_runs_lower_bound(const Model& model, std::vector<Solved> solved, dou
   return lower;
 }
 
+/// The subdomain bound's scan over runs, in order: the largest top eigenvalue so far (lam), the
+/// largest lower end of Laguerre's brackets, and the runs it solved.
+struct RunScan {
+  RunScan(const Model& m, double lam_e) : model(m), lam_element(lam_e) {}
+
+  /// Run [e, f): the last new run's eigenvalue when their matrices are equal, else its own.
+  void add(int e, int f) {
+    if (same_run(model, e, f - e, e_last, count_last)) {  // equal matrices: reuse the last eigenvalue
+      lam = std::max(lam, lam_last);
+      return;
+    }
+    e_last = e;
+    count_last = f - e;
+    run_equations(model, e, f, eqk);
+    const EnvelopePencil run = run_pencil(model, e, eqk, {}, scratch);
+    const int d = run.size();
+    lam_last = 0.0;  // no free DOF: nothing moves
+    if (d > 0 && lam > 0.0 && above_spectrum(run, lam)) {
+      lam_last = lam;  // proven below the largest so far: it cannot raise the bound
+    } else if (d > 0) {
+      // Down from Irons' bound, which no run's eigenvalue exceeds (1e-8: its roundoff).
+      const TopEigenvalue top = top_eigenvalue(run, lam_element * (1 + 1e-8));
+      if (top.ok) {
+        lam_last = top.upper;
+        bracket_lower = std::max(bracket_lower, top.lower);
+        solved.push_back({top.upper, e, f});
+      } else {  // M not positive definite (no rotary inertia): the dense solve says inf
+        Eigen::MatrixXd Kc, Mc;
+        run.to_dense(Kc, Mc);
+        lam_last = largest_generalized(Kc, Mc, model.lumped());
+      }
+    }
+    lam = std::max(lam, lam_last);
+  }
+
+  const Model& model;
+  double lam_element;
+  double lam = 0.0, lam_last = 0.0, bracket_lower = 0.0;
+  std::vector<Solved> solved;  ///< the runs Laguerre's iteration solved
+  RunScratch scratch;
+  std::vector<Eigen::Matrix<int, 6, 1>> eqk;  ///< the run's elements' equations
+  int e_last = 0, count_last = 0;             ///< the last new run's first element and size
+};
+
 }  // namespace
 
 const char* to_string(CriticalBound b) {
@@ -193,56 +252,23 @@ double subdomain_bound(const Model& model, int max_elements) {
 }
 
 SubdomainBound subdomain_bound(const Model& model, int max_elements, double lam_element) {
-  const std::vector<Model::Element>& els = model.elements();
-  const int nel = static_cast<int>(els.size());
   SubdomainBound out;
   out.exact = true;
-  double lam = 0.0, lam_last = 0.0, bracket_lower = 0.0;
-  std::vector<Solved> solved;  // the runs Laguerre's iteration solved
-  RunScratch scratch;
-  std::vector<Eigen::Matrix<int, 6, 1>> eqk, eq_last;  // the run's elements' equations, the last new run's
-  int e_last = 0;                                      // the last new run's first element
-  for (int e = 0; e < nel;) {
-    if (els[e].rigid) {  // a rigid body has no element stiffness
-      ++e;
-      continue;
+  RunScan scan(model, lam_element);
+  // Each elastic body in subdomains of up to max_elements (a rigid body has no element stiffness).
+  for (int b = 0; b < model.num_bodies(); ++b) {
+    const auto [first, end] = model.body_elements(b);
+    if (model.rigid(b)) continue;
+    for (int e = first, f = first; e < end; e = f) {
+      f = end - e > max_elements ? e + max_elements : end;  // the subdomain: elements [e, f)
+      if (e > first || f < end) out.exact = false;
+      scan.add(e, f);
     }
-    int f = e;  // the subdomain: elements [e, f) of one elastic body
-    while (f < nel && f - e < max_elements && els[f].body == els[e].body && !els[f].rigid) ++f;
-    if ((e > 0 && els[e - 1].body == els[e].body) || (f < nel && els[f].body == els[e].body))
-      out.exact = false;
-    run_equations(model, e, f, eqk);
-    if (same_run(model, e, eqk, e_last, eq_last)) {  // equal matrices: reuse the last eigenvalue
-      lam = std::max(lam, lam_last);
-      e = f;
-      continue;
-    }
-    e_last = e;
-    eq_last = eqk;
-    const EnvelopePencil run = run_pencil(model, e, eqk, {}, scratch);
-    const int d = run.size();
-    lam_last = 0.0;  // no free DOF: nothing moves
-    if (d > 0 && lam > 0.0 && above_spectrum(run, lam)) {
-      lam_last = lam;  // proven below the largest so far: it cannot raise the bound
-    } else if (d > 0) {
-      // Down from Irons' bound, which no run's eigenvalue exceeds (1e-8: its roundoff).
-      const TopEigenvalue top = top_eigenvalue(run, lam_element * (1 + 1e-8));
-      if (top.ok) {
-        lam_last = top.upper;
-        bracket_lower = std::max(bracket_lower, top.lower);
-        solved.push_back({top.upper, e, f});
-      } else {  // M not positive definite (no rotary inertia): the dense solve says inf
-        Eigen::MatrixXd Kc, Mc;
-        run.to_dense(Kc, Mc);
-        lam_last = largest_generalized(Kc, Mc, model.lumped());
-      }
-    }
-    lam = std::max(lam, lam_last);
-    e = f;
   }
-  out.upper = lam;
+  out.upper = scan.lam;
   // Each body one run: its bracket holds its top eigenvalue; else the held runs give the lower end.
-  out.lower = out.exact ? bracket_lower : held_runs_lower_bound(model, std::move(solved), out.lower, scratch);
+  out.lower = out.exact ? scan.bracket_lower
+                        : held_runs_lower_bound(model, std::move(scan.solved), out.lower, scan.scratch);
   return out;
 }
 

@@ -239,8 +239,8 @@ MUTANTS = [
     dict(name="threads_ranges_overlap", layer="threads", ci=False,
          what="a part's first element writes the node it shares with the previous part into f itself: two "
               "threads write one equation, and both finish it",
-         edits=[("solver/integrator/InternalForce.cc", "const int t = part_of(g), k0 = start[t];",
-                 "const int t = part_of(g), k0 = start[t] + 1;")],
+         edits=[("solver/integrator/InternalForce.cc", "const int k0 = start[t];",
+                 "const int k0 = start[t] + 1;")],
          verify=False, tests=[r"InternalForce\..*", r"Threads\..*"],
          targets=["InternalForce_test", "ExplicitContactIntegrator_test"]),
     dict(name="threads_boundary_not_swept", layer="threads", ci=False,

@@ -443,7 +443,7 @@ std::array<double, 3> InternalForce::end_forces(int e, const Eigen::VectorXd& U)
   // The linear element: stretch along and chord rotation across the reference axis.
   if (model_.dofs_per_node() == 3 && !model_.rotated(el.n1) && !model_.rotated(el.n2)) {
     // Both nodes' DOFs in global axes (what node_vector() and equation() give, read in one go).
-    const Eigen::Matrix<int, 6, 1> eq = model_.element_equations(e);
+    const std::span<const int> eq = model_.element_dofs(e);
     double x[6];
     for (int i = 0; i < 6; ++i) x[i] = eq[i] >= 0 ? U(eq[i]) : 0.0;
     const double du = x[3] - x[0], dv = x[4] - x[1];

@@ -43,9 +43,10 @@ std::runtime_error unstorable(const char* name, double x) {
 /// T. ASCII: the values inline in `xml`, in T's shortest round-trip form. Binary: an empty element
 /// in `xml` whose offset points into the appended data, and the block (UInt64 byte count, then the
 /// values in the machine's little-endian order) at `offset` = `used` + `base` in `raw`, written
-/// in place (no per-value append; `raw` grows when it must, and is otherwise reused as it is, so
-/// a row of the same layout as the last writes over it without clearing); `used` moves past it. A value T
-/// cannot hold (not finite, or beyond its range: the conversion would be undefined) throws.
+/// in place (no per-value append; `raw` grows when it must and is otherwise reused, so a row of
+/// the last row's layout writes over it without clearing it); `used` moves past the block. A
+/// value T cannot hold (not finite, or beyond its range: the conversion would be undefined)
+/// throws.
 template <typename T, typename F>
 void data_array(std::string& xml, std::string& raw, std::size_t& used, std::size_t base, FieldFormat format,
                 const char* name, int n, int components, F tuple) {

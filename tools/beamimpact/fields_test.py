@@ -257,7 +257,8 @@ def test_the_python_reader_reads_both_encodings_as_vtk_does(tmp_path, s1, s1_sin
     import sys
     sys.path.insert(0, str(Path(os.environ["BEAMIMPACT_SOURCE"]) / "python" / "beamimpact"))
     import fields as reader
-    text = run(tmp_path, "s1_central", "--fields", "--set", "output.field_format=ascii", "--set", "time.end=0.6", *DOUBLE)
+    text = run(tmp_path, "s1_central", "--fields", "--set", "output.field_format=ascii", "--set", "time.end=0.6",
+               *DOUBLE)
     text32 = run(tmp_path / "single", "s1_central", "--fields", "--set", "output.field_format=ascii",
                  "--set", "time.end=0.6")
     files = [(collection(s1)[55][1], VTK_DOUBLE), (collection(text)[55][1], VTK_DOUBLE),

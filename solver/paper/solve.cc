@@ -287,9 +287,8 @@ SimulationResult solve(const Scene& scene_in, const std::filesystem::path& field
   r.dt = choose_dt(scene, cs, r);
   // The run was admitted at the wave estimate of the step (planned_dt); a frame's bending step can
   // be far below it, and the steps, the work and the field files grow with 1/dt: checked again
-  // at the step the run takes, before anything is written.
-  check_run_cost(scene, r.dt);
-  const long N = step_count(scene, r.dt);
+  // at the step the run takes, before anything is written. The check's estimate is the step count.
+  const long N = static_cast<long>(check_run_cost(scene, r.dt).steps);
   r.steps = N;
   set_merge_rule(options, r.dt, rec);
 

@@ -82,6 +82,9 @@ class ExplicitContactIntegrator {
   int set_threads(int threads);
   /// @brief The step's threads in use (1 unless split).
   int threads() const { return team_ ? team_->size() : 1; }
+  /// @brief The step's threads, idle between steps, for the work of an output row (null when the
+  /// step runs on one thread).
+  ThreadTeam* team() const { return team_.get(); }
   /// @brief Why fewer threads are used than were asked for ("" when as asked).
   const std::string& threads_note() const { return threads_note_; }
 

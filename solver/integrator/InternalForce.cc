@@ -426,9 +426,19 @@ void InternalForce::apply(const Eigen::VectorXd& U, Eigen::VectorXd& f) const {
   }
 }
 
-void InternalForce::end_forces(const Eigen::VectorXd& U, std::vector<std::array<double, 3>>& out) const {
-  out.resize(model_.elements().size());
-  for (std::size_t e = 0; e < out.size(); ++e) out[e] = end_forces(static_cast<int>(e), U);
+void InternalForce::end_forces(const Eigen::VectorXd& U, std::vector<std::array<double, 3>>& out,
+                               ThreadTeam* team) const {
+  const int n = static_cast<int>(model_.elements().size()), parts = team ? team->size() : 1;
+  out.resize(static_cast<std::size_t>(n));
+  auto part = [&](int t) {
+    const long long last = static_cast<long long>(n) * (t + 1) / parts;
+    for (long long e = static_cast<long long>(n) * t / parts; e < last; ++e)
+      out[static_cast<std::size_t>(e)] = end_forces(static_cast<int>(e), U);
+  };
+  if (team)
+    team->run(part);
+  else
+    part(0);
 }
 
 std::array<double, 3> InternalForce::end_forces(int e, const Eigen::VectorXd& U) const {

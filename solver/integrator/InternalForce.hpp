@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <solver/model/Model.hpp>
+#include <solver/util/ThreadTeam.hpp>
 
 namespace beamimpact::paper {
 
@@ -61,7 +62,10 @@ class InternalForce {
   /// @brief end_forces(e, U) of every element, in element order (the field output's input).
   /// @param U displacement
   /// @param out resized to the number of elements and overwritten
-  void end_forces(const Eigen::VectorXd& U, std::vector<std::array<double, 3>>& out) const;
+  /// @param team threads for the work (the elements split in one range per thread), or null for
+  ///        this thread alone; the values do not depend on it
+  void end_forces(const Eigen::VectorXd& U, std::vector<std::array<double, 3>>& out,
+                  ThreadTeam* team = nullptr) const;
   /// @brief Strain energy (J) at U. K U goes into a scratch vector kept between calls (a history
   /// row allocates nothing), so calls on one object must not run concurrently.
   double strain_energy(const Eigen::VectorXd& U) const;

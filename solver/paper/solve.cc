@@ -142,10 +142,22 @@ HistoryRow make_row(const ExplicitContactIntegrator& in) {
   return row;
 }
 
+/// The field output and its rows' buffers, kept from row to row (allocated anew, ~1 MB at 1e5 DOFs,
+/// each row paid the first touch of fresh pages: on this machine transparent huge pages zeroed
+/// 4 MB per row, a quarter of the row).
+struct FieldRows {
+  FieldRows(const Model& model, const Scene& scene, const std::filesystem::path& dir)
+      : writer(model, dir, scene.output.field_format, scene.output.field_precision) {}
+  FieldWriter writer;
+  std::vector<Vec2> contact_force;                ///< per node (N)
+  std::vector<std::array<double, 3>> end_forces;  ///< per element (InternalForce::end_forces)
+};
+
 /// The field output of one row: the contact forces on the nodes (each pair's, as its rows apply
 /// them) and every element's end forces (the integrator's own operator).
-void write_fields(const ExplicitContactIntegrator& in, double t, FieldWriter& fields) {
-  std::vector<Vec2> fc(static_cast<std::size_t>(in.model().num_nodes()), Vec2{0.0, 0.0});
+void write_fields(const ExplicitContactIntegrator& in, double t, FieldRows& fields) {
+  std::vector<Vec2>& fc = fields.contact_force;
+  fc.assign(static_cast<std::size_t>(in.model().num_nodes()), Vec2{0.0, 0.0});
   for (std::size_t p = 0; p < in.pairs().size(); ++p) {
     const ContactForce& f = in.forces()[p];
     if (f.R == 0.0 && f.tau == 0.0) continue;
@@ -154,9 +166,8 @@ void write_fields(const ExplicitContactIntegrator& in, double t, FieldWriter& fi
       fc[node][1] += F[1];
     }
   }
-  std::vector<std::array<double, 3>> ends;
-  in.internal_force().end_forces(in.U(), ends);
-  fields.write(t, in.U(), in.V(), fc, ends);
+  in.internal_force().end_forces(in.U(), fields.end_forces, in.team());
+  fields.writer.write(t, in.U(), in.V(), fc, fields.end_forces, in.team());
 }
 
 /// Above this part of the run's energy the work of a contact's force on its slide along the
@@ -211,7 +222,7 @@ std::string turn_warning(const Scene& scene, std::size_t c, const TurnedSlide& s
 /// when the energy is no longer finite or has grown 1e6-fold.
 void record_step(const ExplicitContactIntegrator& integ, long p, long N, const Scene& scene,
                  double critical_dt, std::vector<DeformedSurface>& surfaces, ResultRecorder& rec,
-                 FieldWriter* fields, std::vector<TurnedSlide>& slides, GapInContact& in_contact) {
+                 FieldRows* fields, std::vector<TurnedSlide>& slides, GapInContact& in_contact) {
   const auto& groups = integ.pair_groups();
   for (std::size_t c = 0; c < groups.size(); ++c) {
     const ContactForce f = view(integ, groups[c]).f;
@@ -302,9 +313,8 @@ SimulationResult solve(const Scene& scene_in, const std::filesystem::path& field
   std::vector<DeformedSurface> surfaces;  // the real gap of each pair, from the deformed geometry
   for (const ContactPair& pair : integ.pairs())
     surfaces.emplace_back(model, pair.target_body(), pair.striker_node());
-  std::optional<FieldWriter> fields;
-  if (!fields_dir.empty())
-    fields.emplace(model, fields_dir, scene.output.field_format, scene.output.field_precision);
+  std::optional<FieldRows> fields;
+  if (!fields_dir.empty()) fields.emplace(model, scene, fields_dir);
   Progress progress("paper", scene.time.end);
   progress.set_dofs_per_update(model.size());
   std::vector<TurnedSlide> slides(scene.contacts.size());
@@ -315,7 +325,7 @@ SimulationResult solve(const Scene& scene_in, const std::filesystem::path& field
     integ.step();
     progress.update(integ.time());
   }
-  if (fields) fields->finish();
+  if (fields) fields->writer.finish();
 
   for (int b = 0; b < model.num_bodies(); ++b)
     rec.set_final_velocity(scene.bodies[b].name, {integ.momentum(b, 0) / model.body_mass(b),

@@ -4,6 +4,7 @@
 // what was written (node count, times, a .pvd only once the run is complete).
 #include <solver/record/FieldWriter.hpp>
 
+#include <cmath>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -125,6 +126,57 @@ TEST(FieldWriter, AValueSinglePrecisionCannotHoldIsRefusedNotWrittenAsInfinity) 
     Fc[3][1] = std::numeric_limits<double>::quiet_NaN();
     EXPECT_THROW(d.write(0.0, zero, zero, Fc, ends), std::runtime_error);
   }
+}
+
+TEST(FieldWriter, TheFilesDoNotDependOnTheThreads) {
+  // The nodes (and the elements of the end forces) split in one range per thread: every value is
+  // formed by one thread alone, so two threads must write the very bytes one writes. A 31-node
+  // body and an uneven split (3 threads) put range boundaries inside a body.
+  const Scene scene = load_paper_scene("s4_oblique_45", {"bodies.B.elements=25"});
+  const Model model(scene, true);
+  const paper::InternalForce fint(model, std::vector<bool>(model.num_bodies(), false));
+  Eigen::VectorXd U(model.size()), V(model.size());
+  for (int i = 0; i < model.size(); ++i) U(i) = 1e-4 * std::sin(0.7 * i), V(i) = 0.3 * std::cos(1.3 * i);
+  std::vector<Vec2> Fc(static_cast<std::size_t>(model.num_nodes()), Vec2{0.0, 0.0});
+  Fc[7] = {1.5, -2.5};
+  std::string files[2];
+  for (int k = 0; k < 2; ++k) {
+    ThreadTeam team(3);
+    ThreadTeam* threads = k == 0 ? nullptr : &team;
+    std::vector<std::array<double, 3>> ends;
+    fint.end_forces(U, ends, threads);
+    const auto dir = temp_path("threads" + std::to_string(k));
+    {
+      FieldWriter w(model, dir);
+      w.write(0.5, U, V, Fc, ends, threads);
+      w.finish();
+    }
+    files[k] = read(dir / "fields/step_000000.vtu");
+  }
+  EXPECT_GT(files[0].size(), 1000u);
+  EXPECT_TRUE(files[0] == files[1]) << "the file written on 3 threads differs from the one on 1";
+}
+
+TEST(FieldWriter, AFileThatCannotBeWrittenFailsTheRun) {
+  // The files are written on the writer's own thread: its failure must still reach the caller
+  // (at the next row or at finish()), and no collection vouches for the missing file.
+  const Scene scene = load_paper_scene("s1_central");
+  const Model model(scene, false);
+  const auto dir = temp_path("unwritable");
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(model.size());
+  FieldWriter w(model, dir);
+  std::filesystem::remove_all(dir / "fields");  // the file of the row has no folder to go to
+  w.write(0.0, zero, zero, std::vector<Vec2>(static_cast<std::size_t>(model.num_nodes())),
+          std::vector<std::array<double, 3>>(model.elements().size()));
+  try {
+    w.finish();
+    ADD_FAILURE() << "expected the failed file to be reported";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot write " + (dir / "fields/step_000000.vtu").string()),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(FieldWriter::collection(dir)));
 }
 
 }  // namespace

@@ -140,7 +140,10 @@ FieldWriter::FieldWriter(const Model& model, std::filesystem::path dir, FieldFor
                          FieldPrecision precision)
     : model_(model), dir_(std::move(dir)), format_(format), precision_(precision) {
   std::filesystem::remove(collection(dir_));
-  std::filesystem::remove_all(dir_ / "fields");
+  // An earlier run's files: moved aside at once, removed by the writer thread while the run goes
+  // on (thousands of large files take seconds to delete).
+  std::filesystem::remove_all(stale());  // left by a run that stopped before removing it
+  if (std::filesystem::exists(dir_ / "fields")) std::filesystem::rename(dir_ / "fields", stale());
   std::filesystem::create_directories(dir_ / "fields");
   pvd_.open(part_of(collection(dir_)), std::ios::binary);
   if (!pvd_) throw std::runtime_error("cannot write " + part_of(collection(dir_)).string());
@@ -337,6 +340,8 @@ void FieldWriter::wait_idle() {
 }
 
 void FieldWriter::write_files() {
+  std::error_code ignored;  // what cannot be removed stays hidden, and goes with the next run
+  std::filesystem::remove_all(stale(), ignored);
   std::unique_lock<std::mutex> lock(mutex_);
   for (;;) {
     changed_.wait(lock, [&] { return stop_ || !file_.empty(); });

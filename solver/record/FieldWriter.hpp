@@ -1,8 +1,9 @@
 #pragma once
 /// @file FieldWriter.hpp
 /// @brief Field output for ParaView ([output] fields = true): one VTK XML UnstructuredGrid
-/// (.vtu) per output row and a .pvd collection with the times, streamed step by step (a file
-/// per row is written and closed at once; nothing of earlier rows is kept in memory).
+/// (.vtu) per output row and a .pvd collection with the times, streamed step by step (each row's
+/// file written on the writer's own thread while the run goes on; nothing of earlier rows is kept
+/// in memory).
 ///
 /// Layout in the run directory: fields.pvd and fields/step_NNNNNN.vtu. Points are the nodes in
 /// their reference position (ParaView's "Warp By Vector" with `displacement` shows the deformed
@@ -38,7 +39,8 @@ namespace beamimpact {
 /// @brief Writes one run's fields (see the file comment).
 class FieldWriter {
  public:
-  /// @brief Removes any fields of an earlier run in `dir` and starts the collection.
+  /// @brief Removes any fields of an earlier run in `dir` (the folder of its files is moved aside
+  /// at once and deleted on the writer's thread) and starts the collection.
   /// @param model the beam model (nodes, elements, equations)
   /// @param dir the run directory (fields.pvd and fields/ go there)
   /// @param format how the numbers are stored (binary or ASCII)
@@ -88,6 +90,8 @@ class FieldWriter {
                     const std::vector<Vec2>& contact_force,
                     const std::vector<std::array<double, 3>>& end_forces, const F& f) const;
 
+  /// Where an earlier run's fields/ goes to be removed by the writer thread.
+  std::filesystem::path stale() const { return dir_ / ".fields.removing"; }
   /// Waits until no file is being written; throws the first write error.
   void wait_idle();
   /// The writer thread: writes file_ from xml_, geometry_raw_ and raw_ whenever it is set, until stop_.

@@ -157,6 +157,28 @@ TEST(FieldWriter, TheFilesDoNotDependOnTheThreads) {
   EXPECT_TRUE(files[0] == files[1]) << "the file written on 3 threads differs from the one on 1";
 }
 
+TEST(FieldWriter, AnEarlierRunsFilesAreGoneWhenTheRunIsOver) {
+  // Three rows, then a run of one row into the same directory: only its file remains, and the
+  // earlier files' folder (moved aside, deleted on the writer's thread) is gone too.
+  const Scene scene = load_paper_scene("s1_central");
+  const Model model(scene, false);
+  const auto dir = temp_path("rerun");
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(model.size());
+  const std::vector<Vec2> Fc(static_cast<std::size_t>(model.num_nodes()));
+  const std::vector<std::array<double, 3>> ends(model.elements().size());
+  for (const int rows : {3, 1}) {
+    FieldWriter w(model, dir);
+    for (int r = 0; r < rows; ++r) w.write(r, zero, zero, Fc, ends);
+    w.finish();
+  }
+  const auto files = std::distance(std::filesystem::directory_iterator(dir / "fields"),
+                                   std::filesystem::directory_iterator{});
+  EXPECT_EQ(files, 1);
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    EXPECT_TRUE(entry.path().filename() == "fields" || entry.path().filename() == "fields.pvd")
+        << entry.path();
+}
+
 TEST(FieldWriter, AFileThatCannotBeWrittenFailsTheRun) {
   // The files are written on the writer's own thread: its failure must still reach the caller
   // (at the next row or at finish()), and no collection vouches for the missing file.

@@ -428,17 +428,12 @@ void InternalForce::apply(const Eigen::VectorXd& U, Eigen::VectorXd& f) const {
 
 void InternalForce::end_forces(const Eigen::VectorXd& U, std::vector<std::array<double, 3>>& out,
                                ThreadTeam* team) const {
-  const int n = static_cast<int>(model_.elements().size()), parts = team ? team->size() : 1;
+  const int n = static_cast<int>(model_.elements().size());
   out.resize(static_cast<std::size_t>(n));
-  auto part = [&](int t) {
-    const long long last = static_cast<long long>(n) * (t + 1) / parts;
-    for (long long e = static_cast<long long>(n) * t / parts; e < last; ++e)
+  run_ranges(team, n, [&](long long first, long long last) {
+    for (long long e = first; e < last; ++e)
       out[static_cast<std::size_t>(e)] = end_forces(static_cast<int>(e), U);
-  };
-  if (team)
-    team->run(part);
-  else
-    part(0);
+  });
 }
 
 std::array<double, 3> InternalForce::end_forces(int e, const Eigen::VectorXd& U) const {

@@ -1,6 +1,6 @@
 #include <solver/record/FieldWriter.hpp>
 
-#include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -77,29 +77,51 @@ bool store(char* p, const double* v, int count) {
   return storable;
 }
 
-/// Appends one <DataArray> of `n` tuples of `components` (at most 3) values of type T;
-/// tuple(i, v) writes tuple i's components into v[0..components) as doubles, each then rounded to
-/// T. ASCII: the values inline in `xml`, in T's shortest round-trip form. Binary: reserve_block,
-/// then the values. A value T cannot hold throws (unstorable).
+/// Stores the tuples [first, last) of a block of C-component values as T (tuple(i, v) gives
+/// tuple i as doubles); false when one cannot be held (stored as 0).
+template <typename T, int C, typename F>
+bool fill(char* block, long long first, long long last, const F& tuple) {
+  bool storable = true;
+  double v[C];
+  for (long long i = first; i < last; ++i) {
+    tuple(static_cast<int>(i), v);
+    storable &= store<T>(block + sizeof(T) * C * i, v, C);
+  }
+  return storable;
+}
+
+/// Throws unstorable for the first of the `n` tuples of `components` values (tuple(i, v)) that T
+/// cannot hold: what a block that fill() could not store reports.
+template <typename T, typename F>
+void throw_first_unstorable(const char* name, int n, int components, const F& tuple) {
+  double v[3] = {0.0, 0.0, 0.0};
+  for (int i = 0; i < n; ++i) {
+    tuple(i, v);
+    for (int c = 0; c < components; ++c)
+      if (!(std::abs(v[c]) <= static_cast<double>(std::numeric_limits<T>::max())))
+        throw unstorable<T>(name, v[c]);
+  }
+}
+
+/// Appends one <DataArray> of `n` tuples of `components` (1 or 3) values of type T; tuple(i, v)
+/// writes tuple i's components into v[0..components) as doubles, each then rounded to T. ASCII:
+/// the values inline in `xml`, in T's shortest round-trip form. Binary: reserve_block, then
+/// fill(). A value T cannot hold throws (unstorable).
 template <typename T, typename F>
 void data_array(std::string& xml, std::string& raw, std::size_t& used, std::size_t base, FieldFormat format,
                 const char* name, int n, int components, F tuple) {
-  double v[3];
   if (format == FieldFormat::kBinary) {
     const std::size_t at = reserve_block<T>(xml, raw, used, base, name, n, components);  // may move raw
-    char* p = raw.data() + at;
-    for (int i = 0; i < n; ++i, p += sizeof(T) * components) {
-      tuple(i, v);
-      if (!store<T>(p, v, components))
-        for (int c = 0; c < components; ++c)
-          if (!store<T>(p, v + c, 1)) throw unstorable<T>(name, v[c]);
-    }
+    const bool storable =
+        components == 3 ? fill<T, 3>(raw.data() + at, 0, n, tuple) : fill<T, 1>(raw.data() + at, 0, n, tuple);
+    if (!storable) throw_first_unstorable<T>(name, n, components, tuple);
     return;
   }
   constexpr double kMax = static_cast<double>(std::numeric_limits<T>::max());
   auto out = std::back_inserter(xml);
   fmt::format_to(out, "<DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"ascii\">\n",
                  vtk_type<T>(), name, components);
+  double v[3];
   for (int i = 0; i < n; ++i) {
     tuple(i, v);
     for (int c = 0; c < components; ++c) {
@@ -119,19 +141,6 @@ void real_array(std::string& xml, std::string& raw, std::size_t& used, std::size
     data_array<float>(xml, raw, used, base, format, name, n, components, tuple);
   else
     data_array<double>(xml, raw, used, base, format, name, n, components, tuple);
-}
-
-/// Stores the tuples [first, last) of a block of C-component values as T (tuple(i, v) gives
-/// tuple i as doubles); false when one cannot be held (stored as 0).
-template <typename T, int C, typename F>
-bool fill(char* block, long long first, long long last, const F& tuple) {
-  bool storable = true;
-  double v[C];
-  for (long long i = first; i < last; ++i) {
-    tuple(static_cast<int>(i), v);
-    storable &= store<T>(block + sizeof(T) * C * i, v, C);
-  }
-  return storable;
 }
 
 }  // namespace
@@ -270,31 +279,17 @@ void FieldWriter::write_point_data(const Eigen::VectorXd& U, const Eigen::Vector
     at[k++] = reserve_block<T>(xml_, raw_, raw_used_, geometry_raw_.size(), name, n, components);
   });
   // The nodes in one range per thread: each writes its own tuples of every block.
-  const int parts = team ? team->size() : 1;
-  part_storable_.assign(static_cast<std::size_t>(parts), 1);
-  auto part = [&](int t) {
-    const long long first = static_cast<long long>(n) * t / parts,
-                    last = static_cast<long long>(n) * (t + 1) / parts;
-    bool storable = true;
+  std::atomic<bool> storable{true};
+  run_ranges(team, n, [&](long long first, long long last) {
     int a = 0;
     arrays([&](const char*, auto components, const auto& tuple) {
-      storable &= fill<T, decltype(components)::value>(raw_.data() + at[a++], first, last, tuple);
+      if (!fill<T, decltype(components)::value>(raw_.data() + at[a++], first, last, tuple))
+        storable.store(false, std::memory_order_relaxed);
     });
-    part_storable_[static_cast<std::size_t>(t)] = storable;
-  };
-  if (team)
-    team->run(part);
-  else
-    part(0);
-  if (std::find(part_storable_.begin(), part_storable_.end(), 0) == part_storable_.end()) return;
+  });
+  if (storable) return;
   arrays([&](const char* name, auto components, const auto& tuple) {  // the first culprit, for the message
-    double v[3];
-    for (int i = 0; i < n; ++i) {
-      tuple(i, v);
-      for (int c = 0; c < components; ++c)
-        if (!(std::abs(v[c]) <= static_cast<double>(std::numeric_limits<T>::max())))
-          throw unstorable<T>(name, v[c]);
-    }
+    throw_first_unstorable<T>(name, n, components, tuple);
   });
 }
 

@@ -114,7 +114,6 @@ class FieldWriter {
   /// The elastic elements meeting at each node, in element order: node i's are
   /// touch_[touch_start_[i] .. touch_start_[i + 1]), each 2 e + (0 at its first node, 1 at its second).
   std::vector<int> touch_start_, touch_;
-  std::vector<char> part_storable_;  ///< per thread of a row: all its values could be stored
   /// Each node's x, y, theta equations (-1: fixed or absent) when its displacement is read off
   /// them directly (a frame node of an elastic body in global axes), else x = -2 (node_vector()).
   std::vector<std::array<int, 3>> eq_;

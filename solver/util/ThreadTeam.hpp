@@ -59,4 +59,21 @@ class ThreadTeam {
   std::atomic<bool> stop_{false};
 };
 
+/// @brief Splits [0, n) in one range per part of `team` (part t: [n t / size, n (t + 1) / size),
+/// lengths equal up to one) and calls range(first, last) for each, on the team's threads; without
+/// a team (null), range(0, n) on this thread.
+/// @param range callable (long long first, long long last); must not throw
+template <class Range>
+void run_ranges(ThreadTeam* team, int n, const Range& range) {
+  if (!team) {
+    range(0LL, static_cast<long long>(n));
+    return;
+  }
+  const int parts = team->size();
+  auto part = [&](int t) {
+    range(static_cast<long long>(n) * t / parts, static_cast<long long>(n) * (t + 1) / parts);
+  };
+  team->run(part);
+}
+
 }  // namespace beamimpact

@@ -3,9 +3,12 @@
 // after the workers have gone to sleep.
 #include <solver/util/ThreadTeam.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <mutex>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -103,6 +106,28 @@ TEST(ThreadTeam, SleepingWorkersWakeForTheNextJob) {
     EXPECT_EQ(started.load(), 3);
     for (int t = 0; t < 3; ++t) EXPECT_EQ(done[t], j) << "part " << t;
   }
+}
+
+TEST(ThreadTeam, RangesCoverEveryIndexOnceInNearlyEqualParts) {
+  // 7 indices on 3 parts: [0, 2), [2, 4), [4, 7) (part t from n t / 3 rounded down); 2 indices
+  // leave one range empty; without a team the one range is [0, n).
+  ThreadTeam team(3);
+  for (const int n : {7, 2}) {
+    std::mutex mutex;
+    std::vector<std::pair<long long, long long>> ranges;
+    run_ranges(&team, n, [&](long long first, long long last) {
+      const std::lock_guard<std::mutex> lock(mutex);
+      ranges.emplace_back(first, last);
+    });
+    std::sort(ranges.begin(), ranges.end());
+    using R = std::vector<std::pair<long long, long long>>;
+    const R expected = n == 7 ? R{{0, 2}, {2, 4}, {4, 7}} : R{{0, 0}, {0, 1}, {1, 2}};
+    EXPECT_EQ(ranges, expected) << n;
+  }
+  long long first = -1, last = -1;
+  run_ranges(nullptr, 5, [&](long long a, long long b) { first = a, last = b; });
+  EXPECT_EQ(first, 0);
+  EXPECT_EQ(last, 5);
 }
 
 }  // namespace

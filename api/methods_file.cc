@@ -161,7 +161,7 @@ std::vector<Method> read_methods_file(const fs::path& file, const fs::path& prog
                      fs::exists(file, ec) ? "expected valid TOML: " + os.str() : "methods file not found");
   }
   TableReader top(root, file.string(), "", nullptr);
-  // [[method]], or [[methods]] as shared/spec/interface.md spells it
+  // [[method]], or [[methods]] as docs/scene-format.md spells it
   const std::string table = root.contains("methods") && !root.contains("method") ? "methods" : "method";
   const toml::node* n = top.raw(table);
   const toml::array* a = n ? n->as_array() : nullptr;

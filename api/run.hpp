@@ -41,7 +41,7 @@ struct RunOptions {
 /// @brief Runs a scene file with a method of the registry (in-process, or an external program
 /// through its methods-file command). What the method does not accept is refused here, the one
 /// place every run passes (api/accepts.hpp).
-/// @param scene_file the scene (TOML, shared/spec/interface.md)
+/// @param scene_file the scene (TOML, docs/scene-format.md)
 /// @param method a registry name: "paper", "exact", "ida", or an external method's
 /// @param options overrides, step, mesh and output directory
 /// @return the result (of an external method: its summary's keys; the run directory holds the

@@ -9,7 +9,7 @@
 
 namespace beamimpact::exact {
 
-/// @brief S2 (shared/spec/scenes.md) as a rod-on-beam setup, the paper's soft material: rod 5 m,
+/// @brief S2 (docs/paper-scenes.md) as a rod-on-beam setup, the paper's soft material: rod 5 m,
 /// E 100 Pa, rho 1, A 0.4 (c = 10 m/s, T_A = 1 s, Z_A = 4 N s/m); beam 10 m pinned at both ends,
 /// I = 0.4^3 / 12 m^4 (a = sqrt(E I / (rho A)) = 1.1547 m^2/s); struck at midspan at 1 m/s across
 /// a 0.1 m gap (first touch 0.1 s); rows every 0.01 s. Sections 1 m wide and `depth` deep: depth 1

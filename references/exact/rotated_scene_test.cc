@@ -11,7 +11,7 @@
 namespace beamimpact::exact {
 namespace {
 
-// S2's data (shared/spec/scenes.md): gap 0.1 m, struck at x_c = 5 m of the 10 m target, v0 =
+// S2's data (docs/paper-scenes.md): gap 0.1 m, struck at x_c = 5 m of the 10 m target, v0 =
 // 1 m/s, node to node. The rotated copy's coordinates carry roundoff of cos and sin (1 ulp of
 // 10 m): 1e-13 m on the lengths, 1e-15 on the speed.
 TEST(RotatedSceneExact, BodyAxisRollerIsTheSimplySupportedBeam) {

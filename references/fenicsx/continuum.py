@@ -2,7 +2,7 @@
 lumped mass, and lookups of nodes by position (partition-independent, so serial and MPI runs
 take identical decisions).
 
-dolfinx 0.5.2 API (see shared/notes/toolchain.md). Displacement DOFs are blocked by node:
+dolfinx 0.5.2 API (see docs/toolchain.md). Displacement DOFs are blocked by node:
 global PETSc index = 2 * global node + component, owned nodes first on every rank.
 """
 

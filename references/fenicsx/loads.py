@@ -1,4 +1,4 @@
-"""The scene's external loads for the FEniCSx reference: reading [loads] (interface.md) and
+"""The scene's external loads for the FEniCSx reference: reading [loads] (docs/scene-format.md) and
 turning it into nodal forces of the Q2 continuum.
 
   [loads]

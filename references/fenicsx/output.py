@@ -1,4 +1,4 @@
-"""history.csv and summary.json in the layout of interface.md, and the contact statistics
+"""history.csv and summary.json in the layout of docs/scene-format.md, and the contact statistics
 (intervals, impulses, peaks) computed the way solver/record/ContactStats.hpp describes them:
 a sample is "in contact" when R > 0, each run of contact samples is a phase, and a phase that
 begins less than the merge gap after the last interval's end joins it (the rule of
@@ -12,7 +12,7 @@ import os
 
 CONTACT_COLUMNS = ["R", "tau", "gap", "ua_x", "ua_y", "va_x", "va_y",
                    "ub_x", "ub_y", "vb_x", "vb_y", "state"]
-# The integer of column `state` (interface.md): 0 open, 1 stick, 2 slip, 3 closed without friction.
+# The integer of column `state` (docs/scene-format.md): 0 open, 1 stick, 2 slip, 3 closed without friction.
 STATE_CODES = {"open": 0, "stick": 1, "slip": 2, "frictionless": 3}
 # load_work: F . u (J), the constant loads' work since t = 0 (0 without [loads]).
 TOTAL_COLUMNS = ["kinetic", "strain", "dissipated", "load_work", "px", "py"]

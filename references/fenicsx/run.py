@@ -40,7 +40,7 @@ def _missing_dolfinx(e):
 
 def _parse(argv):
     p = argparse.ArgumentParser(prog="references/fenicsx/run.py", description=__doc__.split("\n\n")[0])
-    p.add_argument("scene", help="scene TOML file (interface.md)")
+    p.add_argument("scene", help="scene TOML file (docs/scene-format.md)")
     p.add_argument("--out", required=True, help="output directory (history.csv, summary.json)")
     p.add_argument("--mesh", choices=list(PRESETS), help="mesh preset: elements through the depth "
                    "1 | 2 | 4 with square elements (default: default)")

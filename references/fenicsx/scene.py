@@ -1,4 +1,4 @@
-"""Reads and validates a beamimpact scene file (interface.md) with Python's tomllib.
+"""Reads and validates a beamimpact scene file (docs/scene-format.md) with Python's tomllib.
 
 Independent of the C++ loader on purpose: the FEniCSx reference shares nothing with the
 paper's code but the scene file. Unknown keys are errors, as in the C++ loader; every default

@@ -1,4 +1,4 @@
-// The paper's integrator against theory: the exact wave solution of S1 (shared/spec/references.md
+// The paper's integrator against theory: the exact wave solution of S1 (docs/reference-solutions.md
 // section 1), the discrete facts of section 4, and the paper's Eq. 20.
 #include <solver/integrator/ExplicitContactIntegrator.hpp>
 

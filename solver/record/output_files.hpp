@@ -1,6 +1,6 @@
 #pragma once
 /// @file output_files.hpp
-/// @brief Writes one run's history.csv and summary.json (columns and keys of interface.md).
+/// @brief Writes one run's history.csv and summary.json (columns and keys of docs/scene-format.md).
 
 #include <filesystem>
 #include <vector>

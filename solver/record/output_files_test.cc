@@ -1,4 +1,4 @@
-// The writer: interface.md columns, and a non-finite value leaves nothing that looks complete.
+// The writer: docs/scene-format.md columns, and a non-finite value leaves nothing that looks complete.
 #include <solver/record/output_files.hpp>
 
 #include <cmath>

@@ -1,6 +1,6 @@
 #pragma once
 /// @file Scene.hpp
-/// @brief A collision scene as read from TOML (see shared/spec/interface.md): plain data, SI units.
+/// @brief A collision scene as read from TOML (see docs/scene-format.md): plain data, SI units.
 
 #include <array>
 #include <map>

@@ -1,6 +1,6 @@
 #pragma once
 /// @file scene_io.hpp
-/// @brief Reads and validates a scene TOML file (shared/spec/interface.md).
+/// @brief Reads and validates a scene TOML file (docs/scene-format.md).
 
 #include <filesystem>
 #include <string>

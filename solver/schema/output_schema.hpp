@@ -1,6 +1,6 @@
 #pragma once
 /// @file output_schema.hpp
-/// @brief The one owner of the output schema of a run directory (shared/spec/interface.md):
+/// @brief The one owner of the output schema of a run directory (docs/scene-format.md):
 /// the history.csv column names, the per-contact suffix rule, and the string (or integer) form
 /// of every enum that reaches an output. The writer (record/output_files), the reader
 /// (verification/compare/StoredRun), every method and the FEniCSx script follow it; the

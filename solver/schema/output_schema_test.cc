@@ -7,8 +7,8 @@
 namespace beamimpact {
 namespace {
 
-// The contract of interface.md: t, then 12 columns per contact (suffix _k from the second
-// contact on), then 6 model columns (interface.md's five with the loads' work, load_work, after
+// The contract of docs/scene-format.md: t, then 12 columns per contact (suffix _k from the second
+// contact on), then 6 model columns (docs/scene-format.md's five with the loads' work, load_work, after
 // dissipated). Written out here by hand, not derived from the code.
 TEST(OutputSchema, ColumnsFollowInterfaceMd) {
   const std::vector<std::string> one = {

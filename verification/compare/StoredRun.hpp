@@ -1,7 +1,7 @@
 #pragma once
 /// @file StoredRun.hpp
 /// @brief One finished run as the comparison layer sees it: the columns of history.csv and the
-/// parsed summary.json (shared/spec/interface.md).
+/// parsed summary.json (docs/scene-format.md).
 
 #include <filesystem>
 #include <map>

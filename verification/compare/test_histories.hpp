@@ -12,7 +12,7 @@ namespace beamimpact::testing {
 using verification::StoredRun;
 
 /// @brief A one-contact history on t = 0, h, ..., T: R(t) from `force`, ua_x from `ua`, every
-/// other column of interface.md zero except the energies (kinetic = 1 J constant).
+/// other column of docs/scene-format.md zero except the energies (kinetic = 1 J constant).
 inline StoredRun synthetic(
     double h, double T, const std::function<double(double)>& force,
     const std::function<double(double)>& ua = [](double) { return 0.0; }) {

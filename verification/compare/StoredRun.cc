@@ -113,7 +113,8 @@ StoredRun StoredRun::read(const std::filesystem::path& dir) {
   }
   for (const char* required : {"t", "R"}) {
     if (!h.columns_.count(required)) {
-      throw InputError(csv, required, "expected this column in the header (docs/scene-format.md), found: " + line);
+      throw InputError(csv, required,
+                       "expected this column in the header (docs/scene-format.md), found: " + line);
     }
   }
   long row = 1;
@@ -175,7 +176,8 @@ StoredRun StoredRun::from_columns(std::map<std::string, std::vector<double>> col
 const std::vector<double>& StoredRun::column(const std::string& name) const {
   const auto it = columns_.find(name);
   if (it == columns_.end()) {
-    throw InputError(label_ + "/history.csv", name, "expected this column (docs/scene-format.md), it is absent");
+    throw InputError(label_ + "/history.csv", name,
+                     "expected this column (docs/scene-format.md), it is absent");
   }
   return it->second;
 }

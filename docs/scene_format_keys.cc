@@ -8,7 +8,9 @@
 ///   indices are dropped ("bodies[0].supports[1].fix" -> "bodies.supports.fix"). The scenes give
 ///   every table that has keys of its own ([[bodies]] supports, [[loads.point]], each method's
 ///   table) and leave out the keys that switch a reader to another branch ([exact] modes, [ida]
-///   kn, cn): a reader asks about every key of its table on the branch taken then.
+///   kn, cn): a reader asks about every key of its table on the branch taken then. One more
+///   scene is only read, with the other branches of the scene reader (dt = "auto", a rigid body,
+///   a Timoshenko body, the Hertz law, a contact search).
 /// - "history_columns": the time column, the contact and model columns, the optional columns
 ///   (solver/schema/output_schema.hpp), and "state_values" (the codes of column `state`).
 /// - "summary": the keys of the summary.json of each run (summary_json(), what `beamimpact run`
@@ -20,6 +22,7 @@
 #include <regex>
 #include <set>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -89,6 +92,11 @@ history = true
 merge_steps = 3
 )";
 
+/// The base scene's other branches, as --set overrides.
+const std::vector<std::string> kOtherBranches = {
+    "time.dt=\"auto\"",          "bodies[0].rigid=true",      "bodies[1].theory=\"timoshenko\"",
+    "contacts[0].law=\"hertz\"", "contacts[0].stiffness=1e3", "contacts[0].node=\"all\""};
+
 /// "bodies[0].supports[1].fix" -> "bodies.supports.fix".
 std::string without_indices(const std::string& key) {
   static const std::regex index(R"(\[[0-9]+\])");
@@ -137,6 +145,7 @@ int main() {
     add_summary_keys(summary_json(exact_scene, exact::solve(exact_scene)), summary);
     const Scene ida_scene = load_scene_text(kBase + "[ida]\nrtol = 1e-6\n", "ida scene");
     add_summary_keys(summary_json(ida_scene, ida::solve(ida_scene)), summary);
+    (void)load_scene_text(kBase, "other branches", kOtherBranches);
     for (const std::string& key : log.keys()) scene_keys.insert(without_indices(key));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "scene_format_keys: %s\n", e.what());

@@ -26,7 +26,13 @@ std::string shortest(double v) {
   return s.str();
 }
 
+/// The innermost KeyLog alive on this thread, or null.
+thread_local KeyLog* active_log = nullptr;
+
 }  // namespace
+
+KeyLog::KeyLog() : outer_(active_log) { active_log = this; }
+KeyLog::~KeyLog() { active_log = outer_; }
 
 TableReader::TableReader(const toml::table& table, std::string file, std::string prefix,
                          std::map<std::string, std::string>* assumed)
@@ -40,8 +46,13 @@ void TableReader::fail(const std::string& key, const std::string& message) const
   throw InputError(file_, path(key), message);
 }
 
-const toml::node* TableReader::find(const std::string& key) {
+void TableReader::mark(const std::string& key) {
   seen_.insert(key);
+  if (active_log) active_log->keys_.insert(path(key));
+}
+
+const toml::node* TableReader::find(const std::string& key) {
+  mark(key);
   return table_.get(key);
 }
 
@@ -68,7 +79,7 @@ double TableReader::number(const std::string& key, const std::string& what) {
 
 double TableReader::number_or(const std::string& key, double fallback, const std::string& what) {
   if (!table_.get(key)) {
-    seen_.insert(key);
+    mark(key);
     assume(key, shortest(fallback));
     return fallback;
   }
@@ -85,7 +96,7 @@ long TableReader::integer(const std::string& key, const std::string& what) {
 
 long TableReader::integer_or(const std::string& key, long fallback, const std::string& what) {
   if (!table_.get(key)) {
-    seen_.insert(key);
+    mark(key);
     assume(key, std::to_string(fallback));
     return fallback;
   }
@@ -105,7 +116,7 @@ std::string TableReader::choice_or(const std::string& key, const std::string& fa
   std::string expected = "one of";
   for (const auto& a : allowed) expected += " \"" + a + "\"";
   if (!table_.get(key)) {
-    seen_.insert(key);
+    mark(key);
     assume(key, fallback);
     return fallback;
   }

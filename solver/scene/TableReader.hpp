@@ -17,6 +17,25 @@
 
 namespace beamimpact {
 
+/// @brief While one is alive, every key that a TableReader of this thread asks about is added to it
+/// by its full path ("time.dt", "bodies[0].supports[1].fix"): the keys the readers accept, since
+/// finish() refuses every other. It lists the scene format's keys for the test of
+/// docs/scene-format.md (docs/scene_format_keys.cc); with none alive a read costs one null test.
+class KeyLog {
+ public:
+  KeyLog();
+  ~KeyLog();
+  KeyLog(const KeyLog&) = delete;
+  KeyLog& operator=(const KeyLog&) = delete;
+  /// @brief The keys asked about since this log was made.
+  const std::set<std::string>& keys() const { return keys_; }
+
+ private:
+  friend class TableReader;
+  std::set<std::string> keys_;
+  KeyLog* outer_;  ///< the log this one hides while alive
+};
+
 /// @brief Reads keys of one table; `prefix` is the dotted path of the table ("time", "bodies[0]").
 class TableReader {
  public:
@@ -61,6 +80,8 @@ class TableReader {
 
  private:
   const toml::node* find(const std::string& key);
+  /// Records the key as known (finish() accepts it) and in the thread's KeyLog.
+  void mark(const std::string& key);
   void assume(const std::string& key, const std::string& value);
   const toml::table& table_;
   std::string file_, prefix_;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <solver/scene/SceneError.hpp>
+#include <solver/scene/TableReader.hpp>
 #include <solver/testing/test_scenes.hpp>
 
 namespace beamimpact {
@@ -28,6 +29,26 @@ TEST(SceneIo, LoadsThePaperScenes) {
   const Scene s4 = load_scene(paper_scene("s4_oblique_45"));
   EXPECT_FALSE(s4.time.dt.has_value());  // "auto"
   EXPECT_DOUBLE_EQ(s4.contacts[0].friction, 0.3);
+}
+
+// KeyLog lists the keys the readers asked about by their full path: the keys S2 gives, the ones
+// it leaves to their defaults, and the sub-table keys of the entries it has (B's two supports; A
+// has none). The innermost log alive receives them.
+TEST(SceneIo, KeyLogListsTheKeysAskedAbout) {
+  const KeyLog outer;
+  {
+    const KeyLog inner;
+    (void)load_scene(paper_scene("s2_transverse"));
+    const std::set<std::string>& k = inner.keys();
+    for (const char* key :
+         {"name", "time.dt", "time.fraction", "model.rayleigh_mass", "bodies[1].supports[1].fix",
+          "contacts[0].law", "output.field_precision", "effects.bending", "loads"})
+      EXPECT_TRUE(k.count(key)) << key;
+    EXPECT_FALSE(k.count("bodies[0].supports[0].at"));
+    EXPECT_TRUE(outer.keys().empty());
+  }
+  (void)load_scene(paper_scene("s1_central"));
+  EXPECT_TRUE(outer.keys().count("bodies[1].elements"));
 }
 
 TEST(SceneIo, RecordsAssumedDefaults) {

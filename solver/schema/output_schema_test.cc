@@ -8,8 +8,7 @@ namespace beamimpact {
 namespace {
 
 // The contract of docs/scene-format.md: t, then 12 columns per contact (suffix _k from the second
-// contact on), then 6 model columns (docs/scene-format.md's five with the loads' work, load_work, after
-// dissipated). Written out here by hand, not derived from the code.
+// contact on), then 6 model columns. Written out here by hand, not derived from the code.
 TEST(OutputSchema, ColumnsFollowInterfaceMd) {
   const std::vector<std::string> one = {
       "t",    "R",    "tau",   "gap",     "ua_x",   "ua_y",       "va_x",      "va_y", "ub_x", "ub_y",

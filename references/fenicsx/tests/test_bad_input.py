@@ -1,5 +1,5 @@
 """Bad input gives one clear message naming the file, the key and what was expected, exit
-code 2, and no summary.json (docs/scene-format.md, "Errors")."""
+code 2, and no summary.json (docs/scene-format.md, "Exit codes of beamimpact run")."""
 
 import os
 

@@ -118,6 +118,7 @@ class GlobalModel:
         held = [o + d for p, o in zip(self.parts, self.offset) if p is not None for d in p.held_dofs()]
         self.free = np.setdiff1d(np.arange(n), held)
         self.massless = []  # global DOFs whose mass was redistributed (redistribute_mass)
+        self._momentum = None  # momentum covectors, built from M at first use
 
     def point(self, body, s):
         """2 x n matrix: the global (x, y) displacement of body's point at s (m along its axis)."""
@@ -138,19 +139,32 @@ class GlobalModel:
             v[o:o + p.ndof] = (p.e @ v0) * p.t_axial + (p.nrm @ v0) * p.t_normal
         return v
 
-    def momentum(self, v):
-        """Total linear momentum (N s) and each body's centre-of-mass velocity (m/s), from the
-        global mass matrix (after any redistribution)."""
-        total, vcm, Mv = np.zeros(2), {}, self.M @ v
+    def _momentum_rows(self):
+        """Each body's momentum covectors (2 x n, global x and y) and mass (kg), from the global
+        mass matrix as it is now (after any redistribution)."""
+        rows = []
         for b, p, o in zip(self.scene.bodies, self.parts, self.offset):
             if p is None:
-                vcm[b.name] = [0.0, 0.0]
+                rows.append((b.name, None, 0.0))
                 continue
-            block = slice(o, o + p.ndof)
-            pb = p.e * (p.t_axial @ Mv[block]) + p.nrm * (p.t_normal @ Mv[block])
-            mass = p.t_axial @ (self.M[block, block] @ p.t_axial)
+            ta, tn = np.zeros(self.n), np.zeros(self.n)
+            ta[o:o + p.ndof], tn[o:o + p.ndof] = p.t_axial, p.t_normal
+            Ma, Mn = self.M @ ta, self.M @ tn  # M is symmetric: t^T M as a column
+            rows.append((b.name, np.outer(p.e, Ma) + np.outer(p.nrm, Mn), float(ta @ Ma)))
+        return rows
+
+    def momentum(self, v):
+        """Total linear momentum (N s) and each body's centre-of-mass velocity (m/s)."""
+        if self._momentum is None:
+            self._momentum = self._momentum_rows()
+        total, vcm = np.zeros(2), {}
+        for name, P, mass in self._momentum:
+            if P is None:
+                vcm[name] = [0.0, 0.0]
+                continue
+            pb = P @ v
             total += pb
-            vcm[b.name] = [float(x) for x in pb / mass]
+            vcm[name] = [float(x) for x in pb / mass]
         return total, vcm
 
 def redistribute_mass(model, body, s):
@@ -177,5 +191,6 @@ def redistribute_mass(model, body, s):
     for nb in neighbours:
         M[o + nb, o + nb] += moved / len(neighbours)
     model.M = M.tocsr()
+    model._momentum = None
     model.massless.append(g)
     return g

@@ -4,7 +4,8 @@ own 1D mesh along its axis (s from 0 to L), the axial displacement u in Lagrange
 Euler-Bernoulli beam; DOFs w and dw/ds = theta at each node) when the scene bends. Mass and
 stiffness are assembled from GetFEM's generic weak-form language (GWFL):
 
-  axial:    E A Grad_u.Grad_Test_u           rho A u.Test_u   (lumped: Gauss-Lobatto quadrature)
+  axial:    E A Grad_u.Grad_Test_u           rho A u.Test_u   (consistent; lumped on request: Gauss-Lobatto
+                                                              quadrature)
   bending:  E I Hess_w:Hess_Test_w           rho A w.Test_w   (+ rho I Grad_w.Grad_Test_w for
                                                                rotary_inertia = "section")
 
@@ -99,7 +100,7 @@ def _asm(mim, expr, md, var):
 class GlobalModel:
     """Every body's block, the global M, K, the free DOFs after supports, rigid initial velocities."""
 
-    def __init__(self, scene):
+    def __init__(self, scene, mass="consistent"):
         self.scene = scene
         self.parts, self.offset = [], []
         n = 0
@@ -108,7 +109,7 @@ class GlobalModel:
             if b.rigid:
                 self.parts.append(None)
                 continue
-            bm = BodyModel(b, scene.bending, scene.mass, scene.rotary_inertia)
+            bm = BodyModel(b, scene.bending, mass, scene.rotary_inertia)
             self.parts.append(bm)
             n += bm.ndof
         self.n = n

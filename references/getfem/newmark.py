@@ -21,11 +21,14 @@ class Options:
     gamma: float = 0.5
     penalty: float = 10.0  # gamma0: kn = gamma0 E A / h
     redistribute: bool = True  # the contact nodes' mass moved to their neighbours
+    mass: str = "consistent"  # the axial mass: "consistent" (GetFEM's mass brick) or "lumped"
 
     def check(self):
         if not (0.0 < self.beta <= 0.5 and 0.5 <= self.gamma <= 1.0 and self.beta >= self.gamma / 4 - 1e-15):
             raise ValueError(f"newmark beta = {self.beta}, gamma = {self.gamma}: expected 0.5 <= gamma <= 1 and "
                              "gamma / 4 <= beta <= 0.5 (the unconditionally stable range)")
+        if self.mass not in ("consistent", "lumped"):
+            raise ValueError(f"mass = {self.mass!r}: expected \"consistent\" or \"lumped\"")
         if not self.penalty > 0:
             raise ValueError(f"penalty = {self.penalty}: expected gamma0 > 0")
 

@@ -5,7 +5,8 @@ implicit Newmark scheme on the assembled matrices, frictionless penalty contact 
 node. See assembly.py, contact.py, newmark.py and docs/getfem.md.
 
   /usr/bin/python3 references/getfem/run.py SCENE.toml --out DIR [--dt S] [--mesh FACTOR] [--penalty GAMMA0]
-      [--beta 0.25] [--gamma 0.5] [--quiet]
+      [--mass consistent|lumped] [--beta 0.25] [--gamma 0.5]
+      [--quiet]
 
 Writes DIR/history.csv and DIR/summary.json (method "getfem"). Exit codes: 0 done; 2 refused or
 bad input (one line on stderr: what the scene asks that this reference does not model, or a bad
@@ -48,6 +49,7 @@ def parse(argv):
     ap.add_argument("--dt", default="", help="time step (s); empty: the scene's time.dt")
     ap.add_argument("--mesh", default="", help="element multiplier of every body (1 .. 64); empty: 1")
     ap.add_argument("--penalty", type=float, default=None, help="gamma0: kn = gamma0 E A / h (default 10)")
+    ap.add_argument("--mass", default=None, help="axial mass: consistent (default) or lumped")
     ap.add_argument("--beta", type=float, default=None, help="Newmark beta (default 1/4)")
     ap.add_argument("--gamma", type=float, default=None, help="Newmark gamma (default 1/2)")
     ap.add_argument("--quiet", action="store_true")
@@ -58,16 +60,19 @@ def options(scene, args):
     """Newmark and penalty options: command line over the scene's [getfem] table over defaults."""
     from newmark import Options
     opts, table = Options(), dict(scene.options)
-    for key in ("beta", "gamma", "penalty"):
+    for key in ("beta", "gamma", "penalty", "mass"):
         if key in table:
             v = table.pop(key)
-            if isinstance(v, bool) or not isinstance(v, (int, float)):
+            if key == "mass":
+                setattr(opts, key, v)
+            elif isinstance(v, bool) or not isinstance(v, (int, float)):
                 raise Refused(scene.file, f"getfem.{key}", f"expected a number, found {v!r}")
-            setattr(opts, key, float(v))
+            else:
+                setattr(opts, key, float(v))
         if getattr(args, key) is not None:
             setattr(opts, key, getattr(args, key))
     if table:
-        raise Refused(scene.file, f"getfem.{next(iter(table))}", "unknown key; expected beta, gamma or penalty")
+        raise Refused(scene.file, f"getfem.{next(iter(table))}", "unknown key; expected beta, gamma, penalty or mass")
     try:
         opts.check()
     except ValueError as e:

@@ -62,7 +62,7 @@ def time_grid(scene, model):
 def simulate(scene, opts, make_stats):
     """Runs the scene; returns (history rows, summary without the timing keys). make_stats(dt)
     gives one contact-statistics object per contact."""
-    model = GlobalModel(scene)
+    model = GlobalModel(scene, opts.mass)
     dt, steps, crit = time_grid(scene, model)
     stats = [make_stats(dt) for _ in scene.contacts]
     pairs = build_pairs(scene, model, opts.penalty, opts.redistribute)
@@ -117,7 +117,9 @@ def _summary(scene, opts, model, pairs, stats, steps, first, last, vcm, peak_pen
         "assumed": {
             "getfem.elements": "FEM_PK(1,1) axial" + (", FEM_HERMITE(1) transverse (Euler-Bernoulli)" if scene.bending
                                                       else "; no transverse field (rods on one line)"),
-            "getfem.mass": ("axial: Gauss-Lobatto lumped" if scene.mass == "lumped" else "axial: consistent") + (
+            "getfem.mass": ("axial: Gauss-Lobatto lumped" if opts.mass == "lumped" else
+                            f"axial: consistent (GetFEM's; the scene's model.mass = {scene.mass!r} is not followed, "
+                            "option mass)") + (
                 "; transverse: consistent Hermite (GetFEM lumps no Hermite field)" if scene.bending else ""),
             "getfem.newmark": f"beta {opts.beta}, gamma {opts.gamma}",
             "getfem.contact": f"linear penalty at the striker node, kn = {opts.penalty} E A / h; "
@@ -129,7 +131,7 @@ def _summary(scene, opts, model, pairs, stats, steps, first, last, vcm, peak_pen
         "contacts": contacts,
         "units": {"t": "s", "R": "N", "tau": "N", "gap": "m", "u": "m", "v": "m/s", "energy": "J",
                   "momentum": "N s", "impulse": "N s"},
-        "getfem": {"beta": opts.beta, "gamma": opts.gamma, "penalty": opts.penalty,
+        "getfem": {"mass": opts.mass, "beta": opts.beta, "gamma": opts.gamma, "penalty": opts.penalty,
                    "integrator": "Newmark on the GWFL-assembled M, K (implicit)",
                    "contact_sampling": "every step: the penalty force at the step's end"},
         "complete": True,

@@ -48,15 +48,17 @@ def _geometry(scene, c):
 def build_pairs(scene, model, gamma0, redistribute):
     """Every contact of the scene as a Pair; kn = gamma0 * the stiffer E A / h of the two bodies'
     elements (a rigid target gives the striker's). With `redistribute`, the striker node's axial
-    mass and, end to end, the struck end node's go to their neighbours (redistribute_mass)."""
+    mass and, end to end, the struck end node's go to their neighbours (redistribute_mass) when
+    the contact's normal lies along that body's axis."""
     pairs = []
     for c in scene.contacts:
         a, b = scene.bodies[c.striker], scene.bodies[c.target]
         s, n, g0, kind = _geometry(scene, c)
-        if redistribute:
+        # Only a node the contact pushes along its body's axis (the axial mass is redistributed).
+        if redistribute and abs(n @ np.array(a.axis)) > 1 - 1e-9:
             redistribute_mass(model, c.striker, a.length * c.node / a.elements)
-            if kind == "end_to_end":
-                redistribute_mass(model, c.target, s)
+        if redistribute and kind == "end_to_end" and abs(n @ np.array(b.axis)) > 1 - 1e-9:
+            redistribute_mass(model, c.target, s)
         Pa = model.point(c.striker, a.length * c.node / a.elements)
         Pb = model.point(c.target, s)
         kn = gamma0 * max(x.E * x.area / (x.length / x.elements) for x in (a, b) if not x.rigid)

@@ -127,6 +127,7 @@ def _summary(scene, opts, model, pairs, stats, steps, first, last, vcm, peak_pen
         },
         "energy_initial": first[-6] + first[-5], "energy_final": last[-6] + last[-5],
         "max_penetration": peak_pen,
+        "massless_dofs": len(model.massless),
         "bodies": {name: {"final_velocity": vel} for name, vel in vcm.items()},
         "contacts": contacts,
         "units": {"t": "s", "R": "N", "tau": "N", "gap": "m", "u": "m", "v": "m/s", "energy": "J",

@@ -20,6 +20,7 @@ class _Sampler:
         self.e0 = None
 
     def row(self, t, u, v, lam):
+        """One history row (history_columns' order) at time t (s) with contact forces lam (N)."""
         m = self.model
         kinetic, strain = 0.5 * v @ (m.M @ v), 0.5 * u @ (m.K @ u)
         penalty = sum(0.5 * l * l / p.kn for p, l in zip(self.pairs, lam))
@@ -34,7 +35,7 @@ class _Sampler:
         # dissipated: what the account misses (Rayleigh damping, the penalty's switching); the
         # penalty spring's energy is stored, not dissipated.
         dissipated = self.e0 - kinetic - strain - penalty
-        return line + [kinetic, strain, dissipated, 0.0, momentum[0], momentum[1]], kinetic + strain + penalty
+        return line + [kinetic, strain, dissipated, 0.0, momentum[0], momentum[1]]
 
 
 def critical_dt(model):
@@ -73,7 +74,7 @@ def simulate(scene, opts, make_stats):
     af = stepper.initial_acceleration(uf, vf)
     sampler = _Sampler(model, pairs)
     lam = np.zeros(len(pairs))
-    first, energy = sampler.row(0.0, u, v, lam)
+    first = sampler.row(0.0, u, v, lam)
     rows, peak_pen = [first], 0.0
     for k in range(1, steps + 1):
         uf, vf, af, lam = stepper.step(uf, vf, af)
@@ -83,8 +84,7 @@ def simulate(scene, opts, make_stats):
             s.add(t, float(l), 0.0, dt, "frictionless" if l > 0 else "open")
         peak_pen = max([peak_pen] + [-(p.g0 + p.G @ u) for p in pairs])
         if k % scene.output_every == 0 or k == steps:
-            row, energy = sampler.row(t, u, v, lam)
-            rows.append(row)
+            rows.append(sampler.row(t, u, v, lam))
     _, vcm = model.momentum(v)
     summary = _summary(scene, opts, model, pairs, stats, steps, first, rows[-1], vcm, peak_pen)
     summary.update({"dt": dt, "end_time": steps * dt, "critical_dt": crit})

@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <verification/compare/test_histories.hpp>
+
 namespace beamimpact::verification {
 namespace {
 
@@ -90,6 +92,96 @@ TEST(Evaluate, OneVerdictForEveryReport) {
   EXPECT_NE(text.find("**FAIL**: 1 gates"), std::string::npos);
   ctx.incomplete.clear();
   EXPECT_EQ(norms_json(ctx, {item}).at("verdict"), "PASS");
+}
+
+// Run against reference, never the other way round: pairs whose swap changes the error. A
+// run whose contact force is (1 + e) times its reference's (the same shape, a sin^2 pulse on
+// [1, 2] s) has the relative errors |(1 + e) - 1| / 1 = e in impulse, peak force and R (L2);
+// the reference measured against the run would give e / (1 + e).
+double pulse(double t) { return t > 1.0 && t < 2.0 ? std::pow(std::sin(M_PI * (t - 1.0)), 2) : 0.0; }
+
+/// A finished run in memory whose force is `scale` times the pulse.
+JobOutcome scaled_run(const JobSpec& spec, double scale) {
+  auto run = std::make_shared<const StoredRun>(
+      testing::synthetic(0.01, 3.0, [scale](double t) { return scale * pulse(t); }));
+  return JobOutcome{spec, {}, JobOutcome::Status::kOk, "", 0.0, 0.0, 300, 0.01, run};
+}
+
+JobSpec spec_at(const std::string& method, std::optional<double> dt) {
+  return JobSpec{"pulse.toml", method, dt, "", {}, {}};
+}
+
+double norm_of(const Comparison& c, const std::string& name) {
+  const Norm* n = c.find(name);
+  EXPECT_TRUE(n && n->value) << name;
+  return n && n->value ? *n->value : -1.0;
+}
+
+TEST(Evaluate, ACaseMeasuresTheRunAgainstItsReference) {
+  Case c;
+  c.run = spec_at("paper", 0.01);
+  c.reference = spec_at("exact", std::nullopt);
+  // tol 0.75 lies between e = 1 (run against reference) and e / (1 + e) = 0.5 (swapped).
+  c.gates = {{"impulse", 0.75, std::nullopt, "t", std::nullopt}};
+  const std::map<std::string, JobOutcome> runs = {{c.run.key(), scaled_run(c.run, 2.0)},
+                                                  {c.reference.key(), scaled_run(c.reference, 1.0)}};
+  const ItemResult r = evaluate_case(c, runs);
+  ASSERT_EQ(r.comparisons.size(), 1u);
+  // Both histories are the same pulse on the same rows: the errors are e = 1 to roundoff.
+  for (const char* n : {"impulse", "peak_R", "R.rel_l2", "R.rel_linf"})
+    EXPECT_NEAR(norm_of(r.comparisons[0], n), 1.0, 1e-12) << n;
+  ASSERT_EQ(r.gates.size(), 1u);
+  EXPECT_EQ(r.gates[0].status, GateStatus::kFail);
+}
+
+// A ladder with a reference: rung k has e_k = 0.4, 0.1, 0.025 (e = 6.4 dt^2, order 2 at each
+// halving of dt); swapped, e / (1 + e) gives orders 1.65 and 1.90, below the gates' 1.95. The
+// Richardson limit of the rungs' impulses (1 + e_k) I is I, the reference's own value.
+TEST(Evaluate, ALadderMeasuresEveryRungAgainstItsReference) {
+  Convergence v;
+  const double steps[3] = {0.25, 0.125, 0.0625}, e[3] = {0.4, 0.1, 0.025};
+  std::map<std::string, JobOutcome> runs;
+  for (int k = 0; k < 3; ++k) {
+    v.runs.push_back(spec_at("paper", steps[k]));
+    v.steps.push_back(steps[k]);
+    runs.emplace(v.runs.back().key(), scaled_run(v.runs.back(), 1.0 + e[k]));
+  }
+  v.reference = spec_at("exact", std::nullopt);
+  runs.emplace(v.reference->key(), scaled_run(*v.reference, 1.0));
+  v.gates = {{"impulse", std::nullopt, 1.95, "t", std::nullopt},
+             {"R.rel_l2", std::nullopt, 1.95, "t", std::nullopt}};
+  const ItemResult r = evaluate_ladder(v, runs);
+  ASSERT_EQ(r.comparisons.size(), 3u);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(norm_of(r.comparisons[k], "impulse"), e[k], 1e-12) << k;
+  for (const auto& g : r.gates) EXPECT_EQ(g.status, GateStatus::kPass) << g.gate.metric << ": " << g.message;
+  const auto& [errors, orders] = r.orders.at("impulse");
+  ASSERT_EQ(orders.size(), 2u);
+  for (const auto& p : orders) EXPECT_NEAR(p.value_or(0.0), 2.0, 1e-9);
+  ASSERT_TRUE(r.richardson.contains("impulse"));
+  // The pulse's impulse: int_1^2 sin^2 = 1/2 (the trapezoidal rule is exact for it on whole periods).
+  const double I = 0.5;
+  EXPECT_NEAR(r.richardson.at("impulse").reference, I, 1e-12);
+  EXPECT_NEAR(r.richardson.at("impulse").limit, I, 1e-9 * I);
+  EXPECT_NEAR(r.richardson.at("impulse").error, 0.0, 1e-9);
+}
+
+// A ladder without a reference compares consecutive rungs, the finer one the reference:
+// (1 + e_i) against (1 + e_{i+1}) gives (e_i - e_{i+1}) / (1 + e_{i+1}): 0.3 / 1.1 and
+// 0.075 / 1.025 (swapped: 0.3 / 1.4 and 0.075 / 1.1).
+TEST(Evaluate, ASelfConvergenceLadderTakesTheFinerRungAsTheReference) {
+  Convergence v;
+  const double steps[3] = {0.25, 0.125, 0.0625}, e[3] = {0.4, 0.1, 0.025};
+  std::map<std::string, JobOutcome> runs;
+  for (int k = 0; k < 3; ++k) {
+    v.runs.push_back(spec_at("paper", steps[k]));
+    v.steps.push_back(steps[k]);
+    runs.emplace(v.runs.back().key(), scaled_run(v.runs.back(), 1.0 + e[k]));
+  }
+  v.gates = {{"impulse", std::nullopt, 1.0, "t", std::nullopt}};
+  const ItemResult r = evaluate_ladder(v, runs);
+  ASSERT_EQ(r.comparisons.size(), 2u);
+  EXPECT_NEAR(norm_of(r.comparisons[0], "impulse"), 0.3 / 1.1, 1e-12);
+  EXPECT_NEAR(norm_of(r.comparisons[1], "impulse"), 0.075 / 1.025, 1e-12);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <beamimpact/version.hpp>
 #include <solver/util/sha256.hpp>
 #include <solver/util/write_file_atomic.hpp>
+#include <verification/matrix/program_id.hpp>
 
 namespace beamimpact::verification {
 
@@ -18,7 +19,7 @@ nlohmann::json program_input() {
   nlohmann::json files = nlohmann::json::array();
   for (const auto& f : loaded_methods_files())
     files.push_back({{"file", f.string()}, {"sha256", file_sha256(f)}});
-  return {{"version", kVersion}, {"methods_files", files}};
+  return {{"version", kVersion}, {"program_sha256", program_sha256()}, {"methods_files", files}};
 }
 
 void write_record(const fs::path& file, const nlohmann::json& input, const nlohmann::json& result) {

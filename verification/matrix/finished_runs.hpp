@@ -2,10 +2,11 @@
 /// @file finished_runs.hpp
 /// @brief Resuming an interrupted `verify` or `study` with the same command: each finished piece
 /// of work (a run of verify, a point of a study) leaves a record, written atomically and after
-/// everything else of it, naming the input it was made from (the program's version and methods
-/// files, the scene file's SHA-256, the piece's own settings). A restart reuses exactly the
-/// pieces whose record names the same input and does the rest again; a record of another
-/// version, scene or setting, or one that cannot be read, is ignored.
+/// everything else of it, naming the input it was made from (the program's version and the
+/// SHA-256 of its bytes, its methods files, the scene file's SHA-256, the piece's own settings).
+/// A restart reuses exactly the pieces whose record names the same input and does the rest
+/// again; a record of another build, version, scene or setting, or one that cannot be read, is
+/// ignored.
 
 #include <filesystem>
 #include <map>
@@ -19,8 +20,10 @@
 
 namespace beamimpact::verification {
 
-/// @brief What every result depends on: {"version": `beamimpact --version`, "methods_files":
-/// [{"file", "sha256"}, ...]} of the methods files this process loaded.
+/// @brief What every result depends on: {"version": `beamimpact --version`, "program_sha256":
+/// the SHA-256 of the program's own bytes (program_id.hpp: the build, not only its version
+/// string, which is the same for every build of an edited tree), "methods_files": [{"file",
+/// "sha256"}, ...]} of the methods files this process loaded.
 nlohmann::json program_input();
 
 /// @brief Writes {"input": input, "result": result} to file, atomically (write_file_atomic).

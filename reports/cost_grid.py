@@ -16,6 +16,15 @@ def seconds(v):
     return f"{v:.3g} s" if v >= 0.1 else f"{v * 1e3:.3g} ms"
 
 
+def ratio_text(r):
+    """@brief A ratio in 3 significant digits without an exponent: 3521.5 -> "3,520×", 0.0255 -> "1/39.2×"."""
+    if r < 1:
+        return "1/" + ratio_text(1 / r)
+    if r >= 1000:
+        return f"{round(r, 2 - len(str(int(r))) + 1):,.0f}×"
+    return f"{r:.3g}×"
+
+
 def cell(entry, method):
     """@brief One grid cell: {"s": text of the CPU time, "ratio": text of the ratio to the paper's,
     "state": ok | bound | not_reached | not_run, "note": why not run}."""
@@ -29,8 +38,8 @@ def cell(entry, method):
     ratio = 1.0 if method == PAPER else entry["ratio_to_paper"].get(method)
     lo_hi = entry.get("ratio_range", {}).get(method)
     return {"s": ("≤ " if bound else "") + seconds(cpu), "cpu": cpu,
-            "ratio": "" if ratio is None else f"{ratio:.3g}×", "ratio_value": ratio,
-            "range": "" if not lo_hi else f"{lo_hi[0]:.3g}–{lo_hi[1]:.3g}×",
+            "ratio": "" if ratio is None else ratio_text(ratio), "ratio_value": ratio,
+            "range": "" if not lo_hi else f"{ratio_text(lo_hi[0])[:-1]}–{ratio_text(lo_hi[1])}",
             "state": "bound" if bound else "ok", "note": ""}
 
 
@@ -98,7 +107,7 @@ def ratio_spread(all_grids, level):
 # Why a ladder's error does not fall, by what the ladder refines (work_precision.py's method labels).
 LADDER_REASONS = (
     (("dt ladder", "rtol ladder"),
-     "time is refined at a fixed mesh, so the mesh (spatial) error dominates and stays; a smaller step "
+     "time integration is refined (dt or rtol) at a fixed mesh, so the mesh (spatial) error dominates and stays; a smaller step "
      "also resolves more of the contact force's oscillation on that mesh, so the error can even grow. "
      "The mesh ladder is the one that shows the method converging."),
     (("mesh ladder", "meshes", "mesh x"),

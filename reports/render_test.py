@@ -64,6 +64,7 @@ def test_cost_cells_say_bound_ratio_not_reached_and_not_run():
     assert cost_grid.cell(e, "paper")["s"] == "≤ 0.291 ms" and cost_grid.cell(e, "paper")["ratio"] == "1×"
     ida = cost_grid.cell(e, "IDA")
     assert (ida["s"], ida["ratio"], ida["range"]) == ("29.4 ms", "101×", "37.9–105×")
+    assert cost_grid.ratio_text(3521.5) == "3,520×" and cost_grid.ratio_text(0.0255) == "1/39.2×"
     assert cost_grid.cell(e, "Siconos")["state"] == "not_reached"
     assert cost_grid.cell(e, "FEniCSx")["state"] == "not_run"
 

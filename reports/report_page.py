@@ -170,4 +170,4 @@ def context(verify_dir, set_dirs, out_dir):
             "weakest": weakest(rows, study), "study": study, "scorecard": scorecard(rows),
             "cost": cost(set_dirs), "sets": sets, "provenance": provenance(sets, norms["version"]),
             "promise": promise(norms, rows), "scenes": [(s, by_scene[s]) for s in scenes],
-            "margins": (MARGIN_CLOSE, MARGIN_NEAR), "share": share}
+            "margins": (MARGIN_CLOSE, MARGIN_NEAR), "share": share, "ratio": cost_grid.ratio_text}

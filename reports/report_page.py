@@ -11,6 +11,7 @@ from figure_sets import InputProblem, figure_set, load_json, provenance
 # Margin = a gate's value over its limit (norms.json "margin": 1 = at the limit); cell colours.
 MARGIN_CLOSE, MARGIN_NEAR = 0.5, 0.9
 TIGHTEST = 8  # gates listed under "where it fails" after the failing ones
+WEAKEST_SCENES = 3  # scenes the verdict names, tightest first
 # The parameter study whose breakdown the verdict summarises: its table, its two mapped
 # parameters and the figure (reports/figures/figures.json) that maps it.
 STUDY = ("figures", "study_s4_angle_friction.csv", "alpha0", "mu", "study_s4_angle_friction_stability.png")
@@ -104,10 +105,10 @@ def weakest(rows, study):
     by_scene = {}
     for r in rows:
         by_scene.setdefault(r["scene"], []).append(r)
-    scene = min(by_scene, key=lambda s: (worst(by_scene[s])[2], s))
-    gates = sorted((g for g in by_scene[scene] if g["margin"] is not None), key=lambda g: -g["margin"])
-    return {"scene": scene, "gate": gates[0] if gates else None, "label": worst(by_scene[scene])[1],
-            "study": study}
+    order = sorted(by_scene, key=lambda s: (worst(by_scene[s])[2], s))
+    gates = sorted((g for g in by_scene[order[0]] if g["margin"] is not None), key=lambda g: -g["margin"])
+    return {"scene": order[0], "gate": gates[0] if gates else None, "label": worst(by_scene[order[0]])[1],
+            "next": [(s, worst(by_scene[s])[1]) for s in order[1:WEAKEST_SCENES]], "study": study}
 
 
 def where_it_fails(rows):

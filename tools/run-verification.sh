@@ -75,6 +75,7 @@ if ((score)); then
   if "$build"/beamimpact score "${found[@]}" --out out/score --jobs "$(nproc)" >out/score.log 2>&1; then
     for m in "${found[@]}"; do
       dir=out/score; ((${#found[@]} > 1)) && dir=out/score/$m
+      /usr/bin/python3 reports/render.py scorecard "$dir"   # the page from scorecard.json (reports/templates)
       /usr/bin/python3 reports/scorecard_figures.py "$dir"
     done
   else

@@ -149,10 +149,12 @@ def cost(set_dirs):
 def promise(norms, rows):
     """@brief What a pass promises, in one sentence (scenes, references and tier of this run)."""
     scenes = sorted({r["scene"] for r in rows})
-    refs = sorted({r["reference"] for r in rows if r["reference"]})
+    refs = sorted({r["reference"].split()[0] for r in rows if r["reference"]})  # the method, not its settings
+    own = sum(not r["reference"] for r in rows)
+    self_conv = f"{'; ' if refs else ''}its own finer runs for {own} convergence gates" if own else ""
     return (f"PASS promises that each of the {len(rows)} gated quantities of the {norms['tier']} tier, on these "
             f"{len(scenes)} scenes at the settings listed, lies within the tolerance written beside it "
-            f"against its reference ({', '.join(refs) or 'self-convergence'}); it promises nothing for other "
+            f"against its reference ({', '.join(refs)}{self_conv}); it promises nothing for other "
             "scenes, settings or quantities.")
 
 

@@ -12,6 +12,10 @@
 #              out/figures/NAME (the committed reports/NAME are left as they are), and the report
 #              shows those instead: paper_figures, classical_benchmarks, beam_theories and
 #              work_precision at the paper scenes' own sizes. Each step prints its time and the total.
+#              Measured with beamimpact 0.1.0+7a8559d on 2 cores shared with other builds (wall):
+#              paper_figures 3.0 min, classical_benchmarks 1.7 min (each script as run below);
+#              beam_theories about 4 min (docs/beam-theories.md); work_precision not timed here
+#              (it times FEniCSx and Siconos as processes, 3 repeats each: count tens of minutes).
 #              The sets that take hours keep their committed figures and say which build made them:
 #              the S4 study (1050 runs), the scorecards (every method on the benchmark set) and the
 #              work-precision sets at x22..x5000 (hours of IDA and Siconos).

@@ -14,7 +14,8 @@
 #              work_precision at the paper scenes' own sizes. Each step prints its time and the total.
 #              Measured with beamimpact 0.1.0+7a8559d on 2 cores shared with other builds (wall):
 #              paper_figures 3.0 min, classical_benchmarks 1.7 min (each script as run below);
-#              beam_theories about 4 min (docs/beam-theories.md); work_precision not timed here
+#              beam_theories 13.9 min under a concurrent build (docs/beam-theories.md: about 4 min on
+#              a quiet machine); work_precision not timed here
 #              (it times FEniCSx and Siconos as processes, 3 repeats each: count tens of minutes).
 #              The sets that take hours keep their committed figures and say which build made them:
 #              the S4 study (1050 runs), the scorecards (every method on the benchmark set) and the

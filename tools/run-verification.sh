@@ -16,7 +16,7 @@
 #              paper_figures 3.0 min, classical_benchmarks 1.7 min (each script as run below);
 #              beam_theories 13.9 min under a concurrent build (docs/beam-theories.md: about 4 min on
 #              a quiet machine); work_precision not timed here
-#              (it times FEniCSx and Siconos as processes, 3 repeats each: count tens of minutes).
+#              (it times FEniCSx and Siconos as processes, 3 repeats of each point).
 #              The sets that take hours keep their committed figures and say which build made them:
 #              the S4 study (1050 runs), the scorecards (every method on the benchmark set) and the
 #              work-precision sets at x22..x5000 (hours of IDA and Siconos).

@@ -416,6 +416,8 @@ def replot(a):
         res["equal_error"] = equal_error(res["points"], res.get("not_run"))
         write_json_atomic(js, res)
         wp_figures.plot(res, os.path.join(a.out, s, "work_precision.png"))
+        if s == wp_figures.HERO:
+            wp_figures.plot(res, os.path.join(a.out, s, "hero.png"), hero=True)
     wp_figures.write_manifest(a.out)
 
 
@@ -467,6 +469,8 @@ def main():
         os.makedirs(d, exist_ok=True)
         write_json_atomic(os.path.join(d, "work_precision.json"), res)
         wp_figures.plot(res, os.path.join(d, "work_precision.png"))
+        if pl.name == wp_figures.HERO:
+            wp_figures.plot(res, os.path.join(d, "hero.png"), hero=True)
         for e in res["equal_error"]:
             print(f"[work-precision] {pl.name}: {e['text']}", file=sys.stderr)
     wp_figures.write_manifest(a.out)

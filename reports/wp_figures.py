@@ -5,10 +5,10 @@ equal_error.md (CPU time at equal impulse error, with the ratios' range over the
 the start-up of each method measured apart)."""
 import json
 import os
-import textwrap
 
 from report_files import save_figure_atomic, write_json_atomic, write_text_atomic
 
+import cost_grid
 import matplotlib
 
 matplotlib.use("Agg")
@@ -37,42 +37,83 @@ def startup_text(res, per_set=None):
     return out
 
 
-def plot(res, png):
-    fig, axes = plt.subplots(1, 2, figsize=(11, 5.4))
-    fig.subplots_adjust(left=0.07, right=0.98, bottom=0.33, top=0.9, wspace=0.25)
+def curves(res, key):
+    """(label, xs, ys, spread, process-timed) of every method with ok points on the `key` error."""
     methods = []
     for p in res["points"]:
         if p["method"] not in methods:
             methods.append(p["method"])
-    for ax, key in zip(axes, ERRORS):
-        for i, m in enumerate(methods):
-            pts = [p for p in res["points"] if p["method"] == m and p["status"] == "ok" and p["error"][key]]
-            if not pts:
-                continue
-            xs = [p["cpu_seconds_min"] for p in pts]
-            ys = [p["error"][key] for p in pts]
-            hi = [p["cpu_seconds_max"] - p["cpu_seconds_min"] for p in pts]
-            proc = not pts[0]["timed"].startswith("in process")
+    out = []
+    for m in methods:
+        pts = [p for p in res["points"] if p["method"] == m and p["status"] == "ok" and p["error"][key]]
+        if pts:
+            out.append((m, [p["cpu_seconds_min"] for p in pts], [p["error"][key] for p in pts],
+                        [p["cpu_seconds_max"] - p["cpu_seconds_min"] for p in pts],
+                        not pts[0]["timed"].startswith("in process"), methods.index(m)))
+    return out
+
+
+def flat_note(method, flat):
+    """The legend's note for a ladder whose impulse error does not fall (cost_grid.flat_ladders)."""
+    f = next((f for f in flat if f["method"] == method), None)
+    if not f:
+        return ""
+    return ": error does not fall (mesh error dominates)" if "mesh (spatial)" in f["why"] else ": error does not fall (another error dominates)"
+
+
+def draw(res, panels=ERRORS, hero=False):
+    """@brief The work-precision figure of one set (one panel per error of `panels`), every label
+    inside the figure (constrained layout). Provenance is not drawn: the caption carries it
+    (figures.json). hero: larger type and lines, for a thumbnail (the README).
+    @return the matplotlib figure"""
+    flat = cost_grid.flat_ladders(res)
+    size = (7.0, 6.0) if hero else (5.6 * len(panels), 5.0)
+    fig, axes = plt.subplots(1, len(panels), figsize=size, squeeze=False, layout="constrained")
+    for ax, key in zip(axes[0], panels):
+        for m, xs, ys, hi, proc, i in curves(res, key):
             ax.errorbar(xs, ys, xerr=[[0.0] * len(xs), hi], fmt="o-" if "ladder" in m or "modes" in m else "s--",
-                        ms=4, capsize=2, label=m + (" [process]" if proc else ""), color=f"C{i}",
+                        ms=7 if hero else 4, lw=2.5 if hero else 1.5, capsize=2, color=f"C{i}",
+                        label=None if key != "impulse" else m if hero else m + (" [process]" if proc else "") + flat_note(m, flat),
                         mfc="none" if proc else f"C{i}")
         ax.set_xscale("log")
         ax.set_yscale("log")
-        ax.set_xlabel("CPU time of the run (s, min of repeats; bar to max)")
+        ax.set_xlabel("CPU time of a run (s)" if hero else "CPU time of the run (s, min of repeats; bar to max)")
         ax.set_ylabel(ERROR_LABEL[key])
         ax.grid(True, which="both", alpha=0.3)
-    axes[0].legend(fontsize=7)
-    size = f" ({res['dofs']} DOFs)" if res.get("dofs") else ""
-    fig.suptitle(f"{os.path.basename(res['scene'])}{size}: work-precision against {res['reference']}", fontsize=9)
-    loads = [x for p in res["points"] if "loadavg_1min" in p for x in p["loadavg_1min"]]
-    over = " ".join(f"{k}={v}" for k, v in res.get("overrides", {}).items())
-    foot = textwrap.wrap(res["command"], 150) + textwrap.wrap(
-        f"scene {res['scene']} {over} | reference {res['reference']} | beamimpact {res['version']} | "
-        f"timings per point: {res['repeats']} | load average during timing {min(loads):.1f}-{max(loads):.1f}", 150)
-    foot += textwrap.wrap("start-up (not subtracted): " + "; ".join(startup_text(res)), 150)
-    fig.text(0.01, 0.01, "\n".join(foot), fontsize=6.5, family="monospace", va="bottom")
+    if hero:
+        axes[0][0].tick_params(labelsize=12)
+        axes[0][0].xaxis.label.set_size(13)
+        axes[0][0].yaxis.label.set_size(13)
+        axes[0][0].legend(fontsize=11, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, frameon=False)
+    else:
+        axes[0][0].legend(fontsize=7)
+    dofs = f" ({res['dofs']} DOFs)" if res.get("dofs") else ""
+    name = os.path.splitext(os.path.basename(res["scene"]))[0]
+    fig.suptitle(f"{name}{dofs}: error against CPU time" if hero else
+                 f"{name}{dofs}: work-precision against {res['reference']}", fontsize=13 if hero else 9)
+    return fig
+
+
+HERO = "s2_transverse"  # the set whose impulse panel is the README's figure (hero.png beside it)
+
+
+def plot(res, png, hero=False):
+    """@brief draw() saved to `png` (hero: the impulse panel alone, for a thumbnail)."""
+    fig = draw(res, ("impulse",) if hero else ERRORS, hero)
     save_figure_atomic(fig, png, dpi=100)
     plt.close(fig)
+
+
+def caption(res):
+    """@brief What the figure's footer used to say, as its caption: command, scene, overrides,
+    reference, timings, load, start-up (the version is the manifest's own field; the report says
+    beside the figure which ladders' errors do not fall, the legend marks them)."""
+    loads = [x for p in res["points"] if "loadavg_1min" in p for x in p["loadavg_1min"]]
+    over = " ".join(f"{k}={v}" for k, v in res.get("overrides", {}).items())
+    load = f"; load average during timing {min(loads):.1f}-{max(loads):.1f}" if loads else ""
+    return (f"Reference: {res['reference']}. Left: impulse, right: struck-point displacement. "
+            f"Scene {' '.join(filter(None, [res['scene'], over]))}; timings per point: {res['repeats']}{load}. Start-up (not "
+            f"subtracted): {'; '.join(startup_text(res))}.")
 
 
 def write_manifest(out):
@@ -85,7 +126,7 @@ def write_manifest(out):
             res = json.load(f)
         figs.append({"png": f"{name}/work_precision.png", "title": f"{name}: work-precision",
                      "command": res["command"], "scene": res["scene"], "version": res["version"],
-                     "caption": f"Reference: {res['reference']}. Left: impulse, right: struck-point displacement."})
+                     "caption": caption(res)})
         rows += [[name, e["text"]] for e in res["equal_error"]]
         starts += [[name, s] for s in startup_text(res, per_set=True)]
         once.update({s.split(" (")[0]: s for s in startup_text(res, per_set=False)})

@@ -7,7 +7,7 @@
 set -euo pipefail
 pkgs=(cmake g++ make libeigen3-dev libsundials-dev libgsl-dev libgtest-dev libbenchmark-dev
       libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev
-      python3-numpy python3-scipy python3-matplotlib python3-dev pybind11-dev python3-pytest python3-siconos python3-getfem clang-format universal-ctags
+      python3-numpy python3-scipy python3-matplotlib python3-jinja2 python3-dev pybind11-dev python3-pytest python3-siconos python3-getfem clang-format universal-ctags
       chromium libopenmpi-dev openmpi-bin python3-vtk9
       python3-venv python3-setuptools
       python3-sphinx furo python3-myst-parser doxygen python3-breathe)

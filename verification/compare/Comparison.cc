@@ -1,5 +1,7 @@
 #include <verification/compare/Comparison.hpp>
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 namespace beamimpact::verification {
@@ -24,8 +26,8 @@ nlohmann::json Comparison::to_json() const {
   for (const auto& n : norms) {
     nlohmann::json e{{"name", n.name}, {"unit", n.unit}, {"definition", n.definition}};
     e["value"] = n.value ? nlohmann::json(*n.value) : nlohmann::json(nullptr);
-    if (n.a) e["run_value"] = *n.a;
-    if (n.b) e["reference_value"] = *n.b;
+    if (n.a) e[n.difference ? "difference" : "run_value"] = *n.a;
+    if (n.b) e[n.difference ? "scale" : "reference_value"] = *n.b;
     if (!n.unavailable.empty()) e["unavailable"] = n.unavailable;
     arr.push_back(e);
   }
@@ -39,11 +41,25 @@ std::string Comparison::to_text() const {
       "trapezoid integrals)\nforce window W = {:.6g} s, contact: R > {:.3g} N, samples closer "
       "than {:.6g} s merged into one interval\n\n",
       t0, t1, grid_step, window, force_threshold, merge_gap);
-  s += fmt::format("{:<26} {:>13} {:>6} {:>13} {:>13}\n", "norm", "error", "unit", "run", "reference");
+  // Scalar norms: the run's value, the reference's and their difference; norms over series or
+  // pairs (difference set): the largest difference and the scale the error divides it by.
+  s += "error: the norm's value (relative: the difference over the scale, see its definition)\n";
+  s += fmt::format("{:<26} {:>11} {:>6} {:>12} {:>12} {:>12} {:>12}\n", "norm", "error", "unit", "run value",
+                   "ref. value", "|run - ref|", "scale");
+  const auto g = [](const std::optional<double>& v) { return v ? fmt::format("{:.6g}", *v) : std::string(); };
   for (const auto& n : norms) {
     const std::string v = n.value ? fmt::format("{:.4e}", *n.value) : "n/a";
-    s += fmt::format("{:<26} {:>13} {:>6} {:>13} {:>13}\n", n.name, v, n.unit,
-                     n.a ? fmt::format("{:.6g}", *n.a) : "", n.b ? fmt::format("{:.6g}", *n.b) : "");
+    std::string run_value, ref_value, diff, scale;
+    if (n.difference) {
+      diff = g(n.a);
+      scale = g(n.b);
+    } else {
+      run_value = g(n.a);
+      ref_value = g(n.b);
+      if (n.a && n.b) diff = g(std::abs(*n.a - *n.b));
+    }
+    s += fmt::format("{:<26} {:>11} {:>6} {:>12} {:>12} {:>12} {:>12}\n", n.name, v, n.unit, run_value,
+                     ref_value, diff, scale);
   }
   s += "\ndefinitions (a = run, b = reference):\n";
   for (const auto& n : norms) {

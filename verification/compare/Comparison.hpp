@@ -17,8 +17,12 @@ struct Norm {
   std::optional<double> value;  ///< the error (>= 0); empty when it could not be computed
   std::string unit;             ///< "1" (relative), "s", "count", ...
   std::string definition;       ///< how it is computed, in words and symbols
-  std::optional<double> a, b;   ///< the compared scalars (scalar errors only)
-  std::string unavailable;      ///< why value is empty
+  /// The compared scalars: the run's and the reference's values, or, when `difference` is set,
+  /// the run's largest difference from the reference |a - b| (over paired intervals or bodies) and
+  /// the scale it is divided by.
+  std::optional<double> a, b;
+  std::string unavailable;  ///< why value is empty
+  bool difference = false;  ///< a and b are a difference and its scale, not the two values
 };
 
 /// @brief All norms of one comparison and how they were computed.
@@ -36,7 +40,9 @@ struct Comparison {
   const Norm* find(const std::string& name) const;
   /// @brief JSON document (what `compare --json` writes).
   nlohmann::json to_json() const;
-  /// @brief Human-readable table with the definitions, for the terminal.
+  /// @brief Human-readable table with the definitions, for the terminal: per norm its error and
+  /// unit, the run's and the reference's values with their difference (scalar norms), or the
+  /// largest difference and its scale (norms whose `difference` is set).
   std::string to_text() const;
 };
 

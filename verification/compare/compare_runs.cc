@@ -228,7 +228,7 @@ void add_final_velocity(Comparison& cmp, const StoredRun& a, const StoredRun& b)
         unavailable("final_velocity", "1", def, std::string("bad summary.json: ") + e.what()));
     return;
   }
-  Norm n{"final_velocity", std::nullopt, "1", def, num, den, {}};
+  Norm n{"final_velocity", std::nullopt, "1", def, num, den, {}, true};  // a difference and its scale
   if (den > 0.0)
     n.value = num / den;
   else

@@ -1,6 +1,10 @@
 // Norms of compare_runs on synthetic histories whose errors are known in closed form.
 #include <verification/compare/compare_runs.hpp>
 
+#include <iterator>
+#include <sstream>
+
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <verification/compare/test_histories.hpp>
@@ -207,6 +211,62 @@ TEST(CompareRuns, SequenceNormsPairIntervalsByStart) {
   EXPECT_NEAR(*c.find("contact_starts")->value, 0.03, 1e-12);
   EXPECT_NEAR(*c.find("contact_ends")->value, 0.06, 1e-12);
   EXPECT_EQ(*c.find("impacts")->value, 1.0);
+}
+
+}  // namespace
+}  // namespace beamimpact::verification
+
+namespace beamimpact::verification {
+namespace {
+
+/// The whitespace-separated words of the line of `text` that starts with `name` and a space.
+std::vector<std::string> row_words(const std::string& text, const std::string& name) {
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind(name + " ", 0) == 0) {
+      std::istringstream w(line);
+      return {std::istream_iterator<std::string>(w), std::istream_iterator<std::string>()};
+    }
+  return {};
+}
+
+// The terminal table says what each column holds. impulse is a scalar norm: the run's 1.6 N s and
+// the reference's 1.4 N s are printed as values with their difference 0.2. impulse_per_impact is
+// a difference norm: intervals' impulses 1.1, 0.5 against 1.0, 0.4 differ by 0.1 at most, over
+// the scale max |J_b| = 1.0; its run and reference columns stay blank (they are not the run's
+// value), and compare.json names the two numbers "difference" and "scale".
+TEST(CompareRuns, TextLabelsValuesAndDifferences) {
+  auto f = [](double t) { return (t > 0.5 && t < 1.0) || (t > 1.2 && t < 1.5) ? 1.0 : 0.0; };
+  auto a = testing::synthetic(0.01, 2.0, f);
+  auto b = testing::synthetic(0.01, 2.0, f);
+  const nlohmann::json iv = {{0.5, 1.0}, {1.2, 1.5}};
+  const nlohmann::json sa = {
+      {"contacts", {{{"impulse_normal", 1.6}, {"intervals", iv}, {"interval_impulses", {1.1, 0.5}}}}}};
+  const nlohmann::json sb = {
+      {"contacts", {{{"impulse_normal", 1.4}, {"intervals", iv}, {"interval_impulses", {1.0, 0.4}}}}}};
+  const Comparison c =
+      compare_runs(StoredRun::from_columns(a.columns(), sa), StoredRun::from_columns(b.columns(), sb));
+  const std::string text = c.to_text();
+  const auto header = text.find("run value");
+  ASSERT_NE(header, std::string::npos) << text;
+  EXPECT_NE(text.find("ref. value", header), std::string::npos) << text;
+  EXPECT_NE(text.find("|run - ref|", header), std::string::npos) << text;
+  EXPECT_NE(text.find("scale", header), std::string::npos) << text;
+  // name, error, unit, run value, reference value, |run - ref|
+  EXPECT_EQ(row_words(text, "impulse"),
+            (std::vector<std::string>{"impulse", fmt::format("{:.4e}", 0.2 / 1.4), "1", "1.6", "1.4", "0.2"}))
+      << text;
+  // name, error, unit, |run - ref|, scale: no run or reference value
+  EXPECT_EQ(row_words(text, "impulse_per_impact"),
+            (std::vector<std::string>{"impulse_per_impact", fmt::format("{:.4e}", 0.1), "1", "0.1", "1"}))
+      << text;
+  const nlohmann::json j = c.to_json();
+  for (const auto& n : j.at("norms"))
+    if (n.at("name") == "impulse_per_impact") {
+      EXPECT_NEAR(n.at("difference").get<double>(), 0.1, 1e-12);
+      EXPECT_EQ(n.at("scale").get<double>(), 1.0);
+      EXPECT_FALSE(n.contains("run_value"));
+    }
 }
 
 }  // namespace

@@ -70,7 +70,7 @@ Norm paired_relative(std::string name, const std::vector<double>& x, const std::
   }
   if (n == 0) return missing(std::move(name), "1", def, "no interval in the run or the reference");
   if (!(den > 0.0)) return missing(std::move(name), "1", def, "the reference's values are all zero");
-  return Norm{std::move(name), num / den, "1", def, num, den, {}};
+  return Norm{std::move(name), num / den, "1", def, num, den, {}, true};  // a difference and its scale
 }
 
 }  // namespace

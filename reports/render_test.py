@@ -1,0 +1,148 @@
+"""The page generator's pieces on fixtures worked by hand: the study's breakdown range, the cost
+grid's cells and headline set, the ladders flagged as not converging, the report page rendered from
+the fixture verify run (verdict first, failing gate first, figures as files, provenance counted),
+bad input refused with exit 2, and the scorecard and conform pages (unknown fields listed)."""
+import copy
+import glob
+import html.parser
+import json
+import os
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "reports"))
+import breakdown  # noqa: E402
+import cost_grid  # noqa: E402
+
+RENDER = os.path.join(ROOT, "reports", "render.py")
+FIXTURE = os.path.join(ROOT, "reports", "testdata", "verify")
+
+
+def render(*args):
+    return subprocess.run(["/usr/bin/python3", RENDER, *args], cwd=ROOT, capture_output=True, text=True)
+
+
+class Tags(html.parser.HTMLParser):
+    """Section ids in order, img srcs, and the text of the table id=tightest's rows."""
+
+    def __init__(self):
+        super().__init__()
+        self.sections, self.imgs, self.rows, self._in = [], [], [], False
+
+    def handle_starttag(self, tag, attrs):
+        a = dict(attrs)
+        if tag == "section":
+            self.sections.append(a.get("id"))
+        elif tag == "img":
+            self.imgs.append(a["src"])
+        elif tag == "table":
+            self._in = a.get("id") == "tightest"
+        elif tag == "tr" and self._in:
+            self.rows.append("")
+
+    def handle_endtag(self, tag):
+        if tag == "table":
+            self._in = False
+
+    def handle_data(self, data):
+        if self._in and self.rows:
+            self.rows[-1] += data
+
+
+def test_excess_range_is_the_run_with_most_breakdowns_above_the_rate():
+    # 10 of 50 cases broke: rate 0.2, so the excess per x is -2, +2, +3, -2, -1; the best run is x 10..20.
+    assert breakdown.excess_range([0, 10, 20, 30, 40], [0, 4, 5, 0, 1], [10] * 5) == (10, 20, 9, 20)
+    # No breakdown anywhere: no range.
+    assert breakdown.excess_range([0, 10], [0, 0], [5, 5]) is None
+
+
+def test_cost_cells_say_bound_ratio_not_reached_and_not_run():
+    e = {"impulse_error": 0.01, "cpu_s": {"paper": 2.914e-4, "IDA": 0.0294, "Siconos": None},
+         "upper_bound": {"paper": True, "IDA": False}, "ratio_to_paper": {"IDA": 101.0},
+         "ratio_range": {"IDA": [37.9, 105.0]}}
+    assert cost_grid.cell(e, "paper")["s"] == "≤ 0.291 ms" and cost_grid.cell(e, "paper")["ratio"] == "1×"
+    ida = cost_grid.cell(e, "IDA")
+    assert (ida["s"], ida["ratio"], ida["range"]) == ("29.4 ms", "101×", "37.9–105×")
+    assert cost_grid.ratio_text(3521.5) == "3,520×" and cost_grid.ratio_text(0.0255) == "1/39.2×"
+    assert cost_grid.cell(e, "Siconos")["state"] == "not_reached"
+    assert cost_grid.cell(e, "FEniCSx")["state"] == "not_run"
+
+
+def test_headline_is_the_set_where_most_methods_reach_one_percent():
+    def grid(name, dofs, reached):
+        cells = [{"state": "ok" if i < reached else "not_reached"} for i in range(4)]
+        return {"name": name, "dofs": dofs, "rows": [{"impulse_error": 0.01, "cells": cells},
+                                                     {"impulse_error": 0.03, "cells": cells}]}
+    h = cost_grid.headline([grid("a", 10, 3), grid("b", 1000, 2), grid("c", 100, 3)])
+    assert h["name"] == "c"  # three methods in a and c; c is the larger model
+    assert [r["impulse_error"] for r in h["rows"]] == [0.01]  # the 3 % row is not a verdict level
+
+
+def test_flat_ladders_flag_a_time_ladder_whose_error_grows_and_not_a_converging_mesh_ladder():
+    def pts(method, errs):
+        return [{"method": method, "status": "ok", "error": {"impulse": e}} for e in errs]
+    res = {"points": pts("paper (dt ladder)", [0.010, 0.011, 0.012]) + pts("paper (mesh ladder)", [0.02, 0.01])
+           + pts("FEniCSx (meshes)", [0.010, 0.0085])}  # 15 % gain: under the 20 % a falling ladder needs
+    flat = {f["method"]: f for f in cost_grid.flat_ladders(res)}
+    assert set(flat) == {"paper (dt ladder)", "FEniCSx (meshes)"}
+    assert "mesh (spatial) error dominates" in flat["paper (dt ladder)"]["why"]
+    assert "another error dominates" in flat["FEniCSx (meshes)"]["why"]
+
+
+def test_report_opens_with_the_verdict_and_the_failing_gate(tmp_path):
+    out = tmp_path / "report.html"
+    r = render("report", "--verify", FIXTURE, "--committed", "--out", str(out))
+    assert r.returncode == 0, r.stderr
+    text = out.read_text()
+    t = Tags()
+    t.feed(text)
+    assert t.sections[:3] == ["verdict", "where", "cost"]
+    assert "FAIL 1/2" in text  # the fixture: two gates, one failing
+    assert t.rows[1].startswith("s2_transverse") and "fail" in t.rows[1]  # the failing gate leads (after the header)
+    assert "data:image" not in text and t.imgs
+    for src in t.imgs:
+        assert os.path.isfile(tmp_path / src), src
+    # Figures of the committed sets, counted from their manifests; none has the fixture's version.
+    n = sum(len(json.load(open(m))["figures"]) for m in glob.glob(os.path.join(ROOT, "reports", "*", "figures.json")))
+    assert f"0 of {n} figures made by this run" in text
+
+
+def test_norms_without_margins_are_refused(tmp_path):
+    with open(os.path.join(FIXTURE, "norms.json")) as f:
+        norms = json.load(f)
+    old = copy.deepcopy(norms)
+    del old["items"][0]["gates"][0]["margin"]
+    (tmp_path / "v").mkdir()
+    (tmp_path / "v" / "norms.json").write_text(json.dumps(old))
+    r = render("report", "--verify", str(tmp_path / "v"), "--out", str(tmp_path / "r.html"))
+    assert r.returncode == 2 and "margin" in r.stderr
+
+
+def test_scorecard_page_lists_fields_it_does_not_know(tmp_path):
+    with open(os.path.join(ROOT, "reports", "scorecards", "example", "scorecard.json")) as f:
+        card = json.load(f)
+    card["ladders"] = {"s1_central": [0.1, 0.05]}
+    card["scenes"][0]["ladder_orders"] = [1.0, 1.1]
+    (tmp_path / "scorecard.json").write_text(json.dumps(card))
+    r = render("scorecard", str(tmp_path))
+    assert r.returncode == 0, r.stderr
+    text = (tmp_path / "scorecard.html").read_text()
+    assert "ladders" in text and "ladder_orders" in text
+    quantities = sum(len(s["quantities"]) for s in card["scenes"])
+    assert text.count("<tr class=") == quantities
+
+
+def test_conform_page_puts_the_broken_rule_first(tmp_path):
+    doc = {"method": "demo", "command": "beamimpact conform demo", "version": "test",
+           "rules": [{"rule": "exit code", "definition": "0 done; 2 refused; 3 failed"},
+                     {"rule": "columns", "definition": "t and R first"}],
+           "results": [{"rule": "exit code", "scene": "a", "file": "run.log", "passed": True, "message": ""},
+                       {"rule": "columns", "scene": "a", "file": "history.csv", "passed": False,
+                        "message": "no column R"}]}
+    (tmp_path / "conform.json").write_text(json.dumps(doc))
+    r = render("conform", str(tmp_path))
+    assert r.returncode == 0, r.stderr
+    text = (tmp_path / "conform.html").read_text()
+    assert "FAILED" in text and text.index("columns:") < text.index("exit code:")
+    assert "t and R first" in text and "no column R" in text

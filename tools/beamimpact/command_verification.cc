@@ -14,8 +14,10 @@
 #include <api/registry.hpp>
 #include <beamimpact/version.hpp>
 #include <solver/util/InputError.hpp>
+#include <solver/util/write_file_atomic.hpp>
 #include <verification/compare/compare_runs.hpp>
 #include <verification/matrix/VerificationMatrix.hpp>
+#include <verification/matrix/baseline.hpp>
 #include <verification/matrix/evaluate.hpp>
 #include <verification/matrix/execute_jobs.hpp>
 #include <verification/matrix/interruption.hpp>
@@ -41,6 +43,8 @@ struct CompareArgs {
 
 struct VerifyArgs {
   std::string matrix = "verification/matrix.toml", out, tier = "quick", only;
+  std::string baseline;          ///< --baseline FILE ("" none)
+  bool update_baseline = false;  ///< write FILE from this run instead of holding it to FILE
   int jobs = 1;
   int threads = 0;  // 0: each run's default
   bool fresh = false;
@@ -74,6 +78,34 @@ void compare(const CompareArgs& a) {
   fmt::print("wrote {}\n", json.string());
 }
 
+/// --baseline FILE: this run's gates against FILE (false when one got worse beyond its noise);
+/// with --update-baseline, FILE is written from this run instead, when it passed.
+bool hold_to_baseline(const VerifyArgs& a, const VerifyResult& r) {
+  if (a.baseline.empty()) return true;
+  const fs::path file = a.baseline;
+  std::error_code ec;
+  const bool exists = fs::exists(file, ec);
+  if (!exists && !a.update_baseline)
+    throw InputError(file.string(), "--baseline", "no such file (write one with --update-baseline)");
+  BaselineComparison c;
+  if (exists) {
+    c = compare_baseline(read_baseline(file), file.string(), r.items);
+    fmt::print("{}", c.to_text());
+  }
+  if (!a.update_baseline) {
+    if (!c.passed())
+      fmt::print("baseline FAILED: {} gate(s) worse than in {}\n", c.worse.size(), file.string());
+    return c.passed();
+  }
+  if (!r.passed()) {
+    fmt::print(stderr, "baseline: {} not updated: this verification failed\n", file.string());
+    return false;
+  }
+  write_file_atomic(file, baseline_json(kVersion, r.context.tier, r.items).dump(1) + "\n");
+  fmt::print("baseline: wrote {}\n", file.string());
+  return true;
+}
+
 void verify(const VerifyArgs& a) {
   const OutputLock lock = lock_output(a.out);  // before the earlier reports are removed
   forward_interruptions();
@@ -104,7 +136,8 @@ void verify(const VerifyArgs& a) {
     fmt::print(stderr, "verify: interrupted (signal {}): the report is marked incomplete\n", interruption());
     throw CommandExit{interrupted_exit_code()};
   }
-  if (!result->passed()) throw CommandExit{1};
+  const bool held = hold_to_baseline(a, *result);
+  if (!result->passed() || !held) throw CommandExit{1};
 }
 
 void sweep(SweepArgs& a) {
@@ -212,6 +245,13 @@ void add_verification_commands(CLI::App& app) {
               "same version, scene and settings, are taken as they are)");
   add_threads_option(v, va->threads,
                      "Threads of each run of the paper integrator (as run --threads; default: each run's)");
+  CLI::Option* baseline = v->add_option(
+      "--baseline", va->baseline,
+      "A baseline (an earlier --update-baseline, or a norms.json): exit 1 when a gated value got worse "
+      "than in it by more than max(1 % of it, 1e-9); better ones are listed (docs/ci.md)");
+  v->add_flag("--update-baseline", va->update_baseline,
+              "Write the --baseline file from this run (when it passes) instead of holding the run to it")
+      ->needs(baseline);
   add_methods_option(v);
   v->callback([va] { verify(*va); });
 

@@ -1,5 +1,6 @@
 #include "command_verification.hpp"
 #include "command_run.hpp"
+#include "command_scenes.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -12,6 +13,7 @@
 
 #include <api/methods_file.hpp>
 #include <api/registry.hpp>
+#include <api/shipped_scenes.hpp>
 #include <beamimpact/version.hpp>
 #include <solver/util/InputError.hpp>
 #include <solver/util/write_file_atomic.hpp>
@@ -110,7 +112,7 @@ void verify(const VerifyArgs& a) {
   const OutputLock lock = lock_output(a.out);  // before the earlier reports are removed
   forward_interruptions();
   VerifyOptions o;
-  o.matrix = a.matrix;
+  o.matrix = resolve_data_file(a.matrix);  // verification/matrix.toml from any folder
   o.out = a.out;
   o.tier = a.tier;
   o.only = a.only;
@@ -231,7 +233,10 @@ void add_verification_commands(CLI::App& app) {
 
   auto va = std::make_shared<VerifyArgs>();
   CLI::App* v = app.add_subcommand("verify", "Run the verification matrix; exit 1 if any gate fails");
-  v->add_option("MATRIX", va->matrix, "VerificationMatrix file")->capture_default_str();
+  v->add_option("MATRIX", va->matrix,
+                "VerificationMatrix file; a relative path missing here is looked for under the data root "
+                "(the repository or the installed share/beamimpact)")
+      ->capture_default_str();
   v->add_option("--out", va->out, "Output directory (runs/, junit.xml, norms.json, report.md)")->required();
   v->add_option("--tier", va->tier,
                 "quick (CI), stability (health checks of the hard cases) or full (everything, plus fine "
@@ -258,7 +263,9 @@ void add_verification_commands(CLI::App& app) {
   auto sa = std::make_shared<SweepArgs>();
   CLI::App* s =
       app.add_subcommand("sweep", "Error norms and wall time of one scene at several dt (and meshes)");
-  s->add_option("SCENE", sa->scene, "Scene file")->required();
+  s->add_option("SCENE", sa->scene, "Scene file or a shipped scene's name (`beamimpact scenes`)")
+      ->required()
+      ->transform(scene_argument());
   auto* dt = s->add_option("--dt", sa->o.dts, "s, time steps, e.g. 0.01,0.005,0.0025")->delimiter(',');
   auto* fr = s->add_option("--fraction", sa->o.fractions,
                            "fractions of the critical step, for scenes with dt = \"auto\" (e.g. 0.5,0.25)")

@@ -346,5 +346,29 @@ TEST_F(Commands, BaselineHoldsTheRunToItsValues) {
   EXPECT_EQ(missing.code, 2) << missing.output;
 }
 
+// A shipped scene by name from a folder outside the repository; a file of the working folder
+// wins over a shipped scene's name (the rule of api/shipped_scenes.hpp).
+TEST_F(Commands, ShippedSceneByNameFromAnyFolder) {
+  const std::string here = "cd " + testing::shell_words({tmp_.string()}) + " &&";
+  const Result listed = run("scenes", here);
+  ASSERT_EQ(listed.code, 0) << listed.output;
+  EXPECT_NE(listed.output.find((src_ / "verification/scenes/paper/s1_central.toml").string()),
+            std::string::npos)
+      << listed.output;
+  const Result by_name = run("run s1_central --method exact --out by_name --quiet", here);
+  ASSERT_EQ(by_name.code, 0) << by_name.output;
+  const nlohmann::json s = nlohmann::json::parse(read(tmp_ / "by_name/summary.json"));
+  // S1, two equal free rods: the exact impulse is m v0 / 2 = 4 N s.
+  EXPECT_NEAR(s["contacts"][0]["impulse_normal"].get<double>(), 4.0, 1e-9);
+  fs::copy_file(src_ / "verification/scenes/paper/s2_transverse.toml", tmp_ / "s1_central.toml");
+  const Result local = run("run s1_central.toml --method exact --out local --quiet", here);
+  ASSERT_EQ(local.code, 0) << local.output;
+  // The working folder's file (S2's content under S1's name) ran, not the shipped S1.
+  EXPECT_EQ(nlohmann::json::parse(read(tmp_ / "local/summary.json"))["scene"], "s2_transverse");
+  const Result unknown = run("run no_such_scene --out x --quiet", here);
+  EXPECT_EQ(unknown.code, 2) << unknown.output;
+  EXPECT_NE(unknown.output.find("no_such_scene"), std::string::npos) << unknown.output;
+}
+
 }  // namespace
 }  // namespace beamimpact

@@ -79,8 +79,9 @@ void add_command_run(CLI::App& app) {
   auto args = std::make_shared<RunArgs>();
   CLI::App* sub =
       app.add_subcommand("run", "Run one scene with one method; writes DIR/history.csv and DIR/summary.json");
-  sub->add_option("scene", args->scene,
-                  "Scene file (TOML, see docs/scene-format.md), or a shipped scene's name (`beamimpact scenes`)")
+  sub->add_option(
+         "scene", args->scene,
+         "Scene file (TOML, see docs/scene-format.md), or a shipped scene's name (`beamimpact scenes`)")
       ->required()
       ->transform(scene_argument());
   sub->add_option("--out", args->out, "Output directory")->required();

@@ -193,6 +193,42 @@ void sweep(SweepArgs& a) {
 
 }  // namespace
 
+namespace {
+
+/// `verify`: its options, --baseline and --update-baseline among them.
+void add_verify_command(CLI::App& app) {
+  auto va = std::make_shared<VerifyArgs>();
+  CLI::App* v = app.add_subcommand("verify", "Run the verification matrix; exit 1 if any gate fails");
+  v->add_option("MATRIX", va->matrix,
+                "VerificationMatrix file; a relative path missing here is looked for under the data root "
+                "(the repository or the installed share/beamimpact)")
+      ->capture_default_str();
+  v->add_option("--out", va->out, "Output directory (runs/, junit.xml, norms.json, report.md)")->required();
+  v->add_option("--tier", va->tier,
+                "quick (CI), stability (health checks of the hard cases) or full (everything, plus fine "
+                "meshes and small dt)")
+      ->check(CLI::IsMember(VerificationMatrix::tier_names()))
+      ->capture_default_str();
+  v->add_option("--jobs", va->jobs, "Runs in parallel")->capture_default_str();
+  v->add_option("--only", va->only, "Only cases whose name contains this text (e.g. s1_central)");
+  v->add_flag("--fresh", va->fresh,
+              "Run everything again (default: the runs an interrupted verify finished in OUT/runs, with the "
+              "same version, scene and settings, are taken as they are)");
+  add_threads_option(v, va->threads,
+                     "Threads of each run of the paper integrator (as run --threads; default: each run's)");
+  CLI::Option* baseline = v->add_option(
+      "--baseline", va->baseline,
+      "A baseline (an earlier --update-baseline, or a norms.json): exit 1 when a gated value got worse "
+      "than in it by more than max(1 % of it, 1e-9); better ones are listed (docs/ci.md)");
+  v->add_flag("--update-baseline", va->update_baseline,
+              "Write the --baseline file from this run (when it passes) instead of holding the run to it")
+      ->needs(baseline);
+  add_methods_option(v);
+  v->callback([va] { verify(*va); });
+}
+
+}  // namespace
+
 void add_verification_commands(CLI::App& app) {
   auto ca = std::make_shared<CompareArgs>();
   CLI::App* c = app.add_subcommand(
@@ -231,34 +267,7 @@ void add_verification_commands(CLI::App& app) {
   add_methods_option(c);
   c->callback([ca] { compare(*ca); });
 
-  auto va = std::make_shared<VerifyArgs>();
-  CLI::App* v = app.add_subcommand("verify", "Run the verification matrix; exit 1 if any gate fails");
-  v->add_option("MATRIX", va->matrix,
-                "VerificationMatrix file; a relative path missing here is looked for under the data root "
-                "(the repository or the installed share/beamimpact)")
-      ->capture_default_str();
-  v->add_option("--out", va->out, "Output directory (runs/, junit.xml, norms.json, report.md)")->required();
-  v->add_option("--tier", va->tier,
-                "quick (CI), stability (health checks of the hard cases) or full (everything, plus fine "
-                "meshes and small dt)")
-      ->check(CLI::IsMember(VerificationMatrix::tier_names()))
-      ->capture_default_str();
-  v->add_option("--jobs", va->jobs, "Runs in parallel")->capture_default_str();
-  v->add_option("--only", va->only, "Only cases whose name contains this text (e.g. s1_central)");
-  v->add_flag("--fresh", va->fresh,
-              "Run everything again (default: the runs an interrupted verify finished in OUT/runs, with the "
-              "same version, scene and settings, are taken as they are)");
-  add_threads_option(v, va->threads,
-                     "Threads of each run of the paper integrator (as run --threads; default: each run's)");
-  CLI::Option* baseline = v->add_option(
-      "--baseline", va->baseline,
-      "A baseline (an earlier --update-baseline, or a norms.json): exit 1 when a gated value got worse "
-      "than in it by more than max(1 % of it, 1e-9); better ones are listed (docs/ci.md)");
-  v->add_flag("--update-baseline", va->update_baseline,
-              "Write the --baseline file from this run (when it passes) instead of holding the run to it")
-      ->needs(baseline);
-  add_methods_option(v);
-  v->callback([va] { verify(*va); });
+  add_verify_command(app);
 
   auto sa = std::make_shared<SweepArgs>();
   CLI::App* s =

@@ -1,6 +1,7 @@
 #include <api/methods_file.hpp>
 
 #include <dlfcn.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -226,8 +227,19 @@ fs::path data_root() {
 
 fs::path program_path() {
   std::error_code ec;
-  const fs::path p = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? fs::path("beamimpact") : p;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec && self.filename() == "beamimpact") return self;
+  // Another host (the Python module, a test): the program found from the file holding this code
+  // upwards, bin/beamimpact of an installed prefix or virtual environment, beamimpact of a build tree.
+  Dl_info here{};
+  std::error_code up;
+  if (dladdr(reinterpret_cast<void*>(&program_path), &here) && here.dli_fname)
+    for (fs::path d = fs::absolute(here.dli_fname, up).parent_path(); !d.empty(); d = d.parent_path()) {
+      for (const fs::path& p : {d / "bin/beamimpact", d / "beamimpact"})
+        if (fs::is_regular_file(p, up) && access(p.c_str(), X_OK) == 0) return p;
+      if (d == d.parent_path()) break;
+    }
+  return ec ? fs::path("beamimpact") : self;
 }
 
 }  // namespace beamimpact

@@ -55,8 +55,10 @@ std::vector<std::filesystem::path> default_methods_files();
 /// shipped scenes: the repository or the installed share/beamimpact ("" when none is found).
 std::filesystem::path data_root();
 
-/// @brief The running beamimpact program (/proc/self/exe): {beamimpact}, and where the default
-/// methods file is looked for.
+/// @brief The beamimpact program: the running one (/proc/self/exe) when it is named beamimpact,
+/// else (the Python module, a test program) the one found from the file holding this code
+/// upwards (bin/beamimpact, or beamimpact of a build tree). {beamimpact}, the runs' program, and
+/// where the default methods file is looked for.
 std::filesystem::path program_path();
 
 }  // namespace beamimpact

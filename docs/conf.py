@@ -7,6 +7,8 @@ the built package (PYTHONPATH=build/python; without it the compiled core is mock
 """
 import os
 import re
+import shutil
+import subprocess
 import sys
 from pathlib import Path
 
@@ -22,7 +24,7 @@ release = version = _version.group(1) if _version else "0"
 extensions = ["myst_parser", "sphinx.ext.autodoc", "sphinx.ext.napoleon"]
 source_suffix = {".md": "markdown"}
 master_doc = "index"
-exclude_patterns = ["_build", "**/README.md"]
+exclude_patterns = ["_build", "_gallery", "**/README.md"]
 html_theme = "furo"
 html_title = f"beamimpact {release}"
 html_static_path = []
@@ -57,8 +59,38 @@ def _repository_path(app, env, node, contnode):
     return None
 
 
+def _example_title(text, stem):
+    """An example's title: the first line of its docstring, or its first Markdown heading."""
+    m = re.match(r'\s*"""(.+)', text) or re.search(r"^# # (.+)$", text, re.M)
+    return m.group(1).strip().rstrip(".") if m else stem
+
+
+def _gallery(app, docname, source):
+    """The gallery page: each examples/python/*.py run as a user runs it (the built module on
+    PYTHONPATH, an empty working folder under docs/_gallery/), then its title, its figures and
+    its code. An example that fails stops the build with its output."""
+    if docname != "gallery":
+        return
+    parts = []
+    for example in sorted((root / "examples/python").glob("*.py")):
+        folder = Path(app.srcdir) / "_gallery" / example.stem
+        shutil.rmtree(folder, ignore_errors=True)
+        folder.mkdir(parents=True)
+        done = subprocess.run([sys.executable, str(example)], cwd=folder, capture_output=True, text=True,
+                              env={**os.environ, "MPLBACKEND": "Agg"})
+        if done.returncode:
+            raise RuntimeError(f"gallery: {example.name} failed:\n{done.stdout}\n{done.stderr}")
+        text = example.read_text()
+        parts.append(f"## {_example_title(text, example.stem)}\n\n`examples/python/{example.name}`\n")
+        for png in sorted(folder.rglob("*.png")):
+            parts.append(f"```{{image}} {png.relative_to(app.srcdir).as_posix()}\n:alt: {example.stem}\n```\n")
+        parts.append(f"```{{literalinclude}} ../examples/python/{example.name}\n:language: python\n```\n")
+    source[0] = source[0].replace("GALLERY", "\n".join(parts))
+
+
 def setup(app):
     app.connect("source-read", _more_pages)
+    app.connect("source-read", _gallery)
     app.connect("missing-reference", _repository_path)
 
 

@@ -37,7 +37,18 @@ out=$("$build/consumer/print_impulse" "$scene" exact)
 echo "$out"
 # S1, two equal free rods (references.md 1): the exact impulse is m v0 / 2 = 4 N s.
 grep -q "impulse 4 N s (exact)" <<<"$out" || { echo "install test: expected impulse 4 N s"; exit 1; }
-"$prefix/bin/beamimpact" methods > /dev/null
+# From an empty folder outside the clone: the installed methods file and scenes are found from the
+# program's own location (bin/ -> share/beamimpact), a shipped scene runs by name.
+empty=$(mktemp -d "${TMPDIR:-/tmp}/beamimpact-install-test.XXXXXX")
+methods=$(cd "$empty" && "$prefix/bin/beamimpact" methods)
+grep -q "from: $prefix/share/beamimpact/verification/methods.toml" <<<"$methods" ||
+  { echo "install test: the installed methods file is not read:"; echo "$methods"; rm -rf "$empty"; exit 1; }
+(cd "$empty" && "$prefix/bin/beamimpact" run s1_central --method exact --out s1 --quiet)
+imp=$(/usr/bin/python3 -c "import json, sys; print(json.load(open(sys.argv[1]))['contacts'][0]['impulse_normal'])" \
+  "$empty/s1/summary.json")
+[[ $imp == 4.0 ]] ||
+  { echo "install test: run s1_central from $empty: expected impulse 4 N s"; rm -rf "$empty"; exit 1; }
+rm -rf "$empty"
 # The Python package, when the build has it: importable from the prefix, same impulse.
 pkg=$prefix/lib/python3/dist-packages
 if [[ -d $pkg/beamimpact ]]; then

@@ -2,10 +2,13 @@
 compare command's norms, over the C++ library (beamimpact._core).
 
     import beamimpact
-    scene = beamimpact.load_scene("verification/scenes/paper/s1_central.toml")
+    scene = beamimpact.load_scene("s1_central")   # a shipped scene by name, or any scene file
     run = beamimpact.run(scene, method="paper", overrides={"time.dt": 0.005})
     run.summary["contacts"][0]["impulse_normal"], run.history["R"]
     beamimpact.compare(run, beamimpact.run(scene, method="exact"))["norms"]
+
+A scene argument is a file, or a shipped scene's name (scenes(); the rule is the command's:
+docs/installation.md); the shipped data are found from the installed package (data_root()).
 
 Bad input raises beamimpact.InputError with the CLI's message (file, key, what was expected);
 beamimpact.SceneError is the same class under its earlier name (deprecated).
@@ -17,6 +20,7 @@ import os
 import shutil
 import sys
 import warnings
+from pathlib import Path
 from typing import Any, Callable, Iterable, Mapping, Optional, Sequence, Union
 
 import numpy as np
@@ -26,7 +30,7 @@ from ._core import InputError, SceneError
 from .fields import read_fields
 
 __all__ = ["InputError", "SceneError", "Scene", "Run", "load_scene", "run", "read_run", "read_fields", "compare",
-           "norm", "sweep", "verify", "methods"]
+           "norm", "sweep", "verify", "methods", "scenes", "data_root"]
 __version__ = _core.__version__
 
 #: A scene given as a loaded Scene or as the path of its TOML file.
@@ -79,6 +83,7 @@ class Scene:
         if _is_dict:
             self._scene = _core.load_scene_dict(source, "<dict>", self._overrides)
         else:
+            self._source = source = _core.resolve_scene(os.fspath(source))
             self._scene = _core.load_scene(str(source), self._overrides)
 
     @classmethod
@@ -107,7 +112,7 @@ class Scene:
 
 def load_scene(path: Union[str, os.PathLike], overrides: Optional[Overrides] = None, *,
                set: Optional[Overrides] = None) -> Scene:
-    """Loads and validates a scene file; `overrides` as Scene.with_overrides() (`set` is the
+    """Loads and validates a scene file (or a shipped scene by name: scenes()); `overrides` as Scene.with_overrides() (`set` is the
     deprecated name of `overrides`)."""
     overrides = _overrides(overrides, set, "load_scene")
     return Scene(path).with_overrides(overrides) if overrides else Scene(path)
@@ -249,16 +254,40 @@ def verify(matrix: Union[str, os.PathLike] = "verification/matrix.toml", out: Un
            fresh: bool = False) -> dict:
     """`beamimpact verify` as a call: runs the matrix's `tier` (items whose name contains `only`)
     with `jobs` runs in parallel, each a process of the `beamimpact` executable `exe` (default
-    $BEAMIMPACT_EXE, else `beamimpact` on PATH), writes runs/, junit.xml, norms.json and report.md
+    $BEAMIMPACT_EXE, else the program installed with this package, else `beamimpact` on PATH),
+    writes runs/, junit.xml, norms.json and report.md
     under `out`, and returns norms.json's dict: result["verdict"] is "PASS" or "FAIL" by the
     library's one pass rule (complete, no gate failed); each gate has "passed" and "margin".
     A run recorded as finished under `out`/runs with the same input (an interrupted verify's) is
     taken as it is, as the command does (docs/resuming.md); `fresh=True` runs everything again
-    (`--fresh`)."""
-    exe = exe or os.environ.get("BEAMIMPACT_EXE") or shutil.which("beamimpact")
+    (`--fresh`). A relative `matrix` that does not exist here is the shipped one (data_root()),
+    so the default works from any folder."""
+    exe = exe or os.environ.get("BEAMIMPACT_EXE") or _program() or shutil.which("beamimpact")
     if not exe:
-        raise FileNotFoundError("verify: no beamimpact executable (pass exe= or set BEAMIMPACT_EXE)")
-    return _core.verify(str(matrix), str(out), tier, only, jobs, str(exe), fresh)
+        raise FileNotFoundError("verify: no beamimpact program found beside this package nor on PATH "
+                                "(pass exe= or set BEAMIMPACT_EXE)")
+    return _core.verify(str(_core.resolve_data_file(os.fspath(matrix))), str(out), tier, only, jobs, str(exe), fresh)
+
+
+def _program() -> Optional[str]:
+    """The beamimpact program installed with this package (bin/ of its environment) or of the
+    build tree it was built in, else None."""
+    p = _core.program_path()
+    return str(p) if p.name == "beamimpact" and os.access(p, os.X_OK) else None
+
+
+def data_root() -> Optional[Path]:
+    """The folder of the shipped data (verification/scenes, verification/matrix.toml,
+    verification/methods.toml, references/): the installed share/beamimpact or the repository;
+    None when neither is found."""
+    root = _core.data_root()
+    return Path(root) if str(root) else None
+
+
+def scenes() -> dict[str, Path]:
+    """The shipped scenes by name ("s1_central": its file); a name works wherever a scene file
+    does (run("s1_central"), `beamimpact run s1_central`)."""
+    return {name: Path(file) for name, file in _core.shipped_scenes()}
 
 
 def methods() -> list[str]:

@@ -9,8 +9,10 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <api/methods_file.hpp>
 #include <api/registry.hpp>
 #include <api/run.hpp>
+#include <api/shipped_scenes.hpp>
 #include <beamimpact/version.hpp>
 #include <solver/integrator/ExplicitContactIntegrator.hpp>
 #include <solver/record/ContactStats.hpp>
@@ -237,6 +239,24 @@ PYBIND11_MODULE(_core, m) {
     for (const Method& me : methods()) names.push_back(me.name);
     return names;
   });
+  m.def("data_root", &data_root,
+        "The folder of the shipped data (verification/, references/): the repository or the installed "
+        "share/beamimpact (empty when none is found)");
+  m.def("program_path", &program_path, "The beamimpact program the module finds (its runs' program)");
+  m.def(
+      "resolve_scene", [](const std::string& arg) { return resolve_scene(arg); }, py::arg("arg"),
+      "The file a scene argument names: a path, or a shipped scene's name (api/shipped_scenes.hpp)");
+  m.def(
+      "resolve_data_file", [](const std::string& arg) { return resolve_data_file(arg); }, py::arg("arg"),
+      "A data file argument: as given when it exists, else under the data root");
+  m.def(
+      "shipped_scenes",
+      [] {
+        std::vector<std::pair<std::string, std::filesystem::path>> out;
+        for (const ShippedScene& s : shipped_scenes()) out.emplace_back(s.name, s.file);
+        return out;
+      },
+      "The shipped scenes as (name, file) pairs, sorted by file");
   m.def("read_run", &read_run, py::arg("dir"),
         "Reads a run directory; returns (summary dict, dict of columns)");
   m.def("compare", &compare,

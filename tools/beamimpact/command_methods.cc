@@ -47,7 +47,10 @@ void add_command_methods(CLI::App& app) {
       "List every method: built-in or from which methods file, whether it can run here, what it accepts");
   add_methods_option(m);
   m->callback(print_methods);
-  app.add_subcommand("schema", "Print the output schema (history.csv columns, enums, units) as JSON")
+  app.add_subcommand(
+         "schema",
+         "Print the output schema (history.csv columns, enums, units) as JSON; the scene format and "
+         "the output files are described in docs/scene-format.md")
       ->callback([] { fmt::print("{}\n", schema_json().dump(2)); });
 }
 

@@ -1,4 +1,5 @@
 #include "command_model.hpp"
+#include "command_scenes.hpp"
 
 #include <memory>
 #include <string>
@@ -46,7 +47,9 @@ void add_command_model(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "model",
       "Export the scene's semi-discrete model (M, K, C, DOF map, initial state, contact rows) to DIR");
-  sub->add_option("scene", args->scene, "Scene file (TOML)")->required();
+  sub->add_option("scene", args->scene, "Scene file (TOML) or a shipped scene's name (`beamimpact scenes`)")
+      ->required()
+      ->transform(scene_argument());
   sub->add_option("--out", args->out, "Output directory (model.json is written last)")->required();
   sub->add_option("--set", args->sets, "Override a scene key, e.g. --set bodies.A.elements=100 (repeatable)");
   sub->add_option("--mesh-factor", args->mesh_factor,

@@ -1,4 +1,5 @@
 #include "command_run.hpp"
+#include "command_scenes.hpp"
 #include "methods_option.hpp"
 
 #include <cstdlib>
@@ -78,7 +79,11 @@ void add_command_run(CLI::App& app) {
   auto args = std::make_shared<RunArgs>();
   CLI::App* sub =
       app.add_subcommand("run", "Run one scene with one method; writes DIR/history.csv and DIR/summary.json");
-  sub->add_option("scene", args->scene, "Scene file (TOML, see docs/scene-format.md)")->required();
+  sub->add_option(
+         "scene", args->scene,
+         "Scene file (TOML, see docs/scene-format.md), or a shipped scene's name (`beamimpact scenes`)")
+      ->required()
+      ->transform(scene_argument());
   sub->add_option("--out", args->out, "Output directory")->required();
   sub->add_option("--method", args->method,
                   "A method of the registry (`beamimpact methods`): " + method_names())

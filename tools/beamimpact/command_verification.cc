@@ -1,5 +1,6 @@
 #include "command_verification.hpp"
 #include "command_run.hpp"
+#include "command_scenes.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -12,10 +13,13 @@
 
 #include <api/methods_file.hpp>
 #include <api/registry.hpp>
+#include <api/shipped_scenes.hpp>
 #include <beamimpact/version.hpp>
 #include <solver/util/InputError.hpp>
+#include <solver/util/write_file_atomic.hpp>
 #include <verification/compare/compare_runs.hpp>
 #include <verification/matrix/VerificationMatrix.hpp>
+#include <verification/matrix/baseline.hpp>
 #include <verification/matrix/evaluate.hpp>
 #include <verification/matrix/execute_jobs.hpp>
 #include <verification/matrix/interruption.hpp>
@@ -41,6 +45,8 @@ struct CompareArgs {
 
 struct VerifyArgs {
   std::string matrix = "verification/matrix.toml", out, tier = "quick", only;
+  std::string baseline;          ///< --baseline FILE ("" none)
+  bool update_baseline = false;  ///< write FILE from this run instead of holding it to FILE
   int jobs = 1;
   int threads = 0;  // 0: each run's default
   bool fresh = false;
@@ -74,11 +80,39 @@ void compare(const CompareArgs& a) {
   fmt::print("wrote {}\n", json.string());
 }
 
+/// --baseline FILE: this run's gates against FILE (false when one got worse beyond its noise);
+/// with --update-baseline, FILE is written from this run instead, when it passed.
+bool hold_to_baseline(const VerifyArgs& a, const VerifyResult& r) {
+  if (a.baseline.empty()) return true;
+  const fs::path file = a.baseline;
+  std::error_code ec;
+  const bool exists = fs::exists(file, ec);
+  if (!exists && !a.update_baseline)
+    throw InputError(file.string(), "--baseline", "no such file (write one with --update-baseline)");
+  BaselineComparison c;
+  if (exists) {
+    c = compare_baseline(read_baseline(file), file.string(), r.items);
+    fmt::print("{}", c.to_text());
+  }
+  if (!a.update_baseline) {
+    if (!c.passed())
+      fmt::print("baseline FAILED: {} gate(s) worse than in {}\n", c.worse.size(), file.string());
+    return c.passed();
+  }
+  if (!r.passed()) {
+    fmt::print(stderr, "baseline: {} not updated: this verification failed\n", file.string());
+    return false;
+  }
+  write_file_atomic(file, baseline_json(kVersion, r.context.tier, r.items).dump(1) + "\n");
+  fmt::print("baseline: wrote {}\n", file.string());
+  return true;
+}
+
 void verify(const VerifyArgs& a) {
   const OutputLock lock = lock_output(a.out);  // before the earlier reports are removed
   forward_interruptions();
   VerifyOptions o;
-  o.matrix = a.matrix;
+  o.matrix = resolve_data_file(a.matrix);  // verification/matrix.toml from any folder
   o.out = a.out;
   o.tier = a.tier;
   o.only = a.only;
@@ -104,7 +138,8 @@ void verify(const VerifyArgs& a) {
     fmt::print(stderr, "verify: interrupted (signal {}): the report is marked incomplete\n", interruption());
     throw CommandExit{interrupted_exit_code()};
   }
-  if (!result->passed()) throw CommandExit{1};
+  const bool held = hold_to_baseline(a, *result);
+  if (!result->passed() || !held) throw CommandExit{1};
 }
 
 void sweep(SweepArgs& a) {
@@ -158,6 +193,42 @@ void sweep(SweepArgs& a) {
 
 }  // namespace
 
+namespace {
+
+/// `verify`: its options, --baseline and --update-baseline among them.
+void add_verify_command(CLI::App& app) {
+  auto va = std::make_shared<VerifyArgs>();
+  CLI::App* v = app.add_subcommand("verify", "Run the verification matrix; exit 1 if any gate fails");
+  v->add_option("MATRIX", va->matrix,
+                "VerificationMatrix file; a relative path missing here is looked for under the data root "
+                "(the repository or the installed share/beamimpact)")
+      ->capture_default_str();
+  v->add_option("--out", va->out, "Output directory (runs/, junit.xml, norms.json, report.md)")->required();
+  v->add_option("--tier", va->tier,
+                "quick (CI), stability (health checks of the hard cases) or full (everything, plus fine "
+                "meshes and small dt)")
+      ->check(CLI::IsMember(VerificationMatrix::tier_names()))
+      ->capture_default_str();
+  v->add_option("--jobs", va->jobs, "Runs in parallel")->capture_default_str();
+  v->add_option("--only", va->only, "Only cases whose name contains this text (e.g. s1_central)");
+  v->add_flag("--fresh", va->fresh,
+              "Run everything again (default: the runs an interrupted verify finished in OUT/runs, with the "
+              "same version, scene and settings, are taken as they are)");
+  add_threads_option(v, va->threads,
+                     "Threads of each run of the paper integrator (as run --threads; default: each run's)");
+  CLI::Option* baseline = v->add_option(
+      "--baseline", va->baseline,
+      "A baseline (an earlier --update-baseline, or a norms.json): exit 1 when a gated value got worse "
+      "than in it by more than max(1 % of it, 1e-9); better ones are listed (docs/ci.md)");
+  v->add_flag("--update-baseline", va->update_baseline,
+              "Write the --baseline file from this run (when it passes) instead of holding the run to it")
+      ->needs(baseline);
+  add_methods_option(v);
+  v->callback([va] { verify(*va); });
+}
+
+}  // namespace
+
 void add_verification_commands(CLI::App& app) {
   auto ca = std::make_shared<CompareArgs>();
   CLI::App* c = app.add_subcommand(
@@ -196,29 +267,14 @@ void add_verification_commands(CLI::App& app) {
   add_methods_option(c);
   c->callback([ca] { compare(*ca); });
 
-  auto va = std::make_shared<VerifyArgs>();
-  CLI::App* v = app.add_subcommand("verify", "Run the verification matrix; exit 1 if any gate fails");
-  v->add_option("MATRIX", va->matrix, "VerificationMatrix file")->capture_default_str();
-  v->add_option("--out", va->out, "Output directory (runs/, junit.xml, norms.json, report.md)")->required();
-  v->add_option("--tier", va->tier,
-                "quick (CI), stability (health checks of the hard cases) or full (everything, plus fine "
-                "meshes and small dt)")
-      ->check(CLI::IsMember(VerificationMatrix::tier_names()))
-      ->capture_default_str();
-  v->add_option("--jobs", va->jobs, "Runs in parallel")->capture_default_str();
-  v->add_option("--only", va->only, "Only cases whose name contains this text (e.g. s1_central)");
-  v->add_flag("--fresh", va->fresh,
-              "Run everything again (default: the runs an interrupted verify finished in OUT/runs, with the "
-              "same version, scene and settings, are taken as they are)");
-  add_threads_option(v, va->threads,
-                     "Threads of each run of the paper integrator (as run --threads; default: each run's)");
-  add_methods_option(v);
-  v->callback([va] { verify(*va); });
+  add_verify_command(app);
 
   auto sa = std::make_shared<SweepArgs>();
   CLI::App* s =
       app.add_subcommand("sweep", "Error norms and wall time of one scene at several dt (and meshes)");
-  s->add_option("SCENE", sa->scene, "Scene file")->required();
+  s->add_option("SCENE", sa->scene, "Scene file or a shipped scene's name (`beamimpact scenes`)")
+      ->required()
+      ->transform(scene_argument());
   auto* dt = s->add_option("--dt", sa->o.dts, "s, time steps, e.g. 0.01,0.005,0.0025")->delimiter(',');
   auto* fr = s->add_option("--fraction", sa->o.fractions,
                            "fractions of the critical step, for scenes with dt = \"auto\" (e.g. 0.5,0.25)")

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <tools/beamimpact/testing/cli_run.hpp>
 
@@ -298,6 +299,75 @@ TEST_F(Commands, BadCompareAndSweepOptionsExitTwo) {
       ref.output.find("expected a method name (paper, exact, ida, fenicsx, siconos, example), got 'bogus'"),
       std::string::npos)
       << ref.output;
+}
+
+// The ratchet: a baseline written from a run holds the next run to its values. Its noise is
+// max(1 % of a value, 1e-9) (baseline.hpp): the baseline's first error moved by hand to make the
+// run's value 2 % above it must fail (exit 1), 0.5 % must not, 2 % below it is listed as better.
+TEST_F(Commands, BaselineHoldsTheRunToItsValues) {
+  const fs::path b = tmp_ / "baseline.json";
+  const std::string verify = fmt::format(
+      "verify verification/matrix.toml --only 's1_central paper dt=0.01 vs' --jobs 2 --baseline '{}' --out ",
+      b.string());
+  const Result written = run(verify + testing::shell_words({(tmp_ / "v0").string()}) + " --update-baseline");
+  ASSERT_EQ(written.code, 0) << written.output;
+  ASSERT_NE(written.output.find("baseline: wrote"), std::string::npos) << written.output;
+  const nlohmann::json original = nlohmann::json::parse(read(b));
+  auto with_first_error_scaled = [&](double factor) {
+    nlohmann::json j = original;
+    for (auto& g : j["items"][0]["gates"])
+      if (g.contains("tol") && !g.contains("min_order") && g["value"].is_number() && g["value"] > 1e-6) {
+        g["value"] = g["value"].get<double>() * factor;
+        break;
+      }
+    std::ofstream(b) << j.dump(1);
+  };
+  int n = 0;
+  auto again = [&] {
+    return run(verify + testing::shell_words({(tmp_ / fmt::format("v{}", ++n)).string()}));
+  };
+  const Result same = again();
+  EXPECT_EQ(same.code, 0) << same.output;
+  EXPECT_NE(same.output.find("baseline: 0 worse, 0 better"), std::string::npos) << same.output;
+  with_first_error_scaled(1 / 1.02);  // the run's value 2 % above the baseline's
+  const Result worse = again();
+  EXPECT_EQ(worse.code, 1) << worse.output;
+  EXPECT_NE(worse.output.find("WORSE"), std::string::npos) << worse.output;
+  with_first_error_scaled(1 / 1.005);  // 0.5 %: within the noise
+  const Result within = again();
+  EXPECT_EQ(within.code, 0) << within.output;
+  with_first_error_scaled(1.02);  // the run's value 2 % below: better, listed, passes
+  const Result better = again();
+  EXPECT_EQ(better.code, 0) << better.output;
+  EXPECT_NE(better.output.find("  better "), std::string::npos) << better.output;
+  const Result missing =
+      run(fmt::format("verify verification/matrix.toml --only s1_central --out '{}' --baseline '{}'",
+                      (tmp_ / "vm").string(), (tmp_ / "none.json").string()));
+  EXPECT_EQ(missing.code, 2) << missing.output;
+}
+
+// A shipped scene by name from a folder outside the repository; a file of the working folder
+// wins over a shipped scene's name (the rule of api/shipped_scenes.hpp).
+TEST_F(Commands, ShippedSceneByNameFromAnyFolder) {
+  const std::string here = "cd " + testing::shell_words({tmp_.string()}) + " &&";
+  const Result listed = run("scenes", here);
+  ASSERT_EQ(listed.code, 0) << listed.output;
+  EXPECT_NE(listed.output.find((src_ / "verification/scenes/paper/s1_central.toml").string()),
+            std::string::npos)
+      << listed.output;
+  const Result by_name = run("run s1_central --method exact --out by_name --quiet", here);
+  ASSERT_EQ(by_name.code, 0) << by_name.output;
+  const nlohmann::json s = nlohmann::json::parse(read(tmp_ / "by_name/summary.json"));
+  // S1, two equal free rods: the exact impulse is m v0 / 2 = 4 N s.
+  EXPECT_NEAR(s["contacts"][0]["impulse_normal"].get<double>(), 4.0, 1e-9);
+  fs::copy_file(src_ / "verification/scenes/paper/s2_transverse.toml", tmp_ / "s1_central.toml");
+  const Result local = run("run s1_central.toml --method exact --out local --quiet", here);
+  ASSERT_EQ(local.code, 0) << local.output;
+  // The working folder's file (S2's content under S1's name) ran, not the shipped S1.
+  EXPECT_EQ(nlohmann::json::parse(read(tmp_ / "local/summary.json"))["scene"], "s2_transverse");
+  const Result unknown = run("run no_such_scene --out x --quiet", here);
+  EXPECT_EQ(unknown.code, 2) << unknown.output;
+  EXPECT_NE(unknown.output.find("no_such_scene"), std::string::npos) << unknown.output;
 }
 
 }  // namespace

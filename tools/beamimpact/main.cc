@@ -18,6 +18,7 @@
 #include "command_model.hpp"
 #include "command_protocol.hpp"
 #include "command_run.hpp"
+#include "command_scenes.hpp"
 #include "command_study.hpp"
 #include "command_verification.hpp"
 
@@ -40,7 +41,8 @@ int main(int argc, char** argv) {
   try {
     (void)methods();  // the built-in ones and the default methods files, for the help texts
     add_command_run(app);
-    add_command_methods(app);        // methods, schema
+    add_command_methods(app);  // methods, schema
+    add_command_scenes(app);
     add_verification_commands(app);  // compare, verify, sweep
     add_command_study(app);
     add_protocol_commands(app);  // conform, score

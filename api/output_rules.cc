@@ -128,20 +128,39 @@ std::vector<RowInterval> row_intervals(const std::vector<double>& t, const std::
   return out;
 }
 
-/// The sampling resolution of an integral of R over rows lo..hi: the largest row spacing times
-/// the larger of max R and half R's variation (the gap between the value-at-t_k, the mean over
-/// the step after t_k and the trapezoid conventions), plus a few ulps of the integral.
-double resolution(const std::vector<double>& t, const std::vector<double>& R, std::size_t lo, std::size_t hi,
-                  double integral) {
-  double h = 0.0, peak = 0.0, tv = 0.0;
-  for (std::size_t r = lo; r <= hi; ++r) {
+/// One contact's rows as the consistency rule reads them.
+struct Rows {
+  const std::vector<double>& t;  ///< s
+  const std::vector<double>& R;  ///< N
+  double h;                      ///< s, the largest row spacing
+  bool every_step;               ///< a row every step (h <= the summary's dt): R known at every step
+  double jitter;  ///< s, the largest change between consecutive row spacings (the last left out)
+};
+
+/// The rows' resolution of an integral of R over rows lo..hi (N s). A row every step: the spread
+/// of the conventions on these very rows, |L - T| = |Rt - T| = |L - Rt| / 2 with L = sum R_k h_k over
+/// the step after each row, Rt over the step before and T the trapezoid rule, plus half a step of
+/// the end rows' R (a sum over every row), plus the rows' time jitter times R's variation (times
+/// written rounded), plus the rounding of the sum ((n + 8) ulps of sum |R| h).
+/// Rows sparser than the steps (R between rows unseen): h max(max R, half R's variation).
+double resolution(const Rows& rows, std::size_t lo, std::size_t hi) {
+  const auto& t = rows.t;
+  const auto& R = rows.R;
+  double left = 0.0, right = 0.0, sum_abs = 0.0, peak = std::abs(R[lo]), tv = 0.0;
+  for (std::size_t r = lo + 1; r <= hi; ++r) {
+    const double hk = t[r] - t[r - 1];
+    left += R[r - 1] * hk;
+    right += R[r] * hk;
+    sum_abs += std::abs(R[r]) * hk;
     peak = std::max(peak, std::abs(R[r]));
-    if (r > lo) {
-      h = std::max(h, t[r] - t[r - 1]);
-      tv += std::abs(R[r] - R[r - 1]);
-    }
+    tv += std::abs(R[r] - R[r - 1]);
   }
-  return h * std::max(peak, 0.5 * tv) + 64.0 * std::numeric_limits<double>::epsilon() * std::abs(integral);
+  const double rounding = static_cast<double>(hi - lo + 8) * std::numeric_limits<double>::epsilon() *
+                          (sum_abs + std::abs(R[lo]) * rows.h);
+  if (!rows.every_step) return rows.h * std::max(peak, 0.5 * tv) + rounding;
+  // A row time written off by d moves the trapezoid sum by at most d times R's variation.
+  return 0.5 * std::abs(left - right) + 0.5 * rows.h * (std::abs(R[lo]) + std::abs(R[hi])) +
+         rows.jitter * tv + rounding;
 }
 
 /// Trapezoid integral of R over rows lo..hi.
@@ -177,13 +196,15 @@ std::string summary_intervals(const Json& c, double gap, std::vector<std::array<
 /// The summary's (merged) intervals against the rows' of one contact: every row interval lies in
 /// a summary interval; every summary interval longer than a row spacing holds row intervals, the
 /// first starting within one row spacing of its start, the last ending within one row spacing
-/// plus the merge gap of its end; its impulse (when listed) is the rows' integral over it. A
-/// contact shorter than a row spacing may fall between rows. "" when all hold.
+/// plus the merge gap of its end; its impulse (when listed) is the rows' integral over it. With
+/// rows sparser than the steps, a contact shorter than a row spacing may fall between rows (its
+/// impulse is in the total, checked before). "" when all hold.
 std::string interval_problem(const std::string& label, const std::string& col,
                              const std::vector<std::array<double, 2>>& iv, const std::vector<double>& J,
-                             const std::vector<double>& t, const std::vector<double>& R,
-                             const std::vector<RowInterval>& rows, double h, double gap) {
-  const double slack = 1.0001 * h;
+                             const Rows& data, const std::vector<RowInterval>& rows, double gap) {
+  const auto& t = data.t;
+  const auto& R = data.R;
+  const double h = data.h, slack = 1.0001 * h;
   std::vector<bool> used(rows.size(), false);
   for (std::size_t i = 0; i < iv.size(); ++i) {
     std::size_t first = rows.size(), last = 0;
@@ -194,7 +215,7 @@ std::string interval_problem(const std::string& label, const std::string& col,
         used[r] = true;
       }
     if (first == rows.size()) {
-      if (iv[i][1] - iv[i][0] < h && (J.empty() || std::abs(J[i]) <= resolution(t, R, 0, t.size() - 1, 0.0)))
+      if (!data.every_step && iv[i][1] - iv[i][0] < h)
         continue;  // shorter than a row spacing: it may fall between rows
       return fmt::format(
           "{}.intervals[{}] = [{:.9g}, {:.9g}] s in summary.json: no contact ({} > 0) in "
@@ -210,8 +231,7 @@ std::string interval_problem(const std::string& label, const std::string& col,
     if (J.empty()) continue;
     const std::size_t lo = rows[first].first > 0 ? rows[first].first - 1 : 0;
     const std::size_t hi = std::min(rows[last].last + 1, t.size() - 1);
-    const double Ji = trapezoid(t, R, lo, hi),
-                 tol = resolution(t, R, lo, hi, std::max(std::abs(Ji), std::abs(J[i])));
+    const double Ji = trapezoid(t, R, lo, hi), tol = resolution(data, lo, hi);
     if (std::abs(J[i] - Ji) > tol)
       return fmt::format(
           "{}.interval_impulses[{}] = {:.9g} N s in summary.json, {:.9g} N s in history.csv (the "
@@ -230,7 +250,7 @@ std::string interval_problem(const std::string& label, const std::string& col,
 
 /// summary.json against history.csv for contact k (1-based): impulse, intervals, interval impulses.
 void check_contact(Verdicts& check, const fs::path& dir, const Json& c, const HistoryTable& h, int k,
-                   double h_max) {
+                   double h_max, double dt) {
   const std::string col = contact_column("R", k), label = fmt::format("contacts[{}]", k - 1);
   const fs::path sum = dir / "summary.json";
   const auto& t = h.columns.at("t");
@@ -238,15 +258,20 @@ void check_contact(Verdicts& check, const fs::path& dir, const Json& c, const Hi
   const std::string Jcol = contact_column("impulse", k);
   const double J_rows = h.columns.count(Jcol) ? h.columns.at(Jcol).back() : trapezoid(t, R, 0, t.size() - 1);
   const double J_sum = c["impulse_normal"].get<double>();
-  const double tol = resolution(t, R, 0, t.size() - 1, std::max(std::abs(J_rows), std::abs(J_sum)));
-  if (!check("consistency", sum, std::abs(J_sum - J_rows) <= tol,
-             fmt::format(
-                 "{}.impulse_normal = {:.9g} N s in summary.json, {:.9g} N s in history.csv ({}); expected "
-                 "the same within the rows' resolution {:.3g} N s (largest row spacing x max(max {}, half "
-                 "its variation))",
-                 label, J_sum, J_rows,
-                 h.columns.count(Jcol) ? "its last " + Jcol : "the trapezoid integral of " + col, tol, col,
-                 col)))
+  double jitter = 0.0;
+  for (std::size_t r = 2; r + 1 < t.size(); ++r)
+    jitter = std::max(jitter, std::abs((t[r] - t[r - 1]) - (t[r - 1] - t[r - 2])));
+  const Rows rows{t, R, h_max, h_max <= 1.0001 * dt, jitter};
+  const double tol = resolution(rows, 0, t.size() - 1);
+  if (!check(
+          "consistency", sum, std::abs(J_sum - J_rows) <= tol,
+          fmt::format("{}.impulse_normal = {:.9g} N s in summary.json, {:.9g} N s in history.csv ({}); "
+                      "expected the same within the rows' resolution {:.3g} N s ({})",
+                      label, J_sum, J_rows,
+                      h.columns.count(Jcol) ? "its last " + Jcol : "the trapezoid integral of " + col, tol,
+                      rows.every_step ? "a row every step: the spread of the time conventions on these rows"
+                                      : "rows sparser than the steps: the largest row spacing x max(max " +
+                                            col + ", half its variation)")))
     return;
   std::vector<std::array<double, 2>> iv;
   std::vector<double> J;
@@ -255,7 +280,7 @@ void check_contact(Verdicts& check, const fs::path& dir, const Json& c, const Hi
     check("consistency", sum, false, label + ".intervals: " + why);
     return;
   }
-  const std::string why = interval_problem(label, col, iv, J, t, R, row_intervals(t, R, gap), h_max, gap);
+  const std::string why = interval_problem(label, col, iv, J, rows, row_intervals(t, R, gap), gap);
   check("consistency", sum, why.empty(), why);
 }
 
@@ -293,7 +318,8 @@ void check_read(Verdicts& check, const fs::path& dir, const Json& s, const Histo
             "expected a column " + contact_column("R", k) + " (one R per contact)");
       continue;
     }
-    check_contact(check, dir, s["contacts"][static_cast<std::size_t>(k - 1)], h, k, h_max);
+    check_contact(check, dir, s["contacts"][static_cast<std::size_t>(k - 1)], h, k, h_max,
+                  s["dt"].get<double>());
   }
   if (check.out.size() == before) check("consistency", sum, true, "");
 }
@@ -314,9 +340,10 @@ const std::vector<std::pair<std::string, std::string>>& output_rules() {
        "last t are the scene's end in s within one step"},
       {"scene sha256", "summary.json scene_sha256 is the sha256 of the scene file's bytes"},
       {"consistency",
-       "summary.json agrees with history.csv: impulse (max(max R, half its variation) x the "
-       "largest row spacing), intervals (start within one row spacing, end within one row "
-       "spacing plus 3.5 row spacings of merge gap), interval impulses"},
+       "summary.json agrees with history.csv within the rows' resolution: impulse and interval impulses "
+       "(a row every step: the time conventions' spread on the rows; sparser rows: the largest spacing x "
+       "max(max R, half its variation)), intervals (start within one row spacing, end within one more plus "
+       "3.5 of merge gap)"},
   };
   return r;
 }

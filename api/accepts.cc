@@ -1,9 +1,12 @@
 #include <api/accepts.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 #include <fmt/format.h>
 
+#include <solver/model/Effects.hpp>
 #include <solver/scene/SceneError.hpp>
 
 namespace beamimpact {
@@ -32,6 +35,36 @@ void check_tables(const Scene& scene) {
                        "unknown table [" + table + "]; expected a scene table or a method's options table (" +
                            tables + ")");
   }
+}
+
+/// True when the contact's striker node faces the target's side at a point inside an element
+/// (between two nodes): the kind ContactKind::kNodeToSurface of the paper's contact and IDA's
+/// (the same test: the foot of the node on the target's axis, 1e-9 of an element off a node).
+bool meets_surface(const Scene& scene, const Contact& c) {
+  const Body& target = scene.bodies[static_cast<std::size_t>(c.target)];
+  const Vec2 x = scene.bodies[static_cast<std::size_t>(c.striker)].node_position(c.node);
+  const Vec2 d = target.axis(), n = target.normal();
+  const Vec2 rel{x[0] - target.start[0], x[1] - target.start[1]};
+  const double L = target.length(), s = d[0] * rel[0] + d[1] * rel[1], h = n[0] * rel[0] + n[1] * rel[1];
+  const double tol = 1e-9 * L;
+  if (std::abs(h) <= tol && (s < -tol || s > L + tol)) return false;  // end to end
+  const double r = std::clamp(s, 0.0, L) / (L / target.elements);
+  return std::abs(r - std::round(r)) >= 1e-9;
+}
+
+/// The scene's physics against bending, node_to_surface and loads.
+void check_physics(const Method& m, const Scene& scene) {
+  const Method::Accepts& a = m.accepts;
+  if (!a.bending && derive_effects(scene).bending)
+    refuse(m, scene, "bodies", "bending (bodies not all on one line, or [effects] bending = true)",
+           "bodies on one line moving along it (rods)", "bending");
+  for (std::size_t i = 0; i < scene.contacts.size(); ++i)
+    if (!a.node_to_surface && (scene.contacts[i].search || meets_surface(scene, scene.contacts[i])))
+      refuse(m, scene, "contacts[" + std::to_string(i) + "]",
+             "a node-to-surface contact (the striker node meets the target inside an element)",
+             "a striker node facing the target's end or one of its nodes", "node_to_surface");
+  if (!a.loads && scene.loads.any())
+    refuse(m, scene, "loads", "loads (gravity or point forces)", "no [loads] (or all zero)", "loads");
 }
 
 }  // namespace
@@ -74,6 +107,7 @@ void check_accepts(const Method& m, const Scene& scene, const std::string& mesh)
       refuse(m, scene, key + ".law", "the Hertz contact law (law = \"hertz\")", "\"hard\" (or no law)",
              "hertz");
   }
+  check_physics(m, scene);
   if (!a.several_contacts && scene.contacts.size() > 1)
     refuse(m, scene, "contacts", fmt::format("{} contacts", scene.contacts.size()), "one [[contacts]] table",
            "several_contacts");

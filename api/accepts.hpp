@@ -11,9 +11,10 @@ namespace beamimpact {
 
 /// @brief Throws SceneError(scene file, key, why) when the method does not take this run: a
 /// step asked for (time.dt / time.fraction override) from a method that picks its own, a mesh it
-/// cannot take, friction, large rotation, rigid bodies, contact search or several contacts it
-/// does not model, or an option table ([name]) that is no method's. The CLI exits 2 and the
-/// suite reports the run as not applicable.
+/// cannot take, friction, large rotation, rigid bodies, contact search, several contacts,
+/// Timoshenko beams, the Hertz law, bending, a node-to-surface contact or loads it does not model, or an
+/// option table ([name]) that is no method's. The CLI exits 2 and the suite reports the run as not
+/// applicable.
 /// @param m the method; @param scene the scene with its overrides applied
 /// @param mesh the mesh asked for ("" none; an element multiplier or the method's preset)
 void check_accepts(const Method& m, const Scene& scene, const std::string& mesh);

@@ -9,6 +9,7 @@
 
 #include <api/child_process.hpp>
 #include <api/methods_file.hpp>
+#include <api/output_rules.hpp>
 #include <solver/scene/SceneError.hpp>
 #include <solver/scene/scene_io.hpp>
 #include <solver/util/Progress.hpp>
@@ -112,9 +113,18 @@ SimulationResult run_external(const Method& m, const Scene& scene, const fs::pat
   }
   const std::string said = last_line(log);
   if (ok) {
-    if (!fs::exists(out / "summary.json", ec))
-      throw std::runtime_error("method '" + m.name + "' exited 0 but wrote no " +
-                               (out / "summary.json").string());
+    // Exit 0 vouches for nothing by itself: the outputs keep every rule, or the run failed and
+    // its summary is moved aside (a broken result must never look complete).
+    const std::string broken = first_broken_rule(
+        check_outputs(out, OutputExpectation{run.scene, scene.contacts.size(), scene.time.end}));
+    if (!broken.empty()) {
+      if (fs::exists(out / "summary.json", ec)) fs::rename(out / "summary.json", out / kRejectedSummary, ec);
+      throw std::runtime_error("method '" + m.name + "' exited 0 but its outputs break the protocol's " +
+                               broken +
+                               (fs::exists(out / kRejectedSummary, ec)
+                                    ? " (summary.json moved to " + std::string(kRejectedSummary) + ")"
+                                    : ""));
+    }
     return read_back(m, out / "summary.json");
   }
   fs::remove(out / "summary.json", ec);  // a failed run's summary vouches for nothing

@@ -24,10 +24,16 @@ struct ExternalRun {
 /// out, together with the option just before it (an argument starting with '-').
 std::vector<std::string> external_argv(const Method& m, const ExternalRun& run);
 
+/// @brief Where run_external() moves the summary.json of a run whose outputs break a rule
+/// (api/output_rules.hpp): kept for the user to read, never taken for a finished run.
+inline constexpr const char* kRejectedSummary = "summary.rejected.json";
+
 /// @brief Runs the external method on the scene into `out` (the scene's overrides are written
 /// to out/scene.toml, which the program then reads). Its output goes to out/method.log, echoed
-/// on stderr after a failure or when progress is shown (Progress::enabled). Exit 0 with summary.json: the
-/// result's summary keys are read back (the run directory holds the rest). Exit 2: SceneError "not
+/// on stderr after a failure or when progress is shown (Progress::enabled). Exit 0: the outputs are
+/// checked by every output rule (check_outputs()); one broken is std::runtime_error naming the rule,
+/// and summary.json is moved to kRejectedSummary. Otherwise the result's summary keys are read back
+/// (the run directory holds the rest). Exit 2: SceneError "not
 /// applicable: ..." with the program's last line. Otherwise std::runtime_error; a summary.json left by a
 /// failed run is removed.
 /// @param m the method; @param scene the scene; @param out the run directory

@@ -71,8 +71,13 @@ std::vector<std::string> read_command(TableReader& r, const std::string& key, co
         a.replace(p, name.size() + 2, value);
     }
   }
-  if (c.empty() || !required) return c;
+  if (c.empty()) return c;
   std::error_code ec;
+  if (!required) {  // check: a bare name is looked up in PATH as command's; one not found fails the check
+    if (c[0].find('/') == std::string::npos)
+      if (const std::string found = on_path(c[0]); !found.empty()) c[0] = found;
+    return c;
+  }
   if (c[0].find('/') == std::string::npos) {
     const std::string found = on_path(c[0]);
     if (found.empty()) r.fail(key, "the program '" + c[0] + "' is not on PATH; expected an existing program");
@@ -87,20 +92,28 @@ std::vector<std::string> read_command(TableReader& r, const std::string& key, co
 }
 
 Method::Accepts read_accepts(TableReader& top) {
-  Method::Accepts a{false, false, false, false, false, false, false, false, false};
+  Method::Accepts a;
+  // Every key left out is false: one list of (key, field), so that no key can land in another's field.
+  const std::pair<const char*, bool Method::Accepts::*> keys[] = {
+      {"dt", &Method::Accepts::dt},
+      {"mesh_factor", &Method::Accepts::mesh_factor},
+      {"friction", &Method::Accepts::friction},
+      {"rotation", &Method::Accepts::rotation},
+      {"rigid", &Method::Accepts::rigid},
+      {"search", &Method::Accepts::search},
+      {"several_contacts", &Method::Accepts::several_contacts},
+      {"timoshenko", &Method::Accepts::timoshenko},
+      {"hertz", &Method::Accepts::hertz},
+      {"bending", &Method::Accepts::bending},
+      {"node_to_surface", &Method::Accepts::node_to_surface},
+      {"loads", &Method::Accepts::loads},
+  };
+  for (const auto& [key, field] : keys) a.*field = false;
   const toml::node* n = top.raw("accepts");
   if (!n) return a;
   if (!n->as_table()) top.fail("accepts", "expected a table { dt = true, friction = false, ... }");
   TableReader r(*n->as_table(), top.file(), top.path("accepts"), nullptr);
-  a.dt = r.boolean_or("dt", false);
-  a.mesh_factor = r.boolean_or("mesh_factor", false);
-  a.friction = r.boolean_or("friction", false);
-  a.rotation = r.boolean_or("rotation", false);
-  a.rigid = r.boolean_or("rigid", false);
-  a.search = r.boolean_or("search", false);
-  a.several_contacts = r.boolean_or("several_contacts", false);
-  a.timoshenko = r.boolean_or("timoshenko", false);
-  a.hertz = r.boolean_or("hertz", false);
+  for (const auto& [key, field] : keys) a.*field = r.boolean_or(key, false);
   r.finish();
   return a;
 }

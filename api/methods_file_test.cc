@@ -175,5 +175,85 @@ TEST_F(MethodsFile, AcceptanceIsCheckedAgainstTheScene) {
   }
 }
 
+// Each accepts key lands in its own field: for every pattern of true and false (each key alone
+// true, each alone false, alternating, in blocks), the fields read are exactly the keys written.
+// Two keys read into each other's field show as a wrong field in the patterns where they differ.
+TEST_F(MethodsFile, EachAcceptsKeyLandsInItsOwnField) {
+  const std::vector<std::pair<std::string, bool Method::Accepts::*>> keys = {
+      {"dt", &Method::Accepts::dt},
+      {"mesh_factor", &Method::Accepts::mesh_factor},
+      {"friction", &Method::Accepts::friction},
+      {"rotation", &Method::Accepts::rotation},
+      {"rigid", &Method::Accepts::rigid},
+      {"search", &Method::Accepts::search},
+      {"several_contacts", &Method::Accepts::several_contacts},
+      {"timoshenko", &Method::Accepts::timoshenko},
+      {"hertz", &Method::Accepts::hertz},
+      {"bending", &Method::Accepts::bending},
+      {"node_to_surface", &Method::Accepts::node_to_surface},
+      {"loads", &Method::Accepts::loads},
+  };
+  const std::size_t n = keys.size();
+  std::vector<std::vector<bool>> patterns;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<bool> one(n, false), all_but(n, true);
+    one[i] = true;
+    all_but[i] = false;
+    patterns.push_back(one);
+    patterns.push_back(all_but);
+  }
+  for (std::size_t period : {2u, 3u, 4u}) {
+    std::vector<bool> p(n);
+    for (std::size_t i = 0; i < n; ++i) p[i] = (i / (period / 2)) % 2 == 0 || (period == 3 && i % 3 == 1);
+    patterns.push_back(p);
+    for (std::size_t i = 0; i < n; ++i) p[i] = !p[i];
+    patterns.push_back(p);
+  }
+  for (const std::vector<bool>& p : patterns) {
+    std::string table, shown;
+    for (std::size_t i = 0; i < n; ++i) {
+      table += keys[i].first + " = " + (p[i] ? "true" : "false") + "\n";
+      shown += p[i] ? '1' : '0';
+    }
+    // {dt} and {mesh} are in the command, so either value of dt and mesh_factor is legal.
+    const Method m = read_methods_file(write("[[method]]\nname = \"x\"\ncommand = [\"/bin/sh\", \"{scene}\", "
+                                             "\"{out}\", \"{dt}\", \"{mesh}\"]\n[method.accepts]\n" +
+                                             table),
+                                       "/usr/bin/beamimpact")
+                         .at(0);
+    for (std::size_t i = 0; i < n; ++i)
+      EXPECT_EQ(m.accepts.*keys[i].second, static_cast<bool>(p[i]))
+          << keys[i].first << " in pattern " << shown;
+  }
+}
+
+// bending, node_to_surface and loads against the paper's scenes: S1 is two rods on one line, S2's
+// striker node meets B's middle node (x = 5 m on 10 elements of 1 m), S3's meets B at x = 4.5 m,
+// inside an element.
+TEST_F(MethodsFile, BendingNodeToSurfaceAndLoadsAreRefusedWhenNotDeclared) {
+  Method m = read_methods_file(write(good_), "/usr/bin/beamimpact").at(0);  // none of the three
+  auto key = [&](const char* scene, const std::vector<std::string>& set = {}) -> std::string {
+    try {
+      check_accepts(m, testing::load_paper_scene(scene, set), "");
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find("not applicable"), std::string::npos) << e.what();
+      return e.key();
+    }
+    return "";
+  };
+  EXPECT_EQ(key("s1_central"), "");
+  EXPECT_EQ(key("s2_transverse"), "bodies");  // bending
+  EXPECT_EQ(key("s1_central", {"loads.gravity=[0.0, -10.0]"}), "loads");
+  m.accepts.bending = true;
+  EXPECT_EQ(key("s2_transverse"), "");             // node to node
+  EXPECT_EQ(key("s3_surface_10"), "contacts[0]");  // node to surface
+  EXPECT_EQ(key("s1_central", {"effects.bending=true"}), "");
+  m.accepts.bending = false;
+  EXPECT_EQ(key("s1_central", {"effects.bending=true"}), "bodies");  // frames asked for
+  m.accepts.bending = m.accepts.node_to_surface = m.accepts.loads = true;
+  EXPECT_EQ(key("s3_surface_10"), "");
+  EXPECT_EQ(key("s1_central", {"loads.gravity=[0.0, -10.0]"}), "");
+}
+
 }  // namespace
 }  // namespace beamimpact

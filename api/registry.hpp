@@ -31,6 +31,13 @@ struct Method {
     bool several_contacts = true;  ///< more than one [[contacts]] table
     bool timoshenko = true;        ///< Timoshenko beams (a body with theory = "timoshenko")
     bool hertz = true;             ///< the Hertz contact law (a contact with law = "hertz")
+    /// Bending: the scene is built of frame elements (derive_effects().bending: its bodies are
+    /// not all on one line, or [effects] bending = true). False: rods only (axial motion).
+    bool bending = true;
+    /// A contact whose striker node meets the target's surface inside an element (between two
+    /// nodes), as ContactKind::kNodeToSurface; end-to-end and node-to-node contacts need no more.
+    bool node_to_surface = true;
+    bool loads = true;  ///< gravity or point loads ([loads] with a non-zero entry)
   };
 
   /// @brief What a run passes to an in-process solver besides the scene.

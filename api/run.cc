@@ -26,7 +26,7 @@ void add_scene_warnings(const Scene& scene, SimulationResult& r) {
 
 /// Nothing of an earlier run in the directory may vouch for this one, nor survive a refusal.
 void remove_run_outputs(const std::filesystem::path& out) {
-  remove_stale_outputs(out, {"summary.json", "history.csv"});
+  remove_stale_outputs(out, {"summary.json", "history.csv", kRejectedSummary});
   remove_stale_outputs(FieldWriter::collection(out).parent_path(), {"fields.pvd"});
 }
 

@@ -102,6 +102,9 @@ command = ["/usr/bin/python3", "{copy}", "{{scene}}", "--out", "{{out}}", "--qui
 dt = true
 mesh_factor = true
 several_contacts = true
+bending = true
+node_to_surface = true
+loads = true
 ''')
     r = conform(tmp_path, name, methods)
     assert r.returncode == 1, r.stdout + r.stderr

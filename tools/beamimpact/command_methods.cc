@@ -25,6 +25,9 @@ std::string accepted(const Method::Accepts& a) {
   add(a.several_contacts, "several-contacts");
   add(a.timoshenko, "timoshenko");
   add(a.hertz, "hertz");
+  add(a.bending, "bending");
+  add(a.node_to_surface, "node-to-surface");
+  add(a.loads, "loads");
   return s.empty() ? "-" : s;
 }
 

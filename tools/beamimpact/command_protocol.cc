@@ -35,6 +35,7 @@ using namespace verification;
 struct ProtocolArgs {
   std::string method, out, matrix;
   std::vector<std::string> methods;  ///< score: one or more
+  std::vector<std::string> scenes;   ///< conform: the conformance scenes to run (empty: all)
   int jobs = 1;
   double timeout = 600.0;
   std::optional<double> score_timeout;  ///< s per run; the matrix's timeout when not given
@@ -64,13 +65,15 @@ void conform_command(const ProtocolArgs& a) {
     throw SceneError(m.origin, "conform", "'" + m.name + "' is built in; conform checks an external program");
   const fs::path out = a.out.empty() ? fs::path("conform-" + m.name) : fs::path(a.out);
   const OutputLock lock = lock_output(out);
-  const std::vector<RuleResult> results = conform(m, data_folder("conform"), out, a.timeout);
+  const std::vector<RuleResult> results = conform(m, data_folder("conform"), out, a.timeout, a.scenes);
   int failed = 0;
   fmt::print("conform {} ({}):\n", m.name, m.origin);
+  for (const RuleResult& r : results)
+    if (r.skipped) fmt::print("  [n/a ] {:<25} refused (exit 2): {}\n", r.scene, r.message);
   for (const auto& [rule, says] : protocol_rules()) {
     int n = 0, bad = 0;
     for (const RuleResult& r : results)
-      if (r.rule == rule) {
+      if (r.rule == rule && !r.skipped) {
         ++n;
         bad += !r.passed;
       }
@@ -80,8 +83,11 @@ void conform_command(const ProtocolArgs& a) {
     failed += bad;
   }
   write_conform_junit(out / "junit.xml", m.name, results);
-  fmt::print("conform {}: {} check(s), {} broken rule(s)\njunit: {}\n", failed ? "FAILED" : "passed",
-             results.size(), failed, (out / "junit.xml").string());
+  const auto na =
+      std::count_if(results.begin(), results.end(), [](const RuleResult& r) { return r.skipped; });
+  fmt::print("conform {}: {} check(s), {} broken rule(s), {} scene(s) not applicable\njunit: {}\n",
+             failed ? "FAILED" : "passed", results.size() - static_cast<std::size_t>(na), failed, na,
+             (out / "junit.xml").string());
   if (failed) throw CommandExit{1};
 }
 
@@ -167,6 +173,11 @@ void add_protocol_commands(CLI::App& app) {
   c->add_option("NAME", ca->method, "The method (`beamimpact methods`)")->required();
   c->add_option("--out", ca->out, "Output directory (runs/, scenes/, junit.xml; default conform-NAME)");
   c->add_option("--timeout", ca->timeout, "s, per run")->capture_default_str();
+  c->add_option("--scenes", ca->scenes,
+                "The conformance scenes to run, comma-separated (default: all): end_to_end, transverse, "
+                "node_to_surface, oblique_rotation, rigid_friction, two_contacts, friction; the malformed "
+                "scene is always run")
+      ->delimiter(',');
   add_methods_option(c);
   c->callback([ca] { conform_command(*ca); });
 

@@ -2,6 +2,7 @@
 // stand-in external solver (testdata/standin_solver.py) through run, verify and conform, broken
 // copies of it failing conform with the rule named, and bad methods files refused with exit 2.
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -29,9 +30,32 @@ class Protocol : public testing::CliTest {
         "command = [\"/usr/bin/python3\", \"{}/tools/beamimpact/testdata/standin_solver.py\", \"{{scene}}\", "
         "\"--out\", \"{{out}}\", \"--dt\", \"{{dt}}\"{}]\n"
         "check = [\"/usr/bin/python3\", \"-c\", \"import tomllib\"]\n"
-        "accepts = {{ dt = true, rotation = true, rigid = true, several_contacts = true }}\n",
+        "accepts = {{ dt = true, rotation = true, rigid = true, several_contacts = true, bending = true, "
+        "node_to_surface = true, loads = true }}\n",
         name, src_.string(), broken.empty() ? "" : fmt::format(", \"--break\", \"{}\"", broken));
     return f;
+  }
+
+  /// A methods file declaring the shipped example behind testdata/broken_copy.py MODE as `name`
+  /// (it declares everything the example models, bending included).
+  fs::path example_copy(const std::string& name, const std::string& mode) {
+    const fs::path f = tmp_ / (name + ".toml");
+    std::ofstream(f) << fmt::format(
+        "[[method]]\nname = \"{}\"\n"
+        "command = [\"/usr/bin/python3\", \"{}/tools/beamimpact/testdata/broken_copy.py\", \"{}\", "
+        "\"{{scene}}\", "
+        "\"--out\", \"{{out}}\", \"--quiet\", \"--beamimpact\", \"{{beamimpact}}\", \"--dt\", \"{{dt}}\"]\n"
+        "check = [\"sh\", \"-c\", \"/usr/bin/python3 -c 'import scipy'\"]\n"  // a bare name: found on PATH
+        "accepts = {{ dt = true, several_contacts = true, timoshenko = true, bending = true, "
+        "node_to_surface = true, loads = true }}\n",
+        name, src_.string(), mode);
+    return f;
+  }
+
+  /// conform on the given conformance scenes, into tmp_/name.
+  Result conform(const std::string& name, const fs::path& methods, const std::string& scenes) {
+    return run(fmt::format("conform {} --methods '{}' --out '{}' --scenes {}", name, methods.string(),
+                           (tmp_ / name).string(), scenes));
   }
 
   const fs::path src_ = BEAMIMPACT_SOURCE;
@@ -135,6 +159,99 @@ TEST_F(Protocol, ConformPassesTheStandInAndNamesTheRuleABrokenCopyBreaks) {
     EXPECT_NE(junit.find(fmt::format("<failure message=\"{}: ", b.rule)), std::string::npos) << junit;
     EXPECT_NE(junit.find(b.file), std::string::npos) << junit;
   }
+}
+
+// The shipped example passes conform on S1 (end to end); each broken copy of it breaks ONE output
+// rule and conform exits 1 naming that rule and no other output rule. The copies wrap the
+// example's honest run (testdata/broken_copy.py), so every other rule still holds.
+TEST_F(Protocol, EachBrokenCopyOfTheExampleFailsConformWithItsRuleNamed) {
+  if (run("methods").output.find("example    program    runs here") == std::string::npos)
+    GTEST_SKIP() << "the example needs scipy (/usr/bin/python3)";
+  const Result ok = conform("honest", example_copy("honest", "honest"), "end_to_end");
+  ASSERT_EQ(ok.code, 0) << ok.output;
+  EXPECT_NE(ok.output.find("[ ok ] consistency"), std::string::npos) << ok.output;
+  const struct {
+    const char* mode;
+    const char* rule;
+    const char* says;
+  } broken[] = {
+      {"r-x1.5", "consistency", "impulse_normal"},      // history R x 1.5, honest summary
+      {"impulse+10", "consistency", "impulse_normal"},  // summary impulse 10 % above its rows' integral
+      {"times", "times", "strictly increasing"},
+      {"nan", "finite", "column kinetic"},
+      {"incomplete", "complete", "\"complete\": true"},
+      {"sha", "scene sha256", "scene_sha256"},
+      {"ms", "units", " in s"},  // times in ms, units still saying s: the values are checked
+  };
+  std::vector<std::string> output_rules;
+  for (const char* r :
+       {"outputs", "complete", "finite", "times", "summary keys", "units", "scene sha256", "consistency"})
+    output_rules.push_back(r);
+  for (const auto& b : broken) {
+    std::string name = std::string("copy_") + b.mode;
+    for (char& c : name)
+      if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    const Result r = conform(name, example_copy(name, b.mode), "end_to_end");
+    EXPECT_EQ(r.code, 1) << b.mode << "\n" << r.output;
+    EXPECT_NE(r.output.find(fmt::format("[FAIL] {}", b.rule)), std::string::npos) << b.mode << "\n"
+                                                                                  << r.output;
+    EXPECT_NE(r.output.find(b.says), std::string::npos) << b.mode << "\n" << r.output;
+    for (const std::string& other : output_rules)  // only its rule is broken
+      if (other != b.rule)
+        EXPECT_EQ(r.output.find(fmt::format("[FAIL] {}", other)), std::string::npos)
+            << b.mode << " also breaks " << other << "\n"
+            << r.output;
+  }
+}
+
+// `beamimpact run --method` applies the same output rules: an inconsistent run exits 3 naming the
+// rule, the quantity and both values, and leaves no summary.json behind.
+TEST_F(Protocol, RunRefusesAnInconsistentOutsideRunWithExitThree) {
+  if (run("methods").output.find("example    program    runs here") == std::string::npos)
+    GTEST_SKIP() << "the example needs scipy (/usr/bin/python3)";
+  for (const char* mode : {"r-x1.5", "impulse+10", "incomplete"}) {
+    const fs::path out = tmp_ / "run";
+    const Result r = run(
+        fmt::format("run verification/scenes/paper/s1_central.toml --method copy --methods '{}' --out '{}'",
+                    example_copy("copy", mode).string(), out.string()));
+    EXPECT_EQ(r.code, 3) << mode << "\n" << r.output;
+    const std::string rule = std::string(mode) == "incomplete" ? "complete" : "consistency";
+    EXPECT_NE(r.output.find("rule '" + rule + "'"), std::string::npos) << mode << "\n" << r.output;
+    if (rule == "consistency")
+      EXPECT_NE(r.output.find("contacts[0].impulse_normal"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out / "summary.json")) << mode;  // a broken result never looks complete
+    EXPECT_TRUE(fs::exists(out / "summary.rejected.json")) << mode;
+  }
+  const fs::path out = tmp_ / "honest";
+  const Result ok = run(
+      fmt::format("run verification/scenes/paper/s1_central.toml --method honest --methods '{}' --out '{}'",
+                  example_copy("honest", "honest").string(), out.string()));
+  EXPECT_EQ(ok.code, 0) << ok.output;
+  EXPECT_TRUE(fs::exists(out / "summary.json"));
+}
+
+// A narrow solver: a rod-only copy declares bending but refuses a bending scene with exit 2 and one
+// line. conform reports that scene as not applicable and passes; when every scene it ran was
+// refused, conform says so and fails (nothing was checked).
+TEST_F(Protocol, ARodOnlySolverPassesConformWithBendingScenesNotApplicable) {
+  if (run("methods").output.find("example    program    runs here") == std::string::npos)
+    GTEST_SKIP() << "the example needs scipy (/usr/bin/python3)";
+  const fs::path f = example_copy("rods", "rod-only");
+  const Result r = conform("rods", f, "end_to_end,transverse");
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("[n/a ] transverse"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("models rods only"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("1 scene(s) not applicable"), std::string::npos) << r.output;
+  EXPECT_NE(read(tmp_ / "rods" / "junit.xml").find("<skipped message=\"not applicable: rod-only"),
+            std::string::npos);
+  const Result none = run(fmt::format("conform rods --methods '{}' --out '{}' --scenes transverse",
+                                      f.string(), (tmp_ / "none").string()));
+  EXPECT_EQ(none.code, 1) << none.output;
+  EXPECT_NE(none.output.find("every one refused or failed"), std::string::npos) << none.output;
+  const Result bad = run(fmt::format("conform rods --methods '{}' --out '{}' --scenes sideways", f.string(),
+                                     (tmp_ / "bad").string()));
+  EXPECT_EQ(bad.code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--scenes"), std::string::npos) << bad.output;
 }
 
 // Bad methods files: one message naming the file and the key, exit 2, on any subcommand.

@@ -87,6 +87,22 @@ const nlohmann::json* summary_contact(const StoredRun& h, int k) {
   return &s.at("contacts").at(static_cast<std::size_t>(k - 1));
 }
 
+/// The contact entry of a run read from its history alone: its intervals (rows with R above
+/// threshold, merged) and the trapezoid impulse of each (from the open row before to the open row
+/// after, or the `impulse` column's rise over them), impulse_normal the whole running impulse I.
+nlohmann::json contact_from_history(const StoredRun& h, const std::vector<double>& R,
+                                    const std::vector<double>& I, double threshold, double merge_gap) {
+  nlohmann::json c = {{"impulse_normal", I.back()},
+                      {"intervals", nlohmann::json::array()},
+                      {"interval_impulses", nlohmann::json::array()}};
+  for (const Interval& iv : contact_intervals(h.t(), R, threshold, merge_gap)) {
+    const std::size_t lo = iv.first > 0 ? iv.first - 1 : 0, hi = std::min(iv.last + 1, I.size() - 1);
+    c["intervals"].push_back({iv.start, iv.end});
+    c["interval_impulses"].push_back(I[hi] - I[lo]);
+  }
+  return c;
+}
+
 /// Contact intervals from summary.json (the method's own, event-accurate) or else from the rows;
 /// either way, intervals closer than merge_gap seconds are one (the same rule for both runs, so
 /// that counts do not depend on each method's merge rule in steps).
@@ -124,7 +140,7 @@ Norm relative_scalar(std::string name, double a, double b, std::string definitio
 }
 
 void add_contact_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, const Grid& g, int k,
-                       double threshold_rel) {
+                       const CompareOptions& options) {
   const std::string R = contact_column("R", k);
   const std::string sfx = k <= 1 ? "" : "_" + std::to_string(k);
   const auto& Ra = a.column(R);
@@ -150,17 +166,21 @@ void add_contact_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, 
 
   // Scalars. Impulse and contact intervals come from summary.json when the method wrote them
   // (its own integral and event times: exact for adaptive and analytic methods, whose sampled
-  // rows miss closure spikes), else from the rows.
-  const nlohmann::json* sa = summary_contact(a, k);
-  const nlohmann::json* sb = summary_contact(b, k);
+  // rows miss closure spikes), else from the rows; a side read from its history (options) from
+  // the rows whatever its summary says.
+  const double maxRb = *std::max_element(Rb.begin(), Rb.end());
+  const double thr = options.threshold * maxRb;
+  cmp.force_threshold = std::max(cmp.force_threshold, thr);
+  const nlohmann::json ha = contact_from_history(a, Ra, Ia, thr, cmp.merge_gap);
+  const nlohmann::json hb = contact_from_history(b, Rb, Ib, thr, cmp.merge_gap);
+  const nlohmann::json* sa = options.run_from_history ? &ha : summary_contact(a, k);
+  const nlohmann::json* sb = options.reference_from_history ? &hb : summary_contact(b, k);
   const double Ja = sa && sa->contains("impulse_normal") ? sa->at("impulse_normal").get<double>() : Ia.back();
   const double Jb = sb && sb->contains("impulse_normal") ? sb->at("impulse_normal").get<double>() : Ib.back();
   cmp.norms.push_back(relative_scalar("impulse" + sfx, Ja, Jb,
                                       "|J_a - J_b| / |J_b|, J = total normal impulse (N s): summary.json "
-                                      "contacts[].impulse_normal, else int R dt over the rows"));
-  const double maxRb = *std::max_element(Rb.begin(), Rb.end());
-  const double thr = threshold_rel * maxRb;
-  cmp.force_threshold = std::max(cmp.force_threshold, thr);
+                                      "contacts[].impulse_normal, else (or for a side read from its history) "
+                                      "int R dt over the rows"));
   const auto iva = intervals_of(a, sa, Ra, thr, cmp.merge_gap);
   const auto ivb = intervals_of(b, sb, Rb, thr, cmp.merge_gap);
   const std::string rule = fmt::format(
@@ -338,7 +358,14 @@ Comparison compare_runs(const StoredRun& a, const StoredRun& b, const CompareOpt
   if (na != nb)
     cmp.notes.push_back(fmt::format("the run has {} contact(s), the reference {}: compared the first {}", na,
                                     nb, std::min(na, nb)));
-  for (int k = 1; k <= std::min(na, nb); ++k) add_contact_norms(cmp, a, b, g, k, options.threshold);
+  for (int k = 1; k <= std::min(na, nb); ++k) add_contact_norms(cmp, a, b, g, k, options);
+  if (options.run_from_history || options.reference_from_history)
+    cmp.notes.push_back(fmt::format(
+        "impulse, contact intervals and interval impulses of the {} from history.csv (its summary.json not "
+        "trusted for them); final velocities from summary.json (the history has no centre-of-mass velocity)",
+        options.run_from_history && options.reference_from_history ? "run and the reference"
+        : options.run_from_history                                 ? "run"
+                                                                   : "reference"));
   add_final_velocity(cmp, a, b);
   add_energy(cmp, a, b);
   add_energy_drift(cmp, a, b);

@@ -213,6 +213,31 @@ TEST(CompareRuns, SequenceNormsPairIntervalsByStart) {
   EXPECT_EQ(*c.find("impacts")->value, 1.0);
 }
 
+// A run whose rows say R x 1.5 of the reference's half-sine pulse while its summary.json states
+// the reference's impulse and interval. Trusted, its summary gives an impulse error of 0; read
+// from its history (score's option), the error is the rows' 1.5 J / J - 1 = 0.5 and its interval
+// is its rows'. The pulse P sin(pi (t - t0) / D) on [t0, t0 + D] has impulse 2 P D / pi.
+TEST(CompareRuns, ARunReadFromItsHistoryIgnoresWhatItsSummaryClaims) {
+  const double h = 1e-3, T = 2.0, t0 = 0.5, D = 0.4, P = 3.0;
+  auto pulse = [&](double scale) {
+    return [=](double t) { return t > t0 && t < t0 + D ? scale * P * std::sin(kPi * (t - t0) / D) : 0.0; };
+  };
+  const StoredRun b = synthetic(h, T, pulse(1.0));
+  StoredRun a = synthetic(h, T, pulse(1.5));
+  const double J = 2.0 * P * D / kPi;
+  nlohmann::json claim = {{"contacts", {{{"impulse_normal", J}, {"intervals", {{t0, t0 + D}}}}}}};
+  a = StoredRun::from_columns(a.columns(), claim, "claims");
+  EXPECT_NEAR(value(compare_runs(a, b), "impulse"), 0.0, 1e-3);  // trapezoid vs 2 P D / pi: O(h^2)
+  CompareOptions history;
+  history.run_from_history = true;
+  const Comparison c = compare_runs(a, b, history);
+  EXPECT_NEAR(value(c, "impulse"), 0.5, 1e-9);            // both sides' rows: R_a = 1.5 R_b row by row
+  EXPECT_NEAR(value(c, "contact_start"), 0.0, 1.01 * h);  // the rows' first R > 0, as the reference's
+  // Interval impulses from the rows too (the reference, without a summary, read the same way).
+  history.reference_from_history = true;
+  EXPECT_NEAR(value(compare_runs(a, b, history), "impulse_per_impact"), 0.5, 1e-9);
+}
+
 }  // namespace
 }  // namespace beamimpact::verification
 

@@ -18,17 +18,31 @@ struct RuleResult {
   std::string scene;    ///< the conformance scene's name
   std::string file;     ///< the file the verdict is about (history.csv, summary.json, run.log, ...)
   bool passed = false;  ///< true when the rule holds
-  std::string message;  ///< what was found when it does not (and what was expected)
+  std::string message;  ///< what was found when it does not (and what was expected); a refusal's reason
+  /// True for a scene the program refused with exit 2 and a reason (rule "not applicable"): no
+  /// verdict, whatever the method declares.
+  bool skipped = false;
 };
 
-/// @brief The protocol's rules, in checklist order, with one line each (docs/protocol.md).
+/// @brief The conformance scenes' names, for `conform --scenes` (end_to_end, transverse,
+/// node_to_surface, oblique_rotation, rigid_friction, two_contacts, friction).
+const std::vector<std::string>& conform_scene_names();
+
+/// @brief The protocol's rules, in checklist order, with one line each (docs/protocol.md): exit
+/// code, the output rules of api/output_rules.hpp, columns, reason, no summary after failure, same
+/// result twice.
 const std::vector<std::pair<std::string, std::string>>& protocol_rules();
 
 /// @brief Runs the external method `m` on the conformance set and checks every rule.
 /// @param m an external method; @param data_root the folder holding verification/scenes/
+/// A scene the program refuses with exit 2 and one line of reason is not applicable (a
+/// RuleResult with skipped = true), whatever the method declares; only a broken rule fails.
 /// @param out the output directory (runs/, scenes/); @param timeout_seconds per run
+/// @param scenes the conformance scenes to run (conform_scene_names(); empty: all); the malformed
+/// scene is always run. Throws InputError for an unknown name.
 std::vector<RuleResult> conform(const Method& m, const std::filesystem::path& data_root,
-                                const std::filesystem::path& out, double timeout_seconds);
+                                const std::filesystem::path& out, double timeout_seconds,
+                                const std::vector<std::string>& scenes = {});
 
 /// @brief JUnit XML of a conformance check: one test case per rule and run, a failure naming the
 /// rule and the file.

@@ -65,30 +65,31 @@ void conform_command(const ProtocolArgs& a) {
     throw SceneError(m.origin, "conform", "'" + m.name + "' is built in; conform checks an external program");
   const fs::path out = a.out.empty() ? fs::path("conform-" + m.name) : fs::path(a.out);
   const OutputLock lock = lock_output(out);
-  const std::vector<RuleResult> results = conform(m, data_folder("conform"), out, a.timeout, a.scenes);
-  int failed = 0;
+  const ConformResult r{m.name, m.origin, conform(m, data_folder("conform"), out, a.timeout, a.scenes)};
   fmt::print("conform {} ({}):\n", m.name, m.origin);
-  for (const RuleResult& r : results)
-    if (r.skipped) fmt::print("  [n/a ] {:<25} refused (exit 2): {}\n", r.scene, r.message);
+  for (const RuleResult& x : r.results)
+    if (x.skipped) fmt::print("  [n/a ] {:<25} refused (exit 2): {}\n", x.scene, x.message);
   for (const auto& [rule, says] : protocol_rules()) {
     int n = 0, bad = 0;
-    for (const RuleResult& r : results)
-      if (r.rule == rule && !r.skipped) {
+    for (const RuleResult& x : r.results)
+      if (x.rule == rule && !x.skipped) {
         ++n;
-        bad += !r.passed;
+        bad += !x.passed;
       }
     fmt::print("  [{}] {:<25} {} ({} check(s))\n", n == 0 ? "  " : bad ? "FAIL" : " ok ", rule, says, n);
-    for (const RuleResult& r : results)
-      if (r.rule == rule && !r.passed) fmt::print("         {}: {}: {}\n", r.scene, r.file, r.message);
-    failed += bad;
+    for (const RuleResult& x : r.results)
+      if (x.rule == rule && !x.passed && !x.skipped)
+        fmt::print("         {}: {}: {}\n", x.scene, x.file, x.message);
   }
-  write_conform_junit(out / "junit.xml", m.name, results);
-  const auto na =
-      std::count_if(results.begin(), results.end(), [](const RuleResult& r) { return r.skipped; });
-  fmt::print("conform {}: {} check(s), {} broken rule(s), {} scene(s) not applicable\njunit: {}\n",
-             failed ? "FAILED" : "passed", results.size() - static_cast<std::size_t>(na), failed, na,
-             (out / "junit.xml").string());
-  if (failed) throw CommandExit{1};
+  const std::string command =
+      fmt::format("beamimpact conform {} --out {} --timeout {}", m.name, out.string(), a.timeout);
+  write_conform_reports(out, r, command, a.timeout);
+  fmt::print(
+      "conform {}: {} check(s), {} broken rule(s), {} scene(s) not applicable\njunit: {}\nresults: {} "
+      "(page: /usr/bin/python3 reports/render.py conform {})\n",
+      r.passed() ? "passed" : "FAILED", r.checks(), r.broken(), r.not_applicable(),
+      (out / "junit.xml").string(), (out / "conform.json").string(), out.string());
+  if (!r.passed()) throw CommandExit{1};
 }
 
 /// Prints a scored method's rows and its tally; the tally is returned for the summary line.

@@ -137,6 +137,8 @@ TEST_F(Protocol, ConformPassesTheStandInAndNamesTheRuleABrokenCopyBreaks) {
   EXPECT_EQ(ok.code, 0) << ok.output;
   EXPECT_NE(ok.output.find("conform passed"), std::string::npos) << ok.output;
   EXPECT_NE(read(tmp_ / "c" / "junit.xml").find("failures=\"0\""), std::string::npos);
+  // conform.json (the page's data) carries the same verdict as the exit code.
+  EXPECT_NE(read(tmp_ / "c" / "conform.json").find("\"verdict\": \"passed\""), std::string::npos);
   const struct {
     const char* broken;
     const char* rule;
@@ -158,6 +160,7 @@ TEST_F(Protocol, ConformPassesTheStandInAndNamesTheRuleABrokenCopyBreaks) {
     const std::string junit = read(out / "junit.xml");
     EXPECT_NE(junit.find(fmt::format("<failure message=\"{}: ", b.rule)), std::string::npos) << junit;
     EXPECT_NE(junit.find(b.file), std::string::npos) << junit;
+    EXPECT_NE(read(out / "conform.json").find("\"verdict\": \"failed\""), std::string::npos) << b.broken;
   }
 }
 

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <beamimpact/version.hpp>
 #include <nlohmann/json.hpp>
 
 #include <api/accepts.hpp>
@@ -284,6 +285,44 @@ void write_conform_junit(const fs::path& file, const std::string& method,
   }
   x += "  </testsuite>\n</testsuites>\n";
   write_file_atomic(file, x);
+}
+
+int ConformResult::broken() const {
+  return static_cast<int>(std::count_if(results.begin(), results.end(),
+                                        [](const RuleResult& r) { return !r.skipped && !r.passed; }));
+}
+
+int ConformResult::not_applicable() const {
+  return static_cast<int>(
+      std::count_if(results.begin(), results.end(), [](const RuleResult& r) { return r.skipped; }));
+}
+
+int ConformResult::checks() const { return static_cast<int>(results.size()) - not_applicable(); }
+
+void write_conform_reports(const fs::path& dir, const ConformResult& r, const std::string& command,
+                           double timeout_seconds) {
+  write_conform_junit(dir / "junit.xml", r.method, r.results);
+  nlohmann::json rules = nlohmann::json::array(), results = nlohmann::json::array();
+  for (const auto& [rule, says] : protocol_rules()) rules.push_back({{"rule", rule}, {"definition", says}});
+  for (const RuleResult& x : r.results)
+    results.push_back({{"rule", x.rule},
+                       {"scene", x.scene},
+                       {"file", x.file},
+                       {"passed", x.passed},
+                       {"not_applicable", x.skipped},
+                       {"message", x.message}});
+  const nlohmann::json j = {
+      {"method", r.method},
+      {"origin", r.origin},
+      {"command", command},
+      {"version", kVersion},
+      {"made", utc_now()},
+      {"timeout_seconds", timeout_seconds},
+      {"verdict", r.passed() ? "passed" : "failed"},
+      {"rules", rules},
+      {"results", results},
+      {"counts", {{"checks", r.checks()}, {"broken", r.broken()}, {"not_applicable", r.not_applicable()}}}};
+  write_file_atomic(dir / "conform.json", j.dump(1) + "\n");
 }
 
 }  // namespace beamimpact::verification

@@ -49,4 +49,27 @@ std::vector<RuleResult> conform(const Method& m, const std::filesystem::path& da
 void write_conform_junit(const std::filesystem::path& file, const std::string& method,
                          const std::vector<RuleResult>& results);
 
+/// @brief What a conformance check found, and its one verdict: passed when no rule is broken (a
+/// scene refused with exit 2 and a reason is not applicable, not a check).
+struct ConformResult {
+  std::string method;  ///< the method checked
+  std::string origin;  ///< the methods file that declared it
+  std::vector<RuleResult> results;
+  /// @brief Checks that broke a rule.
+  int broken() const;
+  /// @brief Scenes the program refused with exit 2 and a reason.
+  int not_applicable() const;
+  /// @brief Checks made (results less the not-applicable scenes).
+  int checks() const;
+  /// @brief True when no rule is broken.
+  bool passed() const { return broken() == 0; }
+};
+
+/// @brief Writes dir/junit.xml and dir/conform.json (the rules, every result, the counts and how
+/// it was made: the data of the page `reports/render.py conform DIR` renders).
+/// @param dir the conform output folder; @param r the result; @param command the command line
+/// @param timeout_seconds the time limit per run it was made with
+void write_conform_reports(const std::filesystem::path& dir, const ConformResult& r,
+                           const std::string& command, double timeout_seconds);
+
 }  // namespace beamimpact::verification

@@ -68,6 +68,18 @@ TEST_F(Score, ExitsZeroWhenEveryQuantityPassesAndOneWhenOneFails) {
   EXPECT_NE(fail.output.find("finished earlier"), std::string::npos) << fail.output;
 }
 
+TEST_F(Score, ARefusedSceneIsNotApplicableAndRunsNoReference) {
+  // The example takes no rigid body: it refuses the rod on a rigid wall (exit 2 with its reason),
+  // and the scene's exact reference is never run.
+  const fs::path cards = s1_card(tmp_ / "c", 0.04, "verification/scenes/benchmarks/rod_on_wall.toml");
+  const CliResult r = run(fmt::format("score example --cards {} --sets paper --out {} --cache {}",
+                                      cards.string(), (tmp_ / "out").string(), (tmp_ / "cache").string()));
+  EXPECT_EQ(r.code, 0) << r.output;  // a refusal is no failure; the verdict line counts it
+  EXPECT_NE(r.output.find("1 not applicable"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("0 reference run(s)"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(tmp_ / "cache/rod_on_wall.exact")) << r.output;
+}
+
 TEST_F(Score, BadInputExitsTwo) {
   EXPECT_EQ(score(s1_card(tmp_ / "c", 0.04), " --rungs 2").code, 2);
   EXPECT_EQ(run("score paper --sets papers --out " + (tmp_ / "o").string()).code, 2);

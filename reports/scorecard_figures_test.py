@@ -21,8 +21,10 @@ def test_one_diagram_per_scene_with_a_set_and_idempotent(tmp_path):
     out = tmp_path / "score"
     # The paper's scenes only, against IDA as the matrix writes it (converged IDA on S4 costs minutes
     # of CPU): this test is about the figures, the references' choice has its own tests.
-    subprocess.run([EXE, "score", "paper", "--out", str(out), "--jobs", "2", "--sets", "paper", "--references", "matrix"],
-                   cwd=ROOT, check=True, capture_output=True)
+    # Exit 1 is a scorecard whose verdict failed: still a scorecard to draw.
+    r = subprocess.run([EXE, "score", "paper", "--out", str(out), "--jobs", "2", "--sets", "paper", "--references",
+                        "matrix", "--cache", str(tmp_path / "cache")], cwd=ROOT, capture_output=True, text=True)
+    assert r.returncode in (0, 1), r.stderr
     paper = {f[:-5] for f in os.listdir(os.path.join(ROOT, "verification", "scenes", "paper")) if f.endswith(".toml")}
     sets = {d for d in os.listdir(os.path.join(ROOT, "reports", "work_precision"))
             if d in paper and os.path.isfile(os.path.join(ROOT, "reports", "work_precision", d, "work_precision.json"))}
@@ -51,9 +53,10 @@ def test_score_refuses_unknown_sets_matrix_references_for_ida_and_no_time(tmp_pa
 
 def test_several_methods_share_their_references(tmp_path):
     out = tmp_path / "score"
+    cache = tmp_path / "cache"
     r = subprocess.run([EXE, "score", "paper", "example", "--sets", "exact", "--references", "matrix", "--out", str(out),
-                        "--jobs", "2"], cwd=ROOT, capture_output=True, text=True)
-    assert r.returncode == 0, r.stderr
+                        "--jobs", "2", "--no-ladder", "--cache", str(cache)], cwd=ROOT, capture_output=True, text=True)
+    assert r.returncode in (0, 1), r.stderr
     cards = {}
     for m in ("paper", "example"):
         with open(out / m / "scorecard.json") as f:
@@ -61,6 +64,6 @@ def test_several_methods_share_their_references(tmp_path):
         assert cards[m]["method"] == m and "paper example" in cards[m]["command"]
     refs = {(s["scene"], s["reference"]) for c in cards.values() for s in c["scenes"]}
     assert all(s["reference_kind"] == "exact" for c in cards.values() for s in c["scenes"])
-    # The eight exact-answer scenes' references, each run once for both scorecards.
+    # The eight exact-answer scenes' references, each run once for both scorecards, in the cache.
     assert len(refs) == len(cards["paper"]["scenes"]) == 8
-    assert len([d for d in os.listdir(out / "runs") if d.endswith(".exact")]) == 8
+    assert len([d for d in os.listdir(cache) if d.endswith(".exact")]) == 8

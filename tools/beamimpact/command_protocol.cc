@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <optional>
@@ -15,6 +16,7 @@
 #include <beamimpact/version.hpp>
 #include <solver/scene/SceneError.hpp>
 #include <solver/util/InputError.hpp>
+#include <verification/matrix/cards.hpp>
 #include <verification/matrix/conform.hpp>
 #include <verification/matrix/execute_jobs.hpp>
 #include <verification/matrix/interruption.hpp>
@@ -33,12 +35,12 @@ namespace fs = std::filesystem;
 using namespace verification;
 
 struct ProtocolArgs {
-  std::string method, out, matrix;
+  std::string method, out, cards, cache, baseline;
   std::vector<std::string> methods;  ///< score: one or more
   std::vector<std::string> scenes;   ///< conform: the conformance scenes to run (empty: all)
   int jobs = 1;
   double timeout = 600.0;
-  std::optional<double> score_timeout;  ///< s per run; the matrix's timeout when not given
+  std::optional<double> score_timeout;  ///< s per run; 900 when not given
   ScoreOptions score;
 };
 
@@ -92,27 +94,83 @@ void conform_command(const ProtocolArgs& a) {
   if (!r.passed()) throw CommandExit{1};
 }
 
-/// Prints a scored method's rows and its tally; the tally is returned for the summary line.
-std::string print_score(const std::vector<ScoreRow>& rows) {
-  std::map<std::string, int> counts;
+/// Prints a scored method's rows.
+void print_score(const std::vector<ScoreRow>& rows) {
+  const auto g3 = [](const std::optional<double>& v) { return v ? fmt::format("{:.3g}", *v) : "-"; };
   for (const ScoreRow& r : rows) {
-    fmt::print("{:<26} {:<14} {:>8.3f} s  vs {}\n", r.item->run.scene_name(), status_name(r.outcome.status),
-               r.outcome.solver_seconds, r.item->reference.settings_label());
+    fmt::print("{:<26} {:<14} {:>8.3f} s  vs {}{}\n", r.item->run.scene_name(), status_name(r.outcome.status),
+               r.outcome.solver_seconds, r.item->reference.settings_label(),
+               r.item->ladder.kind.empty() ? "" : "; ladder " + r.item->ladder.kind);
     for (const ScoreQuantity& q : r.quantities) {
-      ++counts[q.status];
-      const auto g3 = [](const std::optional<double>& v) { return v ? fmt::format("{:.3g}", *v) : "-"; };
-      fmt::print("    {:<16} error {:<10} spread {:<10} tol {:<8} {}\n", q.metric, g3(q.error),
-                 g3(q.reference_spread), g3(q.tol), q.status);
+      const std::string order =
+          q.ladder && q.ladder->order ? fmt::format(" order {:.2g}", *q.ladder->order) : "";
+      fmt::print("    {:<16} {:<11} error {:<10} +- {:<10} tol {:<8} {}{}\n", q.metric, q.judged, g3(q.error),
+                 g3(q.uncertainty), g3(q.tol), q.status, order);
     }
   }
-  std::string tally;
-  for (const auto& [status, n] : counts)
-    tally += fmt::format("{}{} {}", tally.empty() ? "" : ", ", n, status);
-  return tally;
 }
 
-/// Scores one method or several: every run (a reference shared by several methods once) in one
-/// set of jobs under DIR/runs; one method's scorecard in DIR, several methods' in DIR/NAME.
+/// The folder of cached references: --cache, else $BEAMIMPACT_REFERENCE_CACHE, else
+/// $XDG_CACHE_HOME/beamimpact/references, else ~/.cache/beamimpact/references.
+fs::path reference_cache(const std::string& option) {
+  if (!option.empty()) return fs::absolute(option);
+  if (const char* e = std::getenv("BEAMIMPACT_REFERENCE_CACHE"); e && *e) return fs::absolute(e);
+  if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return fs::path(x) / "beamimpact/references";
+  if (const char* h = std::getenv("HOME"); h && *h) return fs::path(h) / ".cache/beamimpact/references";
+  return fs::absolute(".beamimpact-cache/references");
+}
+
+/// Prints the ratchet against a baseline scorecard; returns 1 when an error grew, else 0.
+int print_ratchet(const std::string& baseline, const std::string& method, const ScoreOptions& o,
+                  const std::vector<ScoreRow>& rows) {
+  const Ratchet r = ratchet(baseline, method, o, rows);
+  for (const std::string& g : r.improved) fmt::print("  improved: {}\n", g);
+  for (const std::string& g : r.grown) fmt::print("  GROWN:    {}\n", g);
+  fmt::print("ratchet against {}: {} ({} grown beyond their uncertainty, {} improved)\n", baseline,
+             r.grown.empty() ? "passed" : "FAILED", r.grown.size(), r.improved.size());
+  return r.grown.empty() ? 0 : 1;
+}
+
+/// Every distinct run the items need from `pick`, in order.
+template <class F>
+std::vector<JobSpec> distinct(const std::vector<std::vector<ScoreItem>>& items, F pick) {
+  std::vector<JobSpec> specs;
+  std::set<std::string> seen;
+  for (const auto& list : items)
+    for (const ScoreItem& it : list)
+      for (const JobSpec& s : pick(it))
+        if (seen.insert(s.key()).second) specs.push_back(s);
+  return specs;
+}
+
+/// Phase 2: the references (and their checks) of the items whose every run finished, in the
+/// cache (a reference recorded there with the same input is taken, not run again).
+void run_references(const std::vector<std::vector<ScoreItem>>& items, std::map<std::string, JobOutcome>& runs,
+                    const fs::path& cache, int jobs, double timeout) {
+  const auto ok = [&](const JobSpec& s) {
+    const auto it = runs.find(s.key());
+    return it != runs.end() && it->second.status == JobOutcome::Status::kOk;
+  };
+  const std::vector<JobSpec> refs = distinct(items, [&](const ScoreItem& it) {
+    std::vector<JobSpec> out;
+    const bool finished = ok(it.run) && std::all_of(it.ladder.rungs.begin(), it.ladder.rungs.end(), ok);
+    if (finished) out.push_back(it.reference);
+    if (finished && it.reference_check) out.push_back(*it.reference_check);
+    return out;
+  });
+  fmt::print(stderr,
+             "score: phase 2 of 2: {} reference run(s) of the scenes the method(s) ran, cached in {}\n",
+             refs.size(), cache.string());
+  Launcher cached = launcher();
+  cached.reuse_finished = true;
+  for (auto& [key, o] : execute_jobs(refs, cache, cached, jobs, timeout))
+    runs.insert_or_assign(key, std::move(o));
+}
+
+/// Scores one method or several: phase 1 the methods' runs (ladders included) under DIR/runs,
+/// phase 2 the references of the scenes they ran, in the reference cache; one method's
+/// scorecard in DIR, several methods' in DIR/NAME. Exit 0 when every scorecard passed and no
+/// error grew since --baseline, 1 otherwise, 2 for bad input, 130 on interruption.
 void score_command(const ProtocolArgs& a) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<const Method*> ms;
@@ -125,42 +183,54 @@ void score_command(const ProtocolArgs& a) {
   if (a.score_timeout && !(*a.score_timeout > 0.0))
     throw InputError("command line", "--timeout",
                      fmt::format("expected seconds > 0, got {}", *a.score_timeout));
+  if (!a.baseline.empty() && ms.size() != 1)
+    throw InputError("command line", "--baseline", "expected one method with a baseline scorecard");
   const fs::path root = data_folder("score");
-  const VerificationMatrix matrix =
-      VerificationMatrix::load(a.matrix.empty() ? root / "verification/matrix.toml" : fs::path(a.matrix));
+  const std::vector<BenchmarkCard> cards =
+      load_cards(a.cards.empty() ? root / "verification/cards.toml" : fs::path(a.cards), root);
   std::vector<std::vector<ScoreItem>> items;
-  std::vector<JobSpec> specs;
-  std::set<std::string> seen;
-  for (const Method* m : ms) {
-    items.push_back(score_items(matrix, m->name, root, a.score));
-    for (const ScoreItem& it : items.back())
-      for (const JobSpec* s : {&it.run, &it.reference, it.reference_check ? &*it.reference_check : nullptr})
-        if (s && seen.insert(s->key()).second) specs.push_back(*s);
-  }
+  for (const Method* m : ms) items.push_back(score_items(cards, *m, a.score));
+  const std::vector<JobSpec> own = distinct(items, [](const ScoreItem& it) {
+    return it.ladder.rungs.empty() ? std::vector<JobSpec>{it.run} : it.ladder.rungs;
+  });
   const std::string names = fmt::format("{}", fmt::join(a.methods, " "));
   const fs::path out =
       a.out.empty() ? fs::path("score-" + fmt::format("{}", fmt::join(a.methods, "-"))) : fs::path(a.out);
+  const fs::path cache = reference_cache(a.cache);
   const OutputLock lock = lock_output(out);
   forward_interruptions();
-  fmt::print(stderr, "score {}: {} scene(s) of {}, {} run(s), {} job(s); reference where no exact: {}\n",
-             names, items.front().size(), fmt::join(a.score.sets, ", "), specs.size(), a.jobs,
-             ida_reference(a.score));
-  const double timeout = a.score_timeout.value_or(matrix.timeout);
-  const auto runs = execute_jobs(specs, out / "runs", launcher(), a.jobs, timeout);
+  fmt::print(stderr, "score {}: {} scene(s) of {}; {}; phase 1 of 2: {} run(s) of the method(s), {} job(s)\n",
+             names, items.front().size(), fmt::join(a.score.sets, ", "),
+             a.score.ladder
+                 ? fmt::format("a ladder of {} rungs on each scene with an exact answer", a.score.rungs)
+                 : std::string("single resolution (--no-ladder)"),
+             own.size(), a.jobs);
+  const double timeout = a.score_timeout.value_or(900.0);
+  std::map<std::string, JobOutcome> runs = execute_jobs(own, out / "runs", launcher(), a.jobs, timeout);
+  if (!interruption()) run_references(items, runs, cache, a.jobs, timeout);
   const std::string command =
-      fmt::format("beamimpact score {} --out {} --jobs {} --sets {} --references {} --timeout {}", names,
-                  out.string(), a.jobs, fmt::join(a.score.sets, ","), a.score.references, timeout);
+      fmt::format("beamimpact score {} --out {} --jobs {} --sets {} --references {} --timeout {}{}", names,
+                  out.string(), a.jobs, fmt::join(a.score.sets, ","), a.score.references, timeout,
+                  a.score.ladder ? fmt::format(" --rungs {}", a.score.rungs) : std::string(" --no-ladder"));
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  int exit_code = 0;
   for (std::size_t i = 0; i < ms.size(); ++i) {
     const std::vector<ScoreRow> rows = score_rows(items[i], runs);
+    const ScoreVerdict v = score_verdict(ms[i]->name, rows);
     const fs::path dir = ms.size() == 1 ? out : out / ms[i]->name;
     write_scorecard(
-        dir, ScoreContext{ms[i]->name, ms[i]->origin, command, kVersion, utc_now(), wall, a.score}, rows);
-    const std::string tally = print_score(rows);
-    fmt::print("score {}: {}\nscorecard: {} {}\n", ms[i]->name, tally, (dir / "scorecard.json").string(),
-               (dir / "scorecard.html").string());
+        dir,
+        ScoreContext{ms[i]->name, ms[i]->origin, command, kVersion, utc_now(), wall, a.score, cache.string()},
+        rows, v);
+    print_score(rows);
+    fmt::print("scorecard: {} {}\nreference cache: {}\n{}\n", (dir / "scorecard.json").string(),
+               (dir / "scorecard.html").string(), cache.string(), v.line);
+    exit_code = std::max(exit_code, v.exit_code);
+    if (!a.baseline.empty())
+      exit_code = std::max(exit_code, print_ratchet(a.baseline, ms[i]->name, a.score, rows));
   }
   if (interruption()) throw CommandExit{interrupted_exit_code()};
+  if (exit_code != 0) throw CommandExit{exit_code};
 }
 
 }  // namespace
@@ -185,8 +255,9 @@ void add_protocol_commands(CLI::App& app) {
   auto sa = std::make_shared<ProtocolArgs>();
   CLI::App* s = app.add_subcommand(
       "score",
-      "Score a method on the benchmark set against the best reference of each scene: scorecard.json and "
-      "scorecard.html");
+      "Score a method on the benchmark set under each scene's benchmark card: scorecard.json, "
+      "scorecard.html and a verdict (exit 0 passed, 1 failed or an error grew since --baseline, 2 bad "
+      "input)");
   s->add_option("NAME", sa->methods,
                 "The method (`beamimpact methods`), or several: their runs in one set of jobs, a reference "
                 "they share run once, each scorecard in DIR/NAME")
@@ -195,11 +266,11 @@ void add_protocol_commands(CLI::App& app) {
       "--out", sa->out,
       "Output directory (runs/, scorecard.json, scorecard.html, or NAME/ for each of several methods; "
       "default score-NAME)");
-  s->add_option("--matrix", sa->matrix,
-                "The verification matrix giving references and tolerances "
-                "(default verification/matrix.toml)");
+  s->add_option("--cards", sa->cards,
+                "The benchmark cards giving each scene's reference and tolerances (default "
+                "verification/cards.toml; docs/benchmark-cards.md)");
   s->add_option("--jobs", sa->jobs, "Runs in parallel")->capture_default_str();
-  s->add_option("--timeout", sa->score_timeout, "s per run (default: the matrix's timeout)");
+  s->add_option("--timeout", sa->score_timeout, "s per run (default 900)");
   s->add_option(
        "--sets", sa->score.sets,
        "Scene sets scored: paper (verification/scenes/paper), hard (verification/scenes/hard), exact "
@@ -207,9 +278,20 @@ void add_protocol_commands(CLI::App& app) {
       ->delimiter(',')
       ->capture_default_str();
   s->add_option("--references", sa->score.references,
-                "IDA references: converged (rtol 1e-10, atol 1e-13, penalty 1e4 EA/le) or matrix (the matrix "
-                "case's settings: quicker, less strict; not for IDA itself)")
+                "IDA references: converged (rtol 1e-10, atol 1e-13, penalty 1e4 EA/le) or matrix (the card's "
+                "settings: quicker, less strict; not for IDA itself)")
       ->capture_default_str();
+  s->add_flag("--no-ladder{false}", sa->score.ladder,
+              "One run a scene at its own resolution (no ladder on the scenes with an exact answer); the "
+              "scorecard says so");
+  s->add_option("--rungs", sa->score.rungs, "Runs of a ladder, 3 to 6 (resolution x2 a rung)")
+      ->capture_default_str();
+  s->add_option("--cache", sa->cache,
+                "Folder of cached reference runs (default $BEAMIMPACT_REFERENCE_CACHE, else "
+                "$XDG_CACHE_HOME/beamimpact/references, else ~/.cache/beamimpact/references)");
+  s->add_option("--baseline", sa->baseline,
+                "An earlier scorecard.json of the same method and sets: exit 1 when an error grew beyond its "
+                "uncertainty since (the accuracy ratchet); improvements are listed");
   add_methods_option(s);
   s->callback([sa] { score_command(*sa); });
 }

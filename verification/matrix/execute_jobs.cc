@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <fstream>
 #include <mutex>
 #include <thread>
@@ -160,12 +161,20 @@ std::map<std::string, JobOutcome> execute_jobs(const std::vector<JobSpec>& specs
   std::mutex mu;
   std::atomic<std::size_t> next{0};
   std::size_t done = 0;
+  const auto start = std::chrono::steady_clock::now();
   auto worker = [&] {
     for (std::size_t i = next++; i < order.size(); i = next++) {
       const std::string skip = interruption() ? "not started: interrupted" : why[i];
       JobOutcome o = execute_job(order[i], out_dir / order[i].key(), launcher, skip, timeout_seconds);
       std::lock_guard lock(mu);
-      fmt::print(stderr, "{}", progress_line(++done, order.size(), o));
+      std::string line = progress_line(++done, order.size(), o);
+      if (done < order.size()) {  // the time left if the rest take as long as these did on average
+        const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        line.insert(line.size() - 1,
+                    fmt::format("; about {:.0f} s left", spent / static_cast<double>(done) *
+                                                             static_cast<double>(order.size() - done)));
+      }
+      fmt::print(stderr, "{}", line);
       std::fflush(stderr);
       out.emplace(o.spec.key(), std::move(o));
     }

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <api/methods_file.hpp>
+#include <api/registry.hpp>
 #include <beamimpact/version.hpp>
 #include <solver/util/sha256.hpp>
 #include <solver/util/write_file_atomic.hpp>
@@ -36,7 +37,11 @@ std::optional<nlohmann::json> read_record(const fs::path& file, const nlohmann::
 }
 
 nlohmann::json run_input(const JobSpec& spec) {
-  return {{"program", program_input()},
+  nlohmann::json program = program_input();
+  // A built-in method's run depends on no methods file: its record (and `score`'s reference
+  // cache) holds whichever files a command loaded.
+  if (const Method* m = find_method(spec.method); m && m->in_process()) program.erase("methods_files");
+  return {{"program", program},
           {"scene", spec.scene.string()},
           {"scene_sha256", file_sha256(spec.scene)},
           {"method", spec.method},

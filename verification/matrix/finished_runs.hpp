@@ -23,7 +23,8 @@ namespace beamimpact::verification {
 /// @brief What every result depends on: {"version": `beamimpact --version`, "program_sha256":
 /// the SHA-256 of the program's own bytes (program_id.hpp: the build, not only its version
 /// string, which is the same for every build of an edited tree), "methods_files": [{"file",
-/// "sha256"}, ...]} of the methods files this process loaded.
+/// "sha256"}, ...]} of the methods files this process loaded. `beamimpact score` keys its
+/// reference cache on it too.
 nlohmann::json program_input();
 
 /// @brief Writes {"input": input, "result": result} to file, atomically (write_file_atomic).

@@ -1,13 +1,13 @@
 #pragma once
 /// @file scorecard.hpp
-/// @brief A method's scorecard on the benchmark set (docs/protocol.md): the paper's scenes, the
-/// hard scenes and every scene with an exact answer, each run compared with the best reference
-/// (exact where the matrix has one, else IDA converged beyond its defaults: time tolerances 100
-/// times tighter, penalty 10 times stiffer, friction regularised at 1e-5 m/s) under the matrix's
-/// own tolerances. Every method meets the same reference on a scene, and IDA is never scored
-/// against its own run. A converged IDA reference comes with its own uncertainty: the spread
-/// between it and the same run at the case's penalty, and a verdict the spread could reverse is
-/// "reference uncertain", not pass or fail.
+/// @brief A method's scorecard on the benchmark set (docs/protocol.md, docs/benchmark-cards.md):
+/// every scene of the chosen sets scored under its benchmark card (verification/cards.toml), the
+/// same reference, quantities and tolerances for every method. On a scene with an exact answer
+/// the method runs a resolution ladder (ladder.hpp) and each gated scalar's extrapolated limit is
+/// judged against the exact value; elsewhere its one run is compared with IDA converged beyond
+/// its defaults (time tolerances 100 times tighter, penalty 10 times stiffer, friction
+/// regularised at 1e-5 m/s), whose spread against the same run at the card's penalty is the
+/// reference's own uncertainty.
 
 #include <filesystem>
 #include <map>
@@ -15,33 +15,41 @@
 #include <string>
 #include <vector>
 
-#include <verification/matrix/VerificationMatrix.hpp>
+#include <nlohmann/json.hpp>
+
+#include <api/registry.hpp>
+#include <verification/matrix/cards.hpp>
 #include <verification/matrix/evaluate.hpp>
+#include <verification/matrix/ladder.hpp>
 
 namespace beamimpact::verification {
 
-/// @brief One benchmark scene: the method's run, its reference and the quantities compared.
+/// @brief One benchmark scene as scored for one method.
 struct ScoreItem {
-  JobSpec run, reference;
-  /// The reference's uncertainty check: a converged IDA reference at the case's own penalty
-  /// (kn_factor 1e3 unless the case sets kn or kn_factor); none for an exact reference or with
-  /// matrix references.
+  JobSpec run;        ///< the method at the scene's own settings
+  LadderPlan ladder;  ///< rungs (rungs[0] == run) on a scene with an exact answer; none with --no-ladder
+  JobSpec reference;
+  /// The reference's uncertainty check: a converged IDA reference at the card's own penalty; none
+  /// for an exact reference or with matrix references.
   std::optional<JobSpec> reference_check;
   std::string reference_kind;  ///< "exact" or "ida" (its settings in reference.set)
-  std::vector<Gate> gates;     ///< the matrix case's gates (tol and why); none: errors reported only
-  std::string source;          ///< the matrix case the reference and tolerances come from ("" none)
+  std::vector<Gate> gates;     ///< the card's quantities (tol and why)
+  std::string source;          ///< the matrix row the card's tolerances come from ("" derived)
+  std::string set;             ///< the card's scene set
 };
 
-/// @brief What `beamimpact score` scores, and against which IDA.
+/// @brief What `beamimpact score` scores, and how.
 struct ScoreOptions {
   /// Scene sets, in this order: "paper" (verification/scenes/paper), "hard"
-  /// (verification/scenes/hard), "exact" (every other scene the matrix compares with exact).
+  /// (verification/scenes/hard), "exact" (the other scenes with an exact answer).
   std::vector<std::string> sets = {"paper", "hard", "exact"};
-  /// "converged": an IDA reference is converged beyond its defaults (rtol 1e-10, atol 1e-13,
-  /// kn_factor 1e4, friction_velocity 1e-5 m/s, keeping the case's own settings) and checked
-  /// against itself at the case's penalty; "matrix": the matrix case's IDA settings as
-  /// written (quicker, less strict; refused for IDA's own scorecard, which would score itself).
+  /// "converged": an IDA reference is converged beyond the card's settings (rtol 1e-10, atol
+  /// 1e-13, kn_factor 1e4, friction_velocity 1e-5 m/s) and checked against itself at the card's
+  /// penalty; "matrix": the card's IDA settings as written (quicker, less strict; refused for
+  /// IDA's own scorecard, which would score itself).
   std::string references = "converged";
+  bool ladder = true;  ///< false (--no-ladder): one run a scene, its error judged under the card
+  int rungs = 3;       ///< runs of a ladder (>= 3)
 
   /// @brief Throws InputError naming the option and the values allowed.
   /// @param method the scored method ("ida" may not take matrix references)
@@ -51,58 +59,101 @@ struct ScoreOptions {
 /// @brief The IDA reference of `o`, in words (the scorecard page and the terminal say it).
 std::string ida_reference(const ScoreOptions& o);
 
-/// @brief The benchmark set for `method`: the scenes of `options.sets`; for each, the matrix case
-/// giving the best reference (exact before IDA) and its tolerances, preferring a case of the
-/// method itself, then one of the paper integrator (whose run settings are taken only for the
-/// method itself). A scene with no such case is compared with IDA, without tolerances.
-/// @param matrix the verification matrix (references and tolerances)
-/// @param method the scored method
-/// @param data_root the folder holding verification/scenes
-/// @param options the scene sets and the kind of IDA reference (validated here)
-std::vector<ScoreItem> score_items(const VerificationMatrix& matrix, const std::string& method,
-                                   const std::filesystem::path& data_root, const ScoreOptions& options = {});
+/// @brief The benchmark set for `method`: one item per card of `options.sets`, in set order and
+/// the cards' order within a set; the card's reference and quantities whatever the method's name.
+/// @param cards the benchmark cards (load_cards)
+/// @param method the scored method (its Accepts choose the ladder)
+/// @param options the scene sets, the kind of IDA reference and the ladder (validated here)
+std::vector<ScoreItem> score_items(const std::vector<BenchmarkCard>& cards, const Method& method,
+                                   const ScoreOptions& options = {});
 
 /// @brief One quantity of a scored scene.
 struct ScoreQuantity {
   std::string metric;
+  /// The error in the norm's unit: of the ladder's limit against the exact value (judged =
+  /// "limit"), else of the run against the reference.
   std::optional<double> error, tol;
-  /// The reference's own uncertainty in this quantity: |reference - reference_check| (same norm
-  /// as error); none without a check or when the check did not finish.
-  std::optional<double> reference_spread;
-  std::string status;  ///< "pass" | "fail" | "reference uncertain" | "not applicable" | "failed" |
-                       ///< "skipped" | "no tolerance"
-  std::string note;    ///< the tolerance's reason, or why there is no value
+  /// The error's own uncertainty, same unit: the limit's (ladder.hpp) or the reference's spread
+  /// (|reference - reference_check|); none when unknown, 0 against an exact reference.
+  std::optional<double> uncertainty;
+  std::string status;  ///< "pass" | "fail" | "not converged" | "reference uncertain" | "not applicable" |
+                       ///< "failed" | "skipped"
+  std::string note;    ///< the tolerance's reason, or why the verdict is what it is
+  /// "limit" (the ladder's extrapolation), "finest rung" (a quantity with no scalar value on a
+  /// ladder: the finest run's error), "single run" (no ladder); "" when not judged.
+  std::string judged;
+  std::optional<LadderResult> ladder;  ///< the rungs' values, order, limit (judged == "limit")
+  std::optional<double> exact;         ///< the reference's value of a scalar quantity
+  std::optional<double> allowed;       ///< judged == "limit": 1.25 U + tol / 10, what the error may reach
 };
 
 /// @brief A scored scene.
 struct ScoreRow {
   const ScoreItem* item = nullptr;
-  JobOutcome outcome;  ///< the method's run
+  JobOutcome outcome;             ///< the method's run at the scene's settings
+  std::vector<JobOutcome> rungs;  ///< every rung's outcome (rungs[0] == outcome) on a ladder
   std::vector<ScoreQuantity> quantities;
 };
 
-/// @brief The verdict on one quantity under a tolerance, given the reference's uncertainty: "pass"
-/// if error + spread <= tol and "fail" if error - spread > tol (the same verdict whatever the
-/// reference's own error within its spread); else "reference uncertain" (the reference cannot
-/// decide at this tolerance).
+/// @brief The relative slack of every tolerance comparison: 4 ulps (4 x 2^-52) of the largest
+/// number compared (the tolerance, the error, or the compared values themselves: a contact_end
+/// of 2.55 s carries round-off of 4.4e-16 s), so that round-off never decides a verdict.
+double tolerance_slack(double tol, double error, double scale);
+
+/// @brief The verdict on one quantity under a tolerance, given its uncertainty: "pass" if
+/// error + spread <= tol and "fail" if error - spread > tol, each with tolerance_slack; else
+/// "reference uncertain" (the reference cannot decide at this tolerance).
 /// @param error the run's error against the reference
 /// @param tol the tolerance (same norm)
 /// @param spread the reference's uncertainty (same norm); none: the reference is taken as exact
-std::string verdict(double error, double tol, std::optional<double> spread);
+/// @param scale the largest value the error was computed from (0: the error and tol only)
+std::string verdict(double error, double tol, std::optional<double> spread, double scale = 0.0);
 
-/// @brief Compares each finished run with its reference (compare_runs, check_gate).
+/// @brief Compares each finished run (and ladder) with its reference (compare_runs, run first).
+/// `runs` holds the outcomes by JobSpec::key(); a reference absent from it was not run (the
+/// method's run did not finish).
 std::vector<ScoreRow> score_rows(const std::vector<ScoreItem>& items,
                                  const std::map<std::string, JobOutcome>& runs);
+
+/// @brief The overall verdict of a scorecard: exit code 0 when every quantity passed (a scene
+/// the method refused counts as not applicable, said in the line), 1 when any did not (fail, not
+/// converged, failed, or undecided: reference uncertain, skipped).
+struct ScoreVerdict {
+  int exit_code = 0;
+  std::string line;                   ///< "score NAME: PASSED ..." or "score NAME: FAILED ..."
+  std::map<std::string, int> counts;  ///< quantities by status
+};
+
+/// @brief The overall verdict of rows for method `name`.
+ScoreVerdict score_verdict(const std::string& name, const std::vector<ScoreRow>& rows);
+
+/// @brief The accuracy ratchet against an earlier scorecard.json of the same method, sets and
+/// ladder setting: a quantity's error grew when it exceeds the baseline's by more than the
+/// larger of the two uncertainties (plus tolerance_slack); improved when it fell by as much.
+struct Ratchet {
+  std::vector<std::string> grown, improved;  ///< "scene metric: 0.01 -> 0.02 (uncertainty 0)"
+};
+
+/// @brief Compares rows with a baseline scorecard. Throws InputError (file, key, expected) for a
+/// baseline that is not a scorecard, or of another method, set list or ladder setting.
+Ratchet ratchet(const std::filesystem::path& baseline_file, const std::string& method,
+                const ScoreOptions& options, const std::vector<ScoreRow>& rows);
 
 /// @brief What the scorecard says about how it was made.
 struct ScoreContext {
   std::string method, origin, command, version, made;
   double wall_seconds = 0.0;
   ScoreOptions options;  ///< written into scorecard.json and the page
+  std::string cache;     ///< the folder of cached references
 };
+
+/// @brief scorecard.json's document (every quantity with its verdict, ladder, order, limit,
+/// uncertainty, tolerance and reason; the overall verdict; provenance).
+nlohmann::json scorecard_json(const ScoreContext& ctx, const std::vector<ScoreRow>& rows,
+                              const ScoreVerdict& verdict);
 
 /// @brief Writes dir/scorecard.json and the self-contained dir/scorecard.html.
 void write_scorecard(const std::filesystem::path& dir, const ScoreContext& ctx,
-                     const std::vector<ScoreRow>& rows);
+                     const std::vector<ScoreRow>& rows, const ScoreVerdict& verdict);
 
 }  // namespace beamimpact::verification

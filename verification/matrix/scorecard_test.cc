@@ -1,41 +1,31 @@
-// The scorecard's choice of reference and tolerances, read from the shipped matrix: exact where
-// the matrix compares a scene with it, else IDA converged beyond its defaults; the method's own
-// case first, then the paper's.
+// The scorecard: one benchmark card per scene whoever runs it, the run compared with its
+// reference the right way round, ladders whose limit a bias cannot hide in, the round-off slack of
+// a tolerance, the overall verdict and exit codes, and the accuracy ratchet.
 #include <verification/matrix/scorecard.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <solver/util/InputError.hpp>
+#include <verification/compare/StoredRun.hpp>
 
 namespace beamimpact::verification {
 namespace {
 
 namespace fs = std::filesystem;
+using Status = JobOutcome::Status;
 
-/// What converged_ida adds to an IDA reference that sets none of these keys.
-const std::vector<std::string> kConverged = {"ida.rtol=1e-10", "ida.atol=1e-13", "ida.friction_velocity=1e-5",
-                                             "ida.kn_factor=1e4"};
+const fs::path kRoot = BEAMIMPACT_SOURCE;
 
-/// `set` with each converged setting whose key it does not set appended, in kConverged's order.
-std::vector<std::string> with_converged(std::vector<std::string> set, bool stiffen = true) {
-  const auto key = [](const std::string& s) { return s.substr(0, s.find('=')); };
-  const std::vector<std::string> own = set;
-  for (const std::string& c : kConverged) {
-    if (!stiffen && key(c) == "ida.kn_factor") continue;
-    if (std::none_of(own.begin(), own.end(), [&](const std::string& o) { return key(o) == key(c); }))
-      set.push_back(c);
-  }
-  return set;
-}
-
-bool has(const std::vector<std::string>& set, const std::string& s) {
-  return std::find(set.begin(), set.end(), s) != set.end();
-}
+std::vector<BenchmarkCard> shipped_cards() { return load_cards(kRoot / "verification/cards.toml", kRoot); }
 
 const ScoreItem& item(const std::vector<ScoreItem>& items, const std::string& scene) {
   for (const auto& i : items)
@@ -43,138 +33,292 @@ const ScoreItem& item(const std::vector<ScoreItem>& items, const std::string& sc
   throw std::runtime_error("no scored scene " + scene);
 }
 
-TEST(Scorecard, PicksTheBestReferenceAndTheMatrixTolerances) {
-  const fs::path root = BEAMIMPACT_SOURCE;
-  const VerificationMatrix m = VerificationMatrix::load(root / "verification/matrix.toml");
-  const auto fenicsx = score_items(m, "fenicsx", root);
-  // Every paper and hard scene, and the eight extra scenes with an exact answer (rigid rod, offset
-  // gap, rod on a wall, bouncing bar, two rods with a second contact period, S2 rotated by 37
-  // degrees, the Hertz ball on a beam, the stocky S2 with Timoshenko beams).
+TEST(Scorecard, EveryBenchmarkSceneHasOneCardAndEveryQuantityATolerance) {
+  const auto cards = shipped_cards();
   std::size_t shipped = 0;
   for (const char* folder : {"paper", "hard"})
-    for (const auto& e : fs::directory_iterator(root / "verification/scenes" / folder))
-      shipped += e.path().extension() == ".toml";
-  EXPECT_EQ(fenicsx.size(), shipped + 8);
-  // S1 has an exact solution and a FEniCSx case of its own: its mesh preset and its gates.
-  const ScoreItem& s1 = item(fenicsx, "s1_central");
-  EXPECT_EQ(s1.reference_kind, "exact");
-  EXPECT_EQ(s1.run.mesh, "coarse");
-  EXPECT_FALSE(s1.gates.empty());
-  // S4-45 has no exact solution: IDA, with the paper integrator's tolerances and no settings of its.
-  const auto standin = score_items(m, "standin", root);
-  const ScoreItem& s4 = item(standin, "s4_oblique_45");
-  EXPECT_EQ(s4.reference_kind, "ida");
-  EXPECT_EQ(s4.run.method, "standin");
-  EXPECT_FALSE(s4.run.dt);
-  EXPECT_FALSE(s4.gates.empty());
-  // A hard scene the matrix has no case for: converged IDA at the scene's settings, errors without
-  // a verdict.
-  const ScoreItem& grazing = item(standin, "grazing_1deg");
-  EXPECT_EQ(grazing.reference.method, "ida");
-  EXPECT_EQ(grazing.reference.set, kConverged);
-  EXPECT_TRUE(grazing.gates.empty());
-  EXPECT_TRUE(grazing.source.empty());
-  EXPECT_EQ(item(standin, "rigid_rod_oblique").reference_kind, "exact");
+    for (const auto& e : fs::directory_iterator(kRoot / "verification/scenes" / folder)) {
+      if (e.path().extension() != ".toml") continue;
+      ++shipped;
+      const fs::path scene = fs::absolute(e.path()).lexically_normal();
+      EXPECT_EQ(
+          std::count_if(cards.begin(), cards.end(), [&](const BenchmarkCard& c) { return c.scene == scene; }),
+          1)
+          << scene;
+    }
+  // The eight other scenes with an exact answer: rigid rod, offset gap, rod on a wall, bouncing
+  // bar, two rods with a second contact period, S2 rotated by 37 degrees, the Hertz ball on a beam,
+  // the stocky S2 with Timoshenko beams.
+  EXPECT_EQ(cards.size(), shipped + 8);
+  for (const BenchmarkCard& c : cards) {
+    ASSERT_FALSE(c.quantities.empty()) << c.scene;
+    for (const Gate& g : c.quantities) {
+      EXPECT_TRUE(g.tol.has_value()) << c.scene << " " << g.metric;
+      // A reason says where its number comes from: a matrix row, or a derivation.
+      EXPECT_TRUE(g.why.rfind("matrix row '", 0) == 0 || g.why.rfind("derived", 0) == 0) << g.why;
+    }
+    if (c.set == "exact") EXPECT_EQ(c.reference.method, "exact") << c.scene;
+  }
+}
+
+TEST(Scorecard, TheSameCardHoldsForEveryMethodWhateverItsName) {
+  const auto cards = shipped_cards();
+  const Method* example = find_method("example");
+  ASSERT_NE(example, nullptr);
+  Method copy = *example;  // an unchanged copy of the example under another name
+  copy.name = "example_copy";
+  const auto a = score_items(cards, *example), b = score_items(cards, copy);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].reference.key(), b[i].reference.key());
+    EXPECT_EQ(a[i].ladder.kind, b[i].ladder.kind);
+    ASSERT_EQ(a[i].gates.size(), b[i].gates.size());
+    for (std::size_t k = 0; k < a[i].gates.size(); ++k) {
+      EXPECT_EQ(a[i].gates[k].metric, b[i].gates[k].metric);
+      EXPECT_EQ(a[i].gates[k].tol, b[i].gates[k].tol);
+    }
+  }
+  // The example has a case of its own in the matrix on S1 (impulse 4 %, impacts): the card holds it
+  // to the paper integrator's row like every method, and runs it at the scene's own settings.
+  const Method* paper = find_method("paper");
+  const ScoreItem& s1 = item(a, "s1_central");
+  const auto paper_items = score_items(cards, *paper);
+  const ScoreItem& s1_paper = item(paper_items, "s1_central");
+  EXPECT_EQ(s1.gates.size(), s1_paper.gates.size());
+  EXPECT_EQ(s1.source, "s1_central paper dt=0.01 vs exact");
+  EXPECT_FALSE(s1.run.dt);
+  EXPECT_TRUE(s1.run.mesh.empty());
+}
+
+TEST(Scorecard, LaddersRefineWhatTheMethodAcceptsOnScenesWithAnExactAnswer) {
+  const auto cards = shipped_cards();
+  const auto paper = score_items(cards, *find_method("paper"));
+  // S1 (dt 0.01 s, both accepted): elements x2 and dt / 2 a rung, the first rung the scene itself.
+  const LadderPlan& s1 = item(paper, "s1_central").ladder;
+  ASSERT_EQ(s1.rungs.size(), 3u);
+  EXPECT_EQ(s1.kind, "mesh+dt");
+  EXPECT_FALSE(s1.rungs[0].dt);
+  EXPECT_EQ(s1.rungs[2].mesh, "4");
+  EXPECT_DOUBLE_EQ(*s1.rungs[2].dt, 0.0025);
+  // A scene with an automatic step: the mesh alone (the step follows it).
+  EXPECT_EQ(item(paper, "ball_on_beam").ladder.kind, "mesh");
+  // No exact answer: no ladder.
+  EXPECT_TRUE(item(paper, "s4_oblique_45").ladder.rungs.empty());
+  // FEniCSx takes neither a dt nor a mesh factor: single runs, said so.
+  const auto fenicsx = score_items(cards, *find_method("fenicsx"));
+  EXPECT_TRUE(item(fenicsx, "s1_central").ladder.rungs.empty());
+  EXPECT_NE(item(fenicsx, "s1_central").ladder.why.find("neither"), std::string::npos);
+  ScoreOptions single;
+  single.ladder = false;
+  const auto single_items = score_items(cards, *find_method("paper"), single);
+  EXPECT_TRUE(item(single_items, "s1_central").ladder.rungs.empty());
 }
 
 TEST(Scorecard, IdaIsNeverItsOwnReference) {
-  const fs::path root = BEAMIMPACT_SOURCE;
-  const VerificationMatrix m = VerificationMatrix::load(root / "verification/matrix.toml");
-  // Against itself every error would be 0 and every gate a pass that means nothing: IDA is scored
-  // against a converged IDA run (or exact), whatever case of the matrix gives the tolerances.
-  for (const ScoreItem& it : score_items(m, "ida", root)) {
+  for (const ScoreItem& it : score_items(shipped_cards(), *find_method("ida"))) {
     EXPECT_NE(it.run.key(), it.reference.key()) << it.run.label();
-    if (it.reference_kind == "ida") {
-      for (const std::string& c : kConverged) EXPECT_TRUE(has(it.reference.set, c)) << it.reference.label();
-    }
   }
-  // A case's own reference settings stay (S4-60: IDA's converged friction regularisation).
-  const auto ida = score_items(m, "ida", root);
-  const auto& s60 = item(ida, "s4_oblique_60").reference.set;
-  EXPECT_TRUE(has(s60, "ida.friction_velocity=1e-5"));
-  // With matrix references IDA would meet its own runs: refused, naming the option.
   try {
-    score_items(m, "ida", root, ScoreOptions{{"paper"}, "matrix"});
+    ScoreOptions o;
+    o.references = "matrix";
+    score_items(shipped_cards(), *find_method("ida"), o);
     ADD_FAILURE() << "IDA scored against matrix references";
   } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "--references");
   }
 }
 
-TEST(Scorecard, IdaReferencesAreConvergedUnlessMatrixReferencesAreAsked) {
-  const fs::path root = BEAMIMPACT_SOURCE;
-  const VerificationMatrix m = VerificationMatrix::load(root / "verification/matrix.toml");
-  // Each IDA reference of the paper's scorecard is an IDA reference the matrix writes for that
-  // scene (or IDA at the scene's settings where it has none), with the three converged settings
-  // added; --references matrix takes it as written.
-  const auto converged = score_items(m, "paper", root, ScoreOptions{{"paper", "hard"}, "converged"});
-  const auto written = score_items(m, "paper", root, ScoreOptions{{"paper", "hard"}, "matrix"});
-  ASSERT_EQ(converged.size(), written.size());
-  int ida = 0;
-  for (std::size_t i = 0; i < converged.size(); ++i) {
-    if (written[i].reference.method != "ida") continue;
-    ++ida;
-    EXPECT_EQ(converged[i].reference.set, with_converged(written[i].reference.set))
-        << converged[i].run.label();
-    // Its check: the same converged run at the case's penalty (no case here sets one).
-    ASSERT_TRUE(converged[i].reference_check) << converged[i].run.label();
-    EXPECT_EQ(converged[i].reference_check->set, with_converged(written[i].reference.set, false));
-    EXPECT_FALSE(written[i].reference_check) << "matrix references have no check";
-    const bool in_matrix = std::any_of(m.cases.begin(), m.cases.end(), [&](const Case& c) {
-      return fs::absolute(c.run.scene).lexically_normal() == written[i].run.scene &&
-             c.reference.method == "ida" && c.reference.set == written[i].reference.set;
-    });
-    EXPECT_TRUE(in_matrix || (written[i].source.empty() && written[i].reference.set.empty()))
-        << written[i].run.label();
+/// A cards file holding `text`, and the InputError's key it gives.
+std::string card_error(const std::string& text) {
+  const fs::path f = fs::temp_directory_path() / fmt::format("beamimpact_cards_{}.toml", ::getpid());
+  std::ofstream(f) << text;
+  try {
+    load_cards(f, kRoot);
+  } catch (const InputError& e) {
+    fs::remove(f);
+    return e.key();
   }
-  EXPECT_GE(ida, 10);  // S3 at 10 elements, S4 x3 and the hard scenes without exact answers
-  // An exact reference is taken as exact: no check.
-  for (const ScoreItem& it : converged) {
-    if (it.reference_kind == "exact") {
-      EXPECT_FALSE(it.reference_check) << it.run.label();
-    }
-  }
+  fs::remove(f);
+  return "accepted";
 }
 
-TEST(Scorecard, AVerdictTheReferenceSpreadCouldReverseIsReferenceUncertain) {
-  // The true error lies within error +- spread when the reference's own error is within its
-  // spread: pass needs error + spread <= tol, fail needs error - spread > tol.
-  EXPECT_EQ(verdict(0.05, 0.08, std::nullopt), "pass");  // no spread: the reference taken as exact
-  EXPECT_EQ(verdict(0.09, 0.08, std::nullopt), "fail");
-  EXPECT_EQ(verdict(0.05, 0.08, 0.02), "pass");                 // 0.07 <= 0.08
-  EXPECT_EQ(verdict(0.07, 0.08, 0.02), "reference uncertain");  // 0.09 > 0.08 >= 0.05
-  EXPECT_EQ(verdict(0.13, 0.08, 0.10), "reference uncertain");  // 0.03 <= 0.08 < 0.23
-  EXPECT_EQ(verdict(0.13, 0.08, 0.01), "fail");                 // 0.12 > 0.08
-  EXPECT_EQ(verdict(0.08, 0.08, 0.0), "pass");                  // the tolerance is inclusive
-  EXPECT_EQ(verdict(std::nan(""), 0.08, 0.01), "fail");         // no number is not a pass
-  EXPECT_EQ(verdict(0.01, 0.08, std::numeric_limits<double>::infinity()), "reference uncertain");
+TEST(Scorecard, ABadCardIsInputErrorNamingTheKey) {
+  const std::string head =
+      "[[card]]\nscene = \"verification/scenes/paper/s1_central.toml\"\nset = \"paper\"\n"
+      "reference = { method = \"exact\" }\nsource = \"\"\n";
+  const std::string good =
+      "quantities = [{ metric = \"impulse\", tol = 0.04, why = \"derived: a bound\" }]\n";
+  EXPECT_EQ(card_error(head + good), "accepted");
+  EXPECT_EQ(card_error(head + "quantities = [{ metric = \"impulse\", why = \"derived: a bound\" }]\n"),
+            "card[0].quantities[0].tol");
+  EXPECT_EQ(
+      card_error(head + "quantities = [{ metric = \"impluse\", tol = 1, why = \"derived: a bound\" }]\n"),
+      "card[0].quantities[0].metric");
+  EXPECT_EQ(card_error(head + good + head + good), "card[1].scene");  // one card per scene
+  EXPECT_EQ(card_error(head + good + "tier = \"quick\"\n"), "card[0].tier");
+  EXPECT_EQ(card_error("[[card]]\nscene = \"nowhere.toml\"\n"), "card[0].scene");
 }
 
-TEST(Scorecard, SetsSelectTheScenesInOrderAndBadOptionsNameTheOption) {
-  const fs::path root = BEAMIMPACT_SOURCE;
-  const VerificationMatrix m = VerificationMatrix::load(root / "verification/matrix.toml");
-  std::size_t paper_files = 0;
-  for (const auto& e : fs::directory_iterator(root / "verification/scenes/paper"))
-    paper_files += e.path().extension() == ".toml";
-  const auto paper = score_items(m, "paper", root, ScoreOptions{{"paper"}, "converged"});
-  EXPECT_EQ(paper.size(), paper_files);
-  for (const ScoreItem& it : paper) EXPECT_EQ(it.run.scene.parent_path().filename(), "paper");
-  // The exact set: the eight extra scenes with an exact answer, none of the paper's (S1 has one too).
-  const auto exact = score_items(m, "paper", root, ScoreOptions{{"exact"}, "converged"});
-  EXPECT_EQ(exact.size(), 8u);
-  for (const ScoreItem& it : exact) EXPECT_EQ(it.reference_kind, "exact") << it.run.label();
-  const auto key_of = [&](const ScoreOptions& o) {
-    try {
-      score_items(m, "paper", root, o);
-    } catch (const InputError& e) {
-      return e.key();
-    }
-    return std::string("accepted");
+TEST(Scorecard, ToleranceComparisonsCarryFourUlpsOfSlack) {
+  // A contact_end of 2.55 s against an exact 2.5 s: |a - b| carries round-off of a few ulps of
+  // 2.55 (4.4e-16 each), so 0.05 + 2.7e-16 is 0.05 to the precision the error has.
+  EXPECT_EQ(verdict(0.05 + 2.7e-16, 0.05, std::nullopt, 2.55), "pass");
+  EXPECT_EQ(verdict(0.05 + 1e-12, 0.05, std::nullopt, 2.55), "fail");  // beyond round-off: a real miss
+  EXPECT_EQ(verdict(0.05, 0.08, 0.02), "pass");                        // 0.07 <= 0.08
+  EXPECT_EQ(verdict(0.07, 0.08, 0.02), "reference uncertain");         // 0.09 > 0.08 >= 0.05
+  EXPECT_EQ(verdict(0.13, 0.08, 0.01), "fail");                        // 0.12 > 0.08
+  EXPECT_EQ(verdict(std::nan(""), 0.08, 0.01), "fail");                // no number is not a pass
+  EXPECT_EQ(verdict(1.0, 0.0, std::nullopt), "fail");                  // a count off by one
+}
+
+/// A run in memory: one contact whose force is `force` N from t = 0.2 to 0.6 s (impulse 0.4 x force).
+JobOutcome memory_run(const JobSpec& spec, double force) {
+  std::map<std::string, std::vector<double>> c;
+  for (int i = 0; i <= 100; ++i) {
+    const double t = i * 0.01;
+    c["t"].push_back(t);
+    c["R"].push_back(t > 0.2 - 1e-9 && t < 0.6 + 1e-9 ? force : 0.0);
+  }
+  JobOutcome o{spec, {}, Status::kOk, "", 0.1, 0.1, 100, 0.01, nullptr};
+  o.run =
+      std::make_shared<const StoredRun>(StoredRun::from_columns(c, nlohmann::json::object(), spec.label()));
+  return o;
+}
+
+/// One scene scored in memory: `forces` the method's rung forces (one: no ladder), reference 1 N.
+/// `held` keeps the scored item (the row points to it).
+ScoreRow score_memory(const std::vector<double>& forces, double tol, std::vector<ScoreItem>& held) {
+  ScoreItem it;
+  it.run = JobSpec{kRoot / "verification/scenes/paper/s1_central.toml", "m", std::nullopt, "", {}, {}};
+  it.reference = it.run;
+  it.reference.method = "exact";
+  it.reference_kind = "exact";
+  it.gates = {Gate{"impulse", tol, std::nullopt, "derived: a test bound", std::nullopt}};
+  std::map<std::string, JobOutcome> runs;
+  runs.emplace(it.reference.key(), memory_run(it.reference, 1.0));
+  for (std::size_t k = 0; k < forces.size(); ++k) {
+    JobSpec s = it.run;
+    if (k > 0) s.mesh = std::to_string(1 << k);
+    if (forces.size() > 1) it.ladder.rungs.push_back(s);
+    runs.emplace(s.key(), memory_run(s, forces[k]));
+  }
+  held = {it};
+  return score_rows(held, runs).front();
+}
+
+TEST(Scorecard, TheRunIsComparedWithItsReferenceNotTheOtherWayRound) {
+  // Run impulse 0.5 N s, reference 0.4 N s: the relative error is |0.5 - 0.4| / 0.4 = 0.25; swapped
+  // it would be 0.1 / 0.5 = 0.2.
+  std::vector<ScoreItem> it;
+  const ScoreRow row = score_memory({1.25}, 0.3, it);
+  ASSERT_TRUE(row.quantities.front().error);
+  EXPECT_NEAR(*row.quantities.front().error, 0.25, 1e-12);
+  EXPECT_EQ(row.quantities.front().judged, "single run");
+  EXPECT_EQ(row.quantities.front().status, "pass");
+}
+
+TEST(Scorecard, ABiasCannotHideInTheDiscretisationError) {
+  // Rungs with a first-order discretisation error of -3 %, -1.5 %, -0.75 % (mesh x2 a rung): a
+  // single run of the coarsest has error 3 % under a 4 % tolerance. Richardson removes the h term
+  // exactly: the limit is the method's own answer.
+  const auto rungs = [](double bias) {
+    return std::vector<double>{bias * 0.97, bias * 0.985, bias * 0.9925};
   };
-  EXPECT_EQ(key_of(ScoreOptions{{"papers"}, "converged"}), "--sets");
-  EXPECT_EQ(key_of(ScoreOptions{{"paper", "paper"}, "converged"}), "--sets");
-  EXPECT_EQ(key_of(ScoreOptions{{}, "converged"}), "--sets");
-  EXPECT_EQ(key_of(ScoreOptions{{"hard"}, "tight"}), "--references");
+  std::vector<ScoreItem> honest_item, biased_item, slight_item;
+  const ScoreQuantity honest = score_memory(rungs(1.0), 0.04, honest_item).quantities.front();
+  EXPECT_EQ(honest.judged, "limit");
+  EXPECT_EQ(honest.status, "pass") << honest.note;
+  ASSERT_TRUE(honest.ladder && honest.ladder->order);
+  EXPECT_NEAR(*honest.ladder->order, 1.0, 1e-6);  // e ~ h: order 1
+  EXPECT_NEAR(*honest.error, 0.0, 1e-9);
+  // Force x 1.03: the coarse run's error is 0.1 % (the bias cancels the mesh error), but the limit
+  // is 3 % off with an uncertainty near 0: fail.
+  const ScoreQuantity biased = score_memory(rungs(1.03), 0.04, biased_item).quantities.front();
+  EXPECT_NEAR(std::abs(1.03 * 0.97 - 1.0), 0.0009, 1e-12);
+  EXPECT_EQ(biased.status, "fail") << biased.note;
+  EXPECT_NEAR(*biased.error, 0.03, 1e-9);
+  // Force x 1.01: 1 % off, beyond 1.25 U + tol / 10 = 0.4 %: fail.
+  EXPECT_EQ(score_memory(rungs(1.01), 0.04, slight_item).quantities.front().status, "fail");
+}
+
+TEST(Scorecard, AMethodThatDoesNotConvergeGetsThatVerdict) {
+  // Differences that grow (order < 0): no asymptotic range, no limit.
+  std::vector<ScoreItem> a, b;
+  const ScoreQuantity q = score_memory({0.99, 0.98, 0.95}, 0.04, a).quantities.front();
+  EXPECT_EQ(q.status, "not converged") << q.note;
+  // Order 0.4 (differences shrinking by 2^0.4 a rung): below 0.5, not converged.
+  const double d = 0.01, s = std::pow(2.0, -0.4);
+  EXPECT_EQ(score_memory({1 - d - d * s, 1 - d * s, 1.0}, 0.04, b).quantities.front().status,
+            "not converged");
+  // The Richardson arithmetic is the matrix's: its limit and order for these rungs.
+  const LadderResult r = ladder_limit({0.97, 0.985, 0.9925});
+  const auto matrix = richardson_limit(0.97, 0.985, 0.9925, 2.0);
+  ASSERT_TRUE(r.limit && matrix);
+  EXPECT_DOUBLE_EQ(*r.limit, matrix->first);
+}
+
+TEST(Scorecard, ARefusedSceneIsNotApplicableWithNoReferenceRun) {
+  ScoreItem it;
+  it.run = JobSpec{kRoot / "verification/scenes/paper/s1_central.toml", "m", std::nullopt, "", {}, {}};
+  it.reference = JobSpec{it.run.scene, "ida", std::nullopt, "", {}, {}};
+  it.gates = {Gate{"impulse", 0.04, std::nullopt, "derived: a test bound", std::nullopt}};
+  std::map<std::string, JobOutcome> runs;  // the reference was never run
+  runs.emplace(it.run.key(),
+               JobOutcome{it.run, {}, Status::kNotApplicable, "no friction", 0, 0, 0, 0, nullptr});
+  const std::vector<ScoreItem> held = {it};
+  const auto rows = score_rows(held, runs);
+  EXPECT_EQ(rows.front().quantities.front().status, "not applicable");
+  const ScoreVerdict v = score_verdict("m", rows);
+  EXPECT_EQ(v.exit_code, 0) << v.line;  // a refusal is not a failure, and the line says how many
+  EXPECT_NE(v.line.find("1 not applicable"), std::string::npos) << v.line;
+}
+
+TEST(Scorecard, TheVerdictFailsOnAnyQuantityThatDidNotPass) {
+  std::vector<ScoreItem> a, b;
+  const std::vector<ScoreRow> pass = {score_memory({1.01}, 0.04, a)};
+  EXPECT_EQ(score_verdict("m", pass).exit_code, 0);
+  const std::vector<ScoreRow> fail = {score_memory({1.05}, 0.04, b)};
+  const ScoreVerdict v = score_verdict("m", fail);
+  EXPECT_EQ(v.exit_code, 1);
+  EXPECT_EQ(v.line.rfind("score m: FAILED", 0), 0u) << v.line;
+}
+
+/// Writes the scorecard of `rows` as a baseline and returns its path.
+fs::path baseline(const std::vector<ScoreRow>& rows, const std::string& method, const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("beamimpact_baseline_{}_{}", ::getpid(), name);
+  ScoreContext ctx;
+  ctx.method = method;
+  write_scorecard(dir, ctx, rows, score_verdict(method, rows));
+  return dir / "scorecard.json";
+}
+
+TEST(Scorecard, TheRatchetCatchesAnErrorThatGrewInsideItsTolerance) {
+  std::vector<ScoreItem> a, b, c;
+  const std::vector<ScoreRow> before = {score_memory({1.01}, 0.04, a)};  // error 1 %
+  const std::vector<ScoreRow> grown = {score_memory({1.02}, 0.04, b)};   // 2 %: still within 4 %
+  const std::vector<ScoreRow> same = {score_memory({1.01}, 0.04, c)};
+  EXPECT_EQ(score_verdict("m", grown).exit_code, 0);
+  const fs::path file = baseline(before, "m", "m");
+  const Ratchet r = ratchet(file, "m", ScoreOptions{}, grown);
+  EXPECT_EQ(r.grown.size(), 1u);
+  EXPECT_TRUE(ratchet(file, "m", ScoreOptions{}, same).grown.empty());
+  EXPECT_EQ(ratchet(baseline(grown, "m", "m2"), "m", ScoreOptions{}, before).improved.size(), 1u);
+  // A baseline of another method, or of other sets, is bad input.
+  try {
+    ratchet(file, "other", ScoreOptions{}, same);
+    ADD_FAILURE() << "a baseline of another method accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "method");
+  }
+  try {
+    ScoreOptions paper_only;
+    paper_only.sets = {"paper"};
+    ratchet(file, "m", paper_only, same);
+    ADD_FAILURE() << "a baseline of other sets accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "sets");
+  }
+  fs::remove_all(file.parent_path());
 }
 
 }  // namespace

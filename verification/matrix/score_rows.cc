@@ -146,9 +146,14 @@ void not_judged(ScoreRow& row, const std::string& status, const std::string& why
 void judge(ScoreRow& row, const JobOutcome& ref, const std::map<std::string, JobOutcome>& runs) {
   const ScoreItem& it = *row.item;
   std::vector<Comparison> cmps;  // every rung (or the one run) against the reference: run first
+  // The scored run's impulse, intervals and interval impulses come from its own history.csv, never
+  // from what its summary.json claims (a summary that disagrees with its rows cannot pass:
+  // `beamimpact run` refuses such an outside run with exit 3, api/output_rules.hpp).
+  CompareOptions options;
+  options.run_from_history = true;
   try {
     const auto reference = stored_run(ref);
-    for (const JobOutcome& o : row.rungs) cmps.push_back(compare_runs(*stored_run(o), *reference));
+    for (const JobOutcome& o : row.rungs) cmps.push_back(compare_runs(*stored_run(o), *reference, options));
   } catch (const std::exception& e) {
     not_judged(row, "failed", e.what());
     return;

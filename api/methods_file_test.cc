@@ -105,13 +105,15 @@ TEST_F(MethodsFile, RefusesBadFilesNamingTheKey) {
        "method[0].accepts.friction", "true or false"},
       {"no method at all", "name = \"x\"\n", "method", ""},
       // Listed "runs here" before, then failed to start.
-      {"program that is a directory", "[[method]]\nname = \"x\"\ncommand = [\"/tmp\", \"{scene}\", \"{out}\"]\n",
-       "method[0].command", "not an executable file"},
+      {"program that is a directory",
+       "[[method]]\nname = \"x\"\ncommand = [\"/tmp\", \"{scene}\", \"{out}\"]\n", "method[0].command",
+       "not an executable file"},
       {"program that is not executable",
        "[[method]]\nname = \"x\"\ncommand = [\"/etc/passwd\", \"{scene}\", \"{out}\"]\n", "method[0].command",
        "not an executable file"},
       {"check_timeout zero", good_ + "check_timeout = 0\n", "method[0].check_timeout", "> 0"},
-      {"check_timeout not a number", good_ + "check_timeout = \"soon\"\n", "method[0].check_timeout", "seconds"},
+      {"check_timeout not a number", good_ + "check_timeout = \"soon\"\n", "method[0].check_timeout",
+       "seconds"},
   };
   for (const auto& b : bad) {
     const auto [key, message] = error(b.text);

@@ -268,11 +268,11 @@ TEST(Cli, SmallSlipsAreRefusedOrStated) {
   EXPECT_EQ(missing.code, 2) << missing.output;
   EXPECT_NE(missing.output.find("No such file or directory"), std::string::npos) << missing.output;
   // Option ranges: jobs >= 1, a finite time limit > 0.
-  for (const std::string& bad : {"verify verification/matrix.toml --jobs 0 --out " + out.string(),
-                                 "sweep " + paper_scene("s1_central") + " --jobs -1 --out " + out.string(),
-                                 "score paper --jobs 0 --out " + out.string(),
-                                 "score paper --timeout nan --out " + out.string(),
-                                 "conform paper --timeout 0 --out " + out.string()}) {
+  for (const std::string& bad :
+       {"verify verification/matrix.toml --jobs 0 --out " + out.string(),
+        "sweep " + paper_scene("s1_central") + " --jobs -1 --out " + out.string(),
+        "score paper --jobs 0 --out " + out.string(), "score paper --timeout nan --out " + out.string(),
+        "conform paper --timeout 0 --out " + out.string()}) {
     const Result r = run_cli(bad);
     EXPECT_EQ(r.code, 2) << bad << "\n" << r.output;
   }

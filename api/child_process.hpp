@@ -3,6 +3,13 @@
 /// @brief Runs a program as a separate process with its output captured in a log file: each
 /// verification run is a process so that runs stay independent and any tool can take part, and
 /// an external method of the registry is started the same way.
+///
+/// Children end with their parent: every child runs in its own process group, registered while
+/// it lives. On SIGTERM, SIGINT or SIGHUP (handlers installed at the first spawn where the signal
+/// still has its default action) and on exit() the registered groups get SIGTERM, then SIGKILL
+/// after 2 s, and the handler returns only when they are gone; it then ends beamimpact by the
+/// same signal, unless the caller asked to carry on (catch_interruptions). A process that holds
+/// an output lock therefore holds it until its children are gone.
 
 #include <filesystem>
 #include <functional>
@@ -23,11 +30,20 @@ struct ProcessResult {
 /// waits at most timeout_seconds (then kills it) and returns how it ended. Thread-safe.
 /// @param interrupted when given and non-zero (the signal that interrupted the caller), the
 /// process gets SIGTERM, then SIGKILL after 2 s
-/// @param own_group true: the process and its children form their own process group, ended
-/// together; false: it stays in the caller's group, so that whoever ends the caller's group
-/// (a time limit, Ctrl-C) ends it too
+/// process gets SIGTERM, then SIGKILL after 2 s; a signal caught here (catch_interruptions) does
+/// the same, and no child starts after one
+/// @param own_group kept for the callers' sake: every child has its own process group, which
+/// the handlers above end with beamimpact
 ProcessResult spawn_and_wait(const std::vector<std::string>& argv, const std::filesystem::path& log,
                              double timeout_seconds, const std::function<int()>& interrupted = {},
                              bool own_group = true);
+
+/// @brief Installs the handlers of SIGINT, SIGTERM and SIGHUP in their recording form: they end
+/// the children (as above) and record the signal, and the program carries on to write what it
+/// has (a study's report marked incomplete). Call once, before the first child starts.
+void catch_interruptions();
+
+/// @brief The signal recorded by the handlers (SIGINT, SIGTERM, SIGHUP), or 0.
+int caught_signal();
 
 }  // namespace beamimpact

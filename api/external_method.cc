@@ -105,7 +105,7 @@ SimulationResult run_external(const Method& m, const Scene& scene, const fs::pat
   }
   const fs::path log = out / "method.log";
   fs::remove(log, ec);
-  const ProcessResult p = spawn_and_wait(external_argv(m, run), log, 1e9, {}, false);
+  const ProcessResult p = spawn_and_wait(external_argv(m, run), log, 1e9);
   const bool ok = p.error.empty() && p.exit_code == 0;
   if (!ok || Progress::enabled()) {  // quiet on success, as an in-process run
     std::ifstream text(log);

@@ -51,7 +51,9 @@ std::string on_path(const std::string& name) {
   std::stringstream dirs(path ? path : "");
   std::error_code ec;
   for (std::string d; std::getline(dirs, d, ':');)
-    if (!d.empty() && fs::exists(fs::path(d) / name, ec)) return (fs::path(d) / name).string();
+    if (!d.empty() && fs::is_regular_file(fs::path(d) / name, ec) &&
+        access((fs::path(d) / name).c_str(), X_OK) == 0)  // as the shell's search
+      return (fs::path(d) / name).string();
   return "";
 }
 
@@ -85,6 +87,8 @@ std::vector<std::string> read_command(TableReader& r, const std::string& key, co
   } else if (!fs::exists(c[0], ec)) {
     r.fail(key, "the program " + c[0] + " does not exist; expected an existing program");
   }
+  if (!fs::is_regular_file(c[0], ec) || access(c[0].c_str(), X_OK) != 0)
+    r.fail(key, "the program " + c[0] + " is not an executable file; expected a program this user may run");
   for (std::size_t i = 1; i < c.size(); ++i)  // a script named from the methods file's folder
     if (c[i].rfind(here.string() + "/", 0) == 0 && !fs::exists(c[i], ec))
       r.fail(key, "argument " + std::to_string(i) + ": " + c[i] + " does not exist");
@@ -130,6 +134,9 @@ Method read_method(TableReader& r, const fs::path& here, const fs::path& program
   m.options_table = m.name;
   m.command = read_command(r, "command", here, program, true);
   m.check = read_command(r, "check", here, program, false);
+  m.check_timeout = r.number_or("check_timeout", m.check_timeout, "seconds, > 0 and at most 3600");
+  if (!(m.check_timeout > 0.0 && m.check_timeout <= 3600.0))
+    r.fail("check_timeout", "expected seconds, > 0 and at most 3600");
   m.accepts = read_accepts(r);
   m.slow = r.boolean_or("slow", false);
   r.finish();

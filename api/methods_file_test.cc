@@ -3,6 +3,7 @@
 #include <api/accepts.hpp>
 #include <api/external_method.hpp>
 #include <api/methods_file.hpp>
+#include <api/registry.hpp>
 
 #include <fstream>
 
@@ -103,6 +104,16 @@ TEST_F(MethodsFile, RefusesBadFilesNamingTheKey) {
        "accepts = { friction = \"yes\" }\n",
        "method[0].accepts.friction", "true or false"},
       {"no method at all", "name = \"x\"\n", "method", ""},
+      // Listed "runs here" before, then failed to start.
+      {"program that is a directory",
+       "[[method]]\nname = \"x\"\ncommand = [\"/tmp\", \"{scene}\", \"{out}\"]\n", "method[0].command",
+       "not an executable file"},
+      {"program that is not executable",
+       "[[method]]\nname = \"x\"\ncommand = [\"/etc/passwd\", \"{scene}\", \"{out}\"]\n", "method[0].command",
+       "not an executable file"},
+      {"check_timeout zero", good_ + "check_timeout = 0\n", "method[0].check_timeout", "> 0"},
+      {"check_timeout not a number", good_ + "check_timeout = \"soon\"\n", "method[0].check_timeout",
+       "seconds"},
   };
   for (const auto& b : bad) {
     const auto [key, message] = error(b.text);
@@ -120,6 +131,20 @@ TEST_F(MethodsFile, ANameTakenByABuiltInMethodIsRefused) {
     EXPECT_EQ(e.key(), "method[0].name");
     EXPECT_NE(std::string(e.what()).find("built-in"), std::string::npos) << e.what();
   }
+}
+
+TEST_F(MethodsFile, ANameTakenByABuiltInMethodIsRefusedWhateverItsCase) {
+  // "PAPER" was taken beside "paper": two methods whose names differ only in case.
+  const fs::path f = write("[[method]]\nname = \"PAPER\"\ncommand = [\"/bin/sh\", \"{scene}\", \"{out}\"]\n");
+  try {
+    load_methods_file(f);
+    FAIL() << "'PAPER' was accepted beside 'paper'";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.key(), "method[0].name");
+    EXPECT_NE(std::string(e.what()).find("built-in"), std::string::npos) << e.what();
+  }
+  ASSERT_NE(find_method("Paper"), nullptr);  // a name finds its method in any case
+  EXPECT_EQ(find_method("Paper")->name, "paper");
 }
 
 // An argument whose placeholder has no value is left out with the option before it.

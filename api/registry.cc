@@ -1,5 +1,7 @@
 #include <api/registry.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <map>
 #include <mutex>
 
@@ -75,18 +77,29 @@ const std::deque<Method>& methods() {
   return table();
 }
 
+namespace {
+
+/// Method names compare without case: "PAPER" names the paper's method, and no file may declare it.
+bool same_name(std::string_view a, std::string_view b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+         });
+}
+
+}  // namespace
+
 void add_method(Method m, const std::string& file, const std::string& key) {
   for (const Method& other : table())
-    if (other.name == m.name)
-      throw SceneError(
-          file, key,
-          "a method named '" + m.name + "' is already declared (" + other.origin + "); expected a new name");
+    if (same_name(other.name, m.name))
+      throw SceneError(file, key,
+                       "a method named '" + other.name + "' is already declared (" + other.origin +
+                           "); expected a new name (names compare without case)");
   table().push_back(std::move(m));
 }
 
 const Method* find_method(std::string_view name) {
   for (const Method& m : methods())
-    if (m.name == name) return &m;
+    if (same_name(m.name, name)) return &m;
   return nullptr;
 }
 
@@ -108,7 +121,7 @@ std::string unavailable(const Method& m) {
   static std::map<std::string, std::string> reasons;  // method -> why not ("" = it can run)
   std::lock_guard lock(mu);
   if (auto it = reasons.find(m.name); it != reasons.end()) return it->second;
-  const ProcessResult r = spawn_and_wait(m.check, "/dev/null", 120.0);
+  const ProcessResult r = spawn_and_wait(m.check, "/dev/null", m.check_timeout);
   std::string why;
   if (!r.error.empty() || r.exit_code != 0) {
     std::string cmd;

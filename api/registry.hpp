@@ -64,6 +64,9 @@ struct Method {
   std::vector<std::string> command;
   /// @brief External program: a command (same expansion) that exits 0 when it can run here.
   std::vector<std::string> check;
+  /// @brief s, the check's time limit (methods file `check_timeout`, > 0 and at most 3600): a
+  /// check still running then is ended with its process group and the method is unavailable.
+  double check_timeout = 10.0;
 
   /// @brief True for an in-process solver.
   bool in_process() const { return static_cast<bool>(solve); }

@@ -30,6 +30,14 @@ void remove_run_outputs(const std::filesystem::path& out) {
   remove_stale_outputs(FieldWriter::collection(out).parent_path(), {"fields.pvd"});
 }
 
+/// The field files of the run directory `out`: a run that writes none, or failed, leaves none of
+/// an earlier run's nor its own beside its summary.
+void remove_fields(const std::filesystem::path& out) {
+  std::error_code ec;
+  std::filesystem::remove_all(out / "fields", ec);
+  std::filesystem::remove(FieldWriter::collection(out), ec);
+}
+
 /// Every run passes here (its directory locked): the method's acceptance, then the in-process
 /// solver (given the run's thread count, 0 when not asked) or the program.
 SimulationResult run_method(const Scene& scene, const Method& m,
@@ -62,7 +70,14 @@ SimulationResult run_method(const Scene& scene, const Method& m,
                        "expected an output directory to write the fields into (--out)");
     request.fields_dir = *out;
   }
-  SimulationResult r = m.solve(scene, request);
+  if (out && !scene.output.fields) remove_fields(*out);
+  SimulationResult r;
+  try {
+    r = m.solve(scene, request);
+  } catch (...) {  // a diverged or refused run: its fields vouch for nothing
+    if (out && scene.output.fields) remove_fields(*out);
+    throw;
+  }
   add_scene_warnings(scene, r);
   if (out) write_outputs(scene, r, *out);
   return r;

@@ -1,5 +1,7 @@
 #include <references/ida/ida_options.hpp>
 
+#include <fmt/format.h>
+
 #include <solver/scene/TableReader.hpp>
 
 namespace beamimpact::ida {
@@ -21,7 +23,12 @@ IdaOptions read_ida_options(const Scene& scene, double dt, double v_scale,
            "expected a relative tolerance in [1e-14, 0.1] (below 1e-14 double precision cannot meet it)");
   // Displacements of the paper's scenes are O(0.01-1) m and speeds O(1) m/s: an absolute
   // tolerance 1e-3 x rtol keeps the relative test in charge except near zero crossings.
-  o.atol = positive("atol", r.number_or("atol", 1e-3 * o.rtol, "a positive absolute tolerance"));
+  o.atol = r.number_or("atol", 1e-3 * o.rtol, "an absolute tolerance in [1e-18, 1]");
+  // Below 1e-18 (m, m/s: far under the roundoff of any state of size 1e-2) the error weights of
+  // the states at rest overflow IDA's tests and it stops at t = 0; above 1 nothing is resolved.
+  if (!(o.atol >= 1e-18 && o.atol <= 1.0))
+    r.fail("atol",
+           "expected an absolute tolerance in [1e-18, 1] (m, m/s), got " + fmt::format("{:g}", o.atol));
   if (r.has("kn")) {
     if (r.has("kn_factor")) r.fail("kn", "give either kn or kn_factor, not both");
     o.kn = positive("kn", r.number("kn", "a positive penalty stiffness (N/m)"));

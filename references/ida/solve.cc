@@ -237,6 +237,33 @@ std::vector<std::array<double, 2>> event_intervals(const std::vector<ContactEven
 /// One contact's running impulse (quadrature) after every accepted step: (t, J(t)).
 using ImpulseTrace = std::vector<std::array<double, 2>>;
 
+/// Per contact, over the accepted steps, the peaks of the penalty force. At a first touch the
+/// dashpot jumps to cn times the closing speed (S1: 608 N against the exact 2 N), absorbs the
+/// closing speed within m_red / cn and leaves the spring compressed by about m_red v / cn, which
+/// relaxes through the dashpot with time constant cn / kn: the closure's transient, the penalty's
+/// counterpart of the paper's closure step. peak_R is the largest force outside the first
+/// kClosureWindow x cn / kn after each onset; the transient's own peak and the jump are stated apart.
+struct ForcePeaks {
+  static constexpr double kClosureWindow = 5.0;  ///< time constants: e^-5 = 0.7 % of the overshoot left
+  std::vector<double> outside, total, dashpot_jump, onset;
+  std::vector<char> was_closed;
+  explicit ForcePeaks(int nc)
+      : outside(nc, 0.0), total(nc, 0.0), dashpot_jump(nc, 0.0), onset(nc, 0.0), was_closed(nc, 0) {}
+  /// @brief Adds contact i's reading of an accepted step from t_prev to t (s) under law `law`.
+  void add(int i, const ContactReading& r, const PenaltyLaw& law, double t_prev, double t) {
+    if (r.closed) {
+      if (!was_closed[i]) {
+        onset[i] = t_prev;
+        dashpot_jump[i] = std::max(dashpot_jump[i], r.R - law.normal_force(r.gap, 0.0));
+      }
+      total[i] = std::max(total[i], r.R);
+      const double window = law.kn > 0.0 ? kClosureWindow * law.cn / law.kn : 0.0;
+      if (t - onset[i] >= window) outside[i] = std::max(outside[i], r.R);
+    }
+    was_closed[i] = r.closed;
+  }
+};
+
 /// The impulse of each interval: J at the middle of the open gap after it less J at the middle of
 /// the gap before it (J is constant while open, so any step there gives its exact value).
 std::vector<double> interval_impulses(const std::vector<std::array<double, 2>>& iv, const ImpulseTrace& trace,
@@ -260,7 +287,8 @@ std::vector<double> interval_impulses(const std::vector<std::array<double, 2>>& 
 /// every-th p and the last step N = ceil(end / h), so that the two methods' rows line up.
 /// Returns the output step (s).
 double integrate(const Scene& scene, const IdaOptions& opt, double dt, PenaltyIda& ida, const Observer& obs,
-                 const Model& model, ResultRecorder& rec, std::vector<ImpulseTrace>& traces) {
+                 const Model& model, ResultRecorder& rec, std::vector<ImpulseTrace>& traces,
+                 ForcePeaks& peaks, const std::vector<PenaltyLaw>& laws) {
   traces.assign(scene.contacts.size(), {});
   const int nc = static_cast<int>(scene.contacts.size());
   std::vector<DeformedSurface> surfaces;  // the real gap of each contact, from the deformed geometry
@@ -272,10 +300,11 @@ double integrate(const Scene& scene, const IdaOptions& opt, double dt, PenaltyId
     for (int i = 0; i < nc; ++i) {
       const ContactReading r = ida.contact(i);
       rec.sample(i, ida.t(), r.R, r.tau, ida.t() - t_prev, obs.state(i, r));
+      peaks.add(i, r, laws[i], t_prev, ida.t());
       rec.track_real_gap(i, ida.t(), surfaces[i].gap(ida.U()).gap);
       traces[i].push_back({ida.t(), ida.impulse_normal(i)});
     }
-    rec.track_momentum(obs.momentum(ida.V()));
+    rec.track_momentum(obs.momentum(ida.V()), ida.t());
   };
   rec.add_row(obs.row());
   const double h = opt.output_step.value_or(dt);
@@ -324,7 +353,8 @@ nlohmann::json ida_extra(const IdaOptions& opt, const IdaSettings& settings, int
 /// Each contact's intervals from the located events and impulses from the quadratures; peaks and
 /// stick/slip counts stay the recorder's (from the accepted steps).
 void summarize_contacts(const PenaltyIda& ida, const PenaltyContacts& contacts,
-                        const std::vector<ImpulseTrace>& traces, double merge_gap, SimulationResult& result) {
+                        const std::vector<ImpulseTrace>& traces, const ForcePeaks& peaks, double merge_gap,
+                        SimulationResult& result) {
   for (int i = 0; i < static_cast<int>(result.contacts.size()); ++i) {
     ContactSummary& s = result.contacts[i];
     const double step_sum = s.impulse_normal;
@@ -336,6 +366,11 @@ void summarize_contacts(const PenaltyIda& ida, const PenaltyContacts& contacts,
     s.extra = contacts.extra[i];
     s.extra["events"] = events;
     s.extra["impulse_normal_step_sum"] = step_sum;
+    // The peaks leave out each closure's transient (ForcePeaks), stated apart.
+    s.peak_R = s.peak_R_excluding_closure = peaks.outside[i];
+    s.extra["peak_R_with_closure"] = peaks.total[i];
+    s.extra["closure_dashpot_jump"] = peaks.dashpot_jump[i];
+    s.extra["closure_window"] = ForcePeaks::kClosureWindow * contacts.laws[i].cn / contacts.laws[i].kn;
     s.friction = contacts.laws[i].mu;  // as applied
   }
 }
@@ -370,13 +405,15 @@ SimulationResult solve(const Scene& scene) {
   const Eigen::VectorXd V0 = model.initial_velocity();
   ida.start(0.0, Eigen::VectorXd::Zero(n), V0);
   const Observer obs(model, ida, contacts, load);
-  rec.track_momentum(obs.momentum(V0));
+  rec.set_load_force(net_load_force(model, load));
+  rec.track_momentum(obs.momentum(V0), 0.0);
   std::ostringstream rule;
   rule << "contact phases (located by IDA root finding) separated by less than " << opt.merge_gap
        << " s are merged";
   rec.set_merge_rule(opt.merge_gap, rule.str());
   std::vector<ImpulseTrace> traces;
-  const double output_step = integrate(scene, opt, dt, ida, obs, model, rec, traces);
+  ForcePeaks peaks(static_cast<int>(scene.contacts.size()));
+  const double output_step = integrate(scene, opt, dt, ida, obs, model, rec, traces, peaks, contacts.laws);
 
   const auto V = ida.V();
   for (int b = 0; b < model.num_bodies(); ++b) {
@@ -392,7 +429,7 @@ SimulationResult solve(const Scene& scene) {
   std::vector<ContactKind> kinds;
   for (const auto& g : contacts.geometry) kinds.push_back(g->kind());
   SimulationResult result = rec.finish(kinds);
-  summarize_contacts(ida, contacts, traces, opt.merge_gap, result);
+  summarize_contacts(ida, contacts, traces, peaks, opt.merge_gap, result);
   return result;
 }
 

@@ -55,15 +55,16 @@ void ContactSolver::refresh_response(int c) {
   fresh_[c] = 1;
 }
 
-const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Ubar, const Eigen::VectorXd& U) {
+const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Ubar, const Eigen::VectorXd& U,
+                                                      const Eigen::VectorXd* U_prev) {
   const int m = static_cast<int>(pairs_.size());
   any_ = false;
   engaged_.clear();
   if (boxes_) boxes_->update(Ubar);
-  if (!hertz_.empty()) {  // the springs' forces at U^{p-1} and U^p
-    spring_prev_.swap(spring_now_);
-    spring_now_.swap(spring_next_);
-    std::fill(spring_next_.begin(), spring_next_.end(), 0.0);  // set by this solve's Hertz pairs
+  if (!hertz_.empty()) {  // the springs' energies at U^p; those at U^{p+1} are set by this solve
+    energy_now_.swap(energy_next_);
+    std::fill(energy_next_.begin(), energy_next_.end(), 0.0);
+    U_prev_ = U_prev ? U_prev : &U;
   }
   for (int c = 0; c < m; ++c) predict(c, Ubar, U);
   // Gauss-Seidel over contacts: each local solve sees the others' current forces. A contact that
@@ -85,7 +86,7 @@ const std::vector<ContactForce>& ContactSolver::solve(const Eigen::VectorXd& Uba
       ContactForce f;
       if (!hertz_pair(c))
         f = hard_local(c, g, s, Ann);
-      else if (g < -tol_[c] || spring_prev_[c] > 0.0)
+      else if (g < -tol_[c] || gap_prev_[c] < 0.0)
         f = hertz_local(c, g, s, Ann);
       else
         f = ContactForce{0.0, 0.0, g, s, ContactState::kOpen};
@@ -122,8 +123,11 @@ void ContactSolver::predict(int c, const Eigen::VectorXd& Ubar, const Eigen::Vec
   }
   out_[c] = ContactForce{0.0, 0.0, gbar_[c], sbar_[c], ContactState::kOpen};
   active_[c] = gbar_[c] < -tol_[c] && p.on_surface();
-  // A Hertz pair whose spring pushed at U^{p-1} still carries half that force (hertz_local).
-  if (hertz_pair(c) && spring_prev_[c] > 0.0) active_[c] = p.on_surface();
+  // A Hertz pair indenting at U^{p-1} still carries the secant force of its release (hertz_local).
+  if (hertz_pair(c)) {
+    gap_prev_[c] = p.g0() + ContactPair::eval(p.normal_row(), *U_prev_);
+    if (gap_prev_[c] < 0.0) active_[c] = p.on_surface();
+  }
   candidate_[c] = p.on_surface();
   if (active_[c]) {
     refresh_response(c);
@@ -202,56 +206,55 @@ void ContactSolver::finish_open_gaps() {
 }
 
 ContactForce ContactSolver::hertz_local(int c, double g, double s, double Ann) {
-  // The applied force is the mean of the spring's at U^{p-1} and U^{p+1}, R = (S_prev + S) / 2
-  // (hertz_law.hpp), with the corrected gap a + b R = -(S / k)^(2/3). Stick: tau from the
-  // tangential row (s + R Atn + tau Att = 0) leaves a scalar equation; slip: tau = sigma mu R.
+  // The applied force is the secant of the spring's energy from the gap at U^{p-1} to the
+  // corrected gap a + b R (hertz_law.hpp). Stick: tau from the tangential row
+  // (s + R Atn + tau Att = 0) leaves a scalar equation; slip: tau = sigma mu R.
   const ContactPair& p = pairs_[c];
-  const double k = hertz_[c], sp = spring_prev_[c];
-  auto spring = [&](double a, double b) { return hertz_force(a + 0.5 * b * sp, 0.5 * b, k); };
+  const double k = hertz_[c], gp = gap_prev_[c];
+  auto force = [&](double a, double b) { return hertz_step_force(a, b, gp, k); };
   ContactForce f{0.0, 0.0, g, s, ContactState::kOpen};
-  double S = 0.0;
   if (!friction_ || mu_[c] == 0.0) {
-    S = spring(g, Ann);
+    f.R = force(g, Ann);
     f.state = friction_ ? ContactState::kSlip : ContactState::kClosed;
   } else {
     const double Ant = ContactPair::eval(p.normal_row(), ht_[c]);
     const double Atn = ContactPair::eval(p.tangent_row(), hn_[c]);
     const double Att = ContactPair::eval(p.tangent_row(), ht_[c]);
-    S = spring(g - s * Ant / Att, Ann - Ant * Atn / Att);
-    const double Rs = 0.5 * (S + sp), Ts = -(s + Rs * Atn) / Att;
-    f.state = ContactState::kStick;
+    const double Rs = force(g - s * Ant / Att, Ann - Ant * Atn / Att), Ts = -(s + Rs * Atn) / Att;
+    f.R = Rs;
     f.tau = Ts;
+    f.state = ContactState::kStick;
     if (!(Rs > 0.0 && std::abs(Ts) <= mu_[c] * Rs)) {
       const double sigma = slip_direction(Rs, Ts, s);
-      S = spring(g, Ann + sigma * mu_[c] * Ant);
-      f.tau = sigma * mu_[c] * 0.5 * (S + sp);
+      f.R = force(g, Ann + sigma * mu_[c] * Ant);
+      f.tau = sigma * mu_[c] * f.R;
       f.state = ContactState::kSlip;
     }
   }
-  spring_next_[c] = S;
-  f.R = 0.5 * (S + sp);
-  if (!(f.R > 0.0)) return ContactForce{0.0, 0.0, g, s, ContactState::kOpen};
+  if (!(f.R > 0.0)) {
+    energy_next_[c] = 0.0;
+    return ContactForce{0.0, 0.0, g, s, ContactState::kOpen};
+  }
   f.gap_next = g + f.R * Ann + (friction_ ? f.tau * ContactPair::eval(p.normal_row(), ht_[c]) : 0.0);
   if (friction_)
     f.slip_next = s + f.R * ContactPair::eval(p.tangent_row(), hn_[c]) +
                   f.tau * ContactPair::eval(p.tangent_row(), ht_[c]);
+  energy_next_[c] = hertz_potential(f.gap_next, k);
   return f;
 }
 
 void ContactSolver::set_hertz(std::vector<double> k) {
   hertz_ = std::move(k);
-  spring_prev_.assign(hertz_.size(), 0.0);
-  spring_now_.assign(hertz_.size(), 0.0);
-  spring_next_.assign(hertz_.size(), 0.0);
+  gap_prev_.assign(hertz_.size(), 0.0);
+  energy_now_.assign(hertz_.size(), 0.0);
+  energy_next_.assign(hertz_.size(), 0.0);
 }
 
 double ContactSolver::hertz_energy() const {
   // The springs' energy at the mean of U^p and U^{p+1}: the work R (g^{p+1} - g^{p-1}) / 2 of
-  // the trapezoidal force telescopes into it (exactly for a linear spring).
+  // the secant force telescopes into it.
   double e = 0.0;
-  for (std::size_t c = 0; c < hertz_.size(); ++c)
-    e += 0.5 *
-         (paper::hertz_energy(spring_now_[c], hertz_[c]) + paper::hertz_energy(spring_next_[c], hertz_[c]));
+  for (std::size_t c = 0; c < hertz_.size(); ++c) e += 0.5 * (energy_now_[c] + energy_next_[c]);
   return e;
 }
 

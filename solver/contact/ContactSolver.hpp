@@ -45,7 +45,12 @@ class ContactSolver {
                 std::vector<double> gap_tol, ApplyH apply_H);
 
   /// @brief Solves for Ubar (predicted U^{p+1}) and U (current U^p). Re-locates sliding points.
-  const std::vector<ContactForce>& solve(const Eigen::VectorXd& Ubar, const Eigen::VectorXd& U);
+  /// @param Ubar the contact-free prediction of U^{p+1}
+  /// @param U the displacement U^p
+  /// @param U_prev U^{p-1}, read by the Hertz pairs only (their force is the secant of the
+  ///        spring's energy from the gap at U^{p-1}); nullptr: the gap at U^p stands in for it
+  const std::vector<ContactForce>& solve(const Eigen::VectorXd& Ubar, const Eigen::VectorXd& U,
+                                         const Eigen::VectorXd* U_prev = nullptr);
   /// @brief Forces of the last solve (all open before the first), per contact.
   const std::vector<ContactForce>& forces() const { return out_; }
   /// @brief Adds sum W lambda of the last solve into f (a force vector, N).
@@ -67,13 +72,14 @@ class ContactSolver {
   void set_closure_slip(ClosureSlip c) { closure_slip_ = c; }
   /// @brief Per contact pair: the Hertz stiffness k (N/m^1.5), or 0 for the hard law (the
   /// default of every pair). A Hertz pair's spring force S follows its corrected gap,
-  /// g^{p+1} = -(S / k)^(2/3) (hertz_law.hpp), and the force applied at step p is the
-  /// trapezoidal mean R^p = (S(U^{p-1}) + S(U^{p+1})) / 2: centred on step p (second order, where
-  /// S(U^{p+1}) alone is a step late and first order) and, like the average-acceleration rule,
-  /// stable for any spring stiffness.
+  /// and the force applied at step p is the secant of the spring's energy V between the gaps at
+  /// U^{p-1} and U^{p+1} (hertz_law.hpp): centred on step p (second order), and its work over
+  /// the step is exactly the change of V, so the springs neither create nor lose energy at any
+  /// step and any stiffness (for a linear spring it is the trapezoidal mean of the forces).
   void set_hertz(std::vector<double> k);
   /// @brief The energy stored in the Hertz springs after the last solve (J; 0 with the hard
-  /// law): the mean of their energies at U^p and U^{p+1}.
+  /// law): the mean of their energies at U^p and U^{p+1}, the quantity the secant force's work
+  /// telescopes into.
   double hertz_energy() const;
 
  private:
@@ -104,8 +110,10 @@ class ContactSolver {
   std::vector<int> engaged_;     ///< active pairs of this solve, in index order
   SearchBoxes* boxes_ = nullptr;
   ClosureSlip closure_slip_ = ClosureSlip::kWholeStep;
-  std::vector<double> hertz_;  ///< per pair: Hertz k (N/m^1.5), 0 = hard; empty: all hard
-  std::vector<double> spring_prev_, spring_now_, spring_next_;  ///< N, per pair: S at U^{p-1}, U^p, U^{p+1}
+  std::vector<double> hertz_;                     ///< per pair: Hertz k (N/m^1.5), 0 = hard; empty: all hard
+  std::vector<double> gap_prev_;                  ///< m, per Hertz pair: the gap at U^{p-1}
+  std::vector<double> energy_now_, energy_next_;  ///< J, per pair: V at U^p and U^{p+1}
+  const Eigen::VectorXd* U_prev_ = nullptr;       ///< U^{p-1} of the current solve
   bool any_ = false;
 };
 

@@ -161,11 +161,11 @@ void ExplicitContactIntegrator::solve_contacts() {
 }
 
 void ExplicitContactIntegrator::resolve_contacts() {
-  solver_.solve(Ubar_, U_);
+  solver_.solve(Ubar_, U_, &U_prev_);
   if (hertz_) {
     // The contact work below counts what the bodies put into the Hertz springs: the change of
-    // their energy is taken back out of the dissipated energy (what stays there is the
-    // discretisation's error in the springs' work).
+    // their energy is taken back out of the dissipated energy. The secant force's work is that
+    // change exactly (hertz_law.hpp): a frictionless Hertz contact leaves dissipated unchanged.
     const double e = solver_.hertz_energy();
     dissipated_ -= e - hertz_energy_;
     hertz_energy_ = e;

@@ -48,4 +48,14 @@ Eigen::VectorXd load_vector(const Model& model, const Scene& scene) {
   return F;
 }
 
+Vec2 net_load_force(const Model& model, const Eigen::VectorXd& load) {
+  Vec2 F{0.0, 0.0};
+  if (load.size() == 0) return F;
+  for (int c = 0; c < 2; ++c) {
+    const std::vector<Vec2> along(model.num_bodies(), Vec2{c == 0 ? 1.0 : 0.0, c == 1 ? 1.0 : 0.0});
+    F[c] = load.dot(model.translation(along));
+  }
+  return F;
+}
+
 }  // namespace beamimpact

@@ -18,4 +18,11 @@ namespace beamimpact {
 /// @param scene the scene (its [loads])
 Eigen::VectorXd load_vector(const Model& model, const Scene& scene);
 
+/// @brief The net force of a load vector on the bodies' linear momentum (N): F . r_c with r_c
+/// the rigid translation of every body along axis c (the rate of the total momentum the loads
+/// drive; supports and contacts add their own). Zero for an empty load.
+/// @param model the assembled model
+/// @param load F^P (load_vector), or empty
+Vec2 net_load_force(const Model& model, const Eigen::VectorXd& load);
+
 }  // namespace beamimpact

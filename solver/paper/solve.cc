@@ -10,6 +10,7 @@
 #include <solver/integrator/ExplicitContactIntegrator.hpp>
 #include <solver/model/critical_dt.hpp>
 #include <solver/model/deformed_geometry.hpp>
+#include <solver/model/load_vector.hpp>
 #include <solver/paper/gap_in_contact.hpp>
 #include <solver/record/FieldWriter.hpp>
 #include <solver/record/ResultRecorder.hpp>
@@ -241,7 +242,7 @@ void record_step(const ExplicitContactIntegrator& integ, long p, long N, const S
         "the run diverged at t = {:.6g} s (energy {:.3g} J from {:.3g} J) with dt = {:.6g} s, critical "
         "step {:.6g} s",
         row.t, E, E0, integ.dt(), critical_dt));
-  rec.track_momentum(row.momentum);
+  rec.track_momentum(row.momentum, row.t);
   if (fields) write_fields(integ, row.t, *fields);
   rec.add_row(std::move(row));
 }
@@ -310,6 +311,7 @@ SimulationResult solve(const Scene& scene_in, const std::filesystem::path& field
   r.extra["threads"] = integ.threads();
   if (!integ.threads_note().empty()) r.extra["threads_note"] = integ.threads_note();
   rec.set_initial_energy(integ.initial_energy());
+  if (effects.loads) rec.set_load_force(net_load_force(model, load_vector(model, scene)));
   std::vector<DeformedSurface> surfaces;  // the real gap of each pair, from the deformed geometry
   for (const ContactPair& pair : integ.pairs())
     surfaces.emplace_back(model, pair.target_body(), pair.striker_node());

@@ -33,17 +33,21 @@ void ResultRecorder::set_merge_rule(double merge_gap, const std::string& rule) {
   stats_.assign(scene_.contacts.size(), ContactStats(merge_gap, rule));
 }
 
-void ResultRecorder::track_momentum(const Vec2& p) {
+void ResultRecorder::track_momentum(const Vec2& p, double t) {
   if (!momentum_started_) {
     p0_ = p;
+    t0_ = t;
     momentum_started_ = true;
   }
-  r_.momentum_drift_max = std::max(r_.momentum_drift_max, std::hypot(p[0] - p0_[0], p[1] - p0_[1]));
+  const double dx = p[0] - p0_[0] - load_force_[0] * (t - t0_),
+               dy = p[1] - p0_[1] - load_force_[1] * (t - t0_);
+  r_.momentum_drift_max = std::max(r_.momentum_drift_max, std::hypot(dx, dy));
 }
 
 void ResultRecorder::add_row(HistoryRow row) {
   const double E = row.kinetic + row.strain;
   if (rows_++ == 0 && !initial_energy_set_) r_.energy_initial = E;
+  r_.end_time = row.t;
   r_.energy_final = E;
   load_work_final_ = row.load_work;
   if (scene_.output.history) r_.history.push_back(std::move(row));

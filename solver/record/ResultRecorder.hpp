@@ -55,8 +55,12 @@ class ResultRecorder {
     if (gap < real_gap_[contact].first) real_gap_[contact] = {gap, t};
   }
 
-  /// @brief Total linear momentum (N s); the drift is measured from the first value given.
-  void track_momentum(const Vec2& p);
+  /// @brief Total linear momentum (N s) at time t (s); the drift is measured from the first value
+  /// given, net of the loads' impulse since then: |p(t) - p(t0) - F (t - t0)| (set_load_force).
+  void track_momentum(const Vec2& p, double t = 0.0);
+  /// @brief The loads' net force on the bodies' momentum (N, constant in time: the scene's
+  /// [loads]); its impulse is taken out of the momentum drift. Call before track_momentum.
+  void set_load_force(const Vec2& F) { load_force_ = F; }
 
   /// @brief One output row: the first row's kinetic + strain energy is E0 (unless
   /// set_initial_energy() gave it), the last one's is the final energy. The row is kept for
@@ -91,6 +95,8 @@ class ResultRecorder {
   long rows_ = 0;                                    ///< output rows seen (kept or not: [output] history)
   bool momentum_started_ = false;
   Vec2 p0_{};
+  double t0_ = 0.0;
+  Vec2 load_force_{};  ///< N, the loads' net force on the momentum
   std::chrono::steady_clock::time_point wall0_;
 };
 

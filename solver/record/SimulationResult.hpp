@@ -62,7 +62,10 @@ struct SimulationResult {
   double dt = 0.0;               ///< s, the step (nominal output step for adaptive methods)
   double critical_dt = 0.0;      ///< s, 0 when not applicable
   long steps = 0;                ///< time steps taken
-  long dofs = 0;                 ///< DOFs of the discrete beam model (0: none, e.g. a modal solution)
+  /// @brief s, the time of the last row: a fixed step's ceil(end / dt) dt, at time.end or up to
+  /// one step past it (0: not recorded, summary.json then states time.end)
+  double end_time = 0.0;
+  long dofs = 0;  ///< DOFs of the discrete beam model (0: none, e.g. a modal solution)
   double wall_seconds = 0.0;
   std::vector<std::string> effects;            ///< e.g. {"axial"} or {"axial", "bending", "friction"}
   std::map<std::string, std::string> assumed;  ///< method-level defaults (merged with the scene's)
@@ -70,7 +73,8 @@ struct SimulationResult {
   std::vector<ContactSummary> contacts;
   std::map<std::string, Vec2> final_velocity;       ///< body name -> centre-of-mass velocity, m/s
   double energy_initial = 0.0, energy_final = 0.0;  ///< J, kinetic + strain
-  double momentum_drift_max = 0.0;                  ///< N s, max |p(t) - p(0)| (meaningful for free bodies)
+  double momentum_drift_max =
+      0.0;  ///< N s, max |p(t) - p(0) - F t|, F the loads' net force (meaningful for free bodies)
   nlohmann::json extra = nlohmann::json::object();  ///< method-specific top-level keys
 };
 

@@ -98,7 +98,7 @@ nlohmann::json summary_json(const Scene& scene, const SimulationResult& r) {
             {"version", kVersion},
             {"dt", r.dt},
             {"steps", r.steps},
-            {"end_time", scene.time.end},
+            {"end_time", r.end_time > 0.0 ? r.end_time : scene.time.end},  // the last row's time
             {"wall_seconds", r.wall_seconds},
             {"critical_dt", r.critical_dt},
             {"effects", r.effects},

@@ -19,6 +19,22 @@ std::string type_name(const toml::node& n) {
   }
 }
 
+/// The edit distance of a and b (insertions, deletions, substitutions).
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
 std::string shortest(double v) {
   std::ostringstream s;
   s.precision(17);
@@ -46,6 +62,20 @@ void TableReader::fail(const std::string& key, const std::string& message) const
   throw InputError(file_, path(key), message);
 }
 
+void TableReader::missing(const std::string& key, const std::string& what) const {
+  // A key of this table that no read asked for and that is a key's spelling away from the one
+  // missing is named: "dtt = 0.01" must not read as "time.dt missing" alone.
+  std::string near;
+  for (const auto& [k, v] : table_) {
+    const std::string name(k.str());
+    if (seen_.count(name) || name == key) continue;
+    if (edit_distance(name, key) <= (key.size() <= 4 ? 1u : 2u))
+      near += (near.empty() ? "" : ", ") + path(name);
+  }
+  fail(key, "missing; expected " + what +
+                (near.empty() ? "" : " (the table has the unknown key " + near + ": a misspelling?)"));
+}
+
 void TableReader::mark(const std::string& key) {
   seen_.insert(key);
   if (active_log) active_log->keys_.insert(path(key));
@@ -65,7 +95,7 @@ const toml::node* TableReader::raw(const std::string& key) { return find(key); }
 
 double TableReader::number(const std::string& key, const std::string& what) {
   const toml::node* n = find(key);
-  if (!n) fail(key, "missing; expected " + what);
+  if (!n) missing(key, what);
   double v;
   if (auto i = n->as_integer())
     v = static_cast<double>(i->get());
@@ -88,7 +118,7 @@ double TableReader::number_or(const std::string& key, double fallback, const std
 
 long TableReader::integer(const std::string& key, const std::string& what) {
   const toml::node* n = find(key);
-  if (!n) fail(key, "missing; expected " + what);
+  if (!n) missing(key, what);
   auto i = n->as_integer();
   if (!i) fail(key, "expected " + what + ", got " + type_name(*n));
   return static_cast<long>(i->get());
@@ -105,7 +135,7 @@ long TableReader::integer_or(const std::string& key, long fallback, const std::s
 
 std::string TableReader::string(const std::string& key, const std::string& what) {
   const toml::node* n = find(key);
-  if (!n) fail(key, "missing; expected " + what);
+  if (!n) missing(key, what);
   auto s = n->as_string();
   if (!s) fail(key, "expected " + what + ", got " + type_name(*n));
   return s->get();
@@ -144,7 +174,7 @@ std::vector<std::string> TableReader::strings(const std::string& key, bool requi
   std::vector<std::string> out;
   const toml::node* n = find(key);
   if (!n) {
-    if (required) fail(key, "missing; expected an array of strings");
+    if (required) missing(key, "an array of strings");
     return out;
   }
   const toml::array* a = n->as_array();
@@ -159,7 +189,7 @@ std::vector<std::string> TableReader::strings(const std::string& key, bool requi
 
 Vec2 TableReader::vec2(const std::string& key, const std::string& what) {
   const toml::node* n = find(key);
-  if (!n) fail(key, "missing; expected " + what);
+  if (!n) missing(key, what);
   const toml::array* a = n->as_array();
   if (!a || a->size() != 2) fail(key, "expected " + what + " (an array of two numbers)");
   Vec2 v{};

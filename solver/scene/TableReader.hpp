@@ -71,6 +71,9 @@ class TableReader {
   const toml::node* raw(const std::string& key);
   /// @brief Throws InputError for a value that fails a check (positivity, range, ...).
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+  /// @brief Throws InputError for a required key that is absent ("missing; expected `what`"),
+  /// naming any key of the table no read asked for within a spelling of it (`dtt` for `dt`).
+  [[noreturn]] void missing(const std::string& key, const std::string& what) const;
   /// @brief Throws InputError naming the first key that no read asked for.
   void finish() const;
   /// @brief "prefix.key" (or "key" when the prefix is empty).

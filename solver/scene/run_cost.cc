@@ -88,6 +88,19 @@ RunCost check_run_cost(const Scene& scene, double dt) {
   return c;
 }
 
+double check_model_cost(const Scene& scene) {
+  double dofs = 0.0;
+  for (const Body& b : scene.bodies) dofs += 3.0 * (static_cast<double>(b.elements) + 1.0);
+  const double bytes = dofs * kBytesPerDof;
+  if (bytes > kOrdinaryBytes && !scene.time.allow_long_run)
+    throw SceneError(
+        scene.file, "time.allow_long_run",
+        fmt::format("this model is far beyond an ordinary one: {:.3g} DOFs, about {:.3g} GB of "
+                    "memory (ordinary: at most {:g} GB); set time.allow_long_run = true to build it",
+                    dofs, bytes / 1e9, kOrdinaryBytes / 1e9));
+  return bytes;
+}
+
 long step_count(const Scene& scene, double dt) {
   const RunCost c = estimate_run_cost(scene, dt);
   if (!(c.steps <= kMostSteps)) check_run_cost(scene, dt);  // throws with the message

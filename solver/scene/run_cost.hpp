@@ -58,6 +58,12 @@ inline double planned_dt(const Scene& scene) {
 /// @return the estimate it checked (estimate_run_cost(scene, dt)).
 RunCost check_run_cost(const Scene& scene, double dt);
 
+/// @brief Throws SceneError (key time.allow_long_run) when the assembled model of `scene` alone
+/// (estimate_run_cost's model part, no history) exceeds kOrdinaryBytes without
+/// time.allow_long_run: `beamimpact model` refuses what `run` would refuse for its model.
+/// @return the estimated bytes of the model
+double check_model_cost(const Scene& scene);
+
 /// @brief The number of steps ceil(end / dt - 1e-9) as a long, after the check against
 /// kMostSteps (SceneError on key time.dt otherwise).
 long step_count(const Scene& scene, double dt);

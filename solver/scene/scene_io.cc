@@ -1,7 +1,9 @@
 #include <solver/scene/scene_io.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -123,7 +125,7 @@ const toml::table& sub_table(TableReader& r, const std::string& key, bool requir
                              const toml::table& empty) {
   const toml::node* n = r.raw(key);
   if (!n) {
-    if (required) r.fail(key, "missing; expected a table [" + key + "]");
+    if (required) r.missing(key, "a table [" + key + "]");
     return empty;
   }
   if (!n->as_table()) r.fail(key, "expected a table [" + key + "]");
@@ -158,7 +160,7 @@ int node_ref(TableReader& r, const std::string& key, const Body& body) {
   const toml::node* n = r.raw(key);
   const std::string expected = "\"start\", \"end\", \"all\" (contact search) or a node index 0.." +
                                std::to_string(body.elements) + " of body '" + body.name + "'";
-  if (!n) r.fail(key, "missing; expected " + expected);
+  if (!n) r.missing(key, expected);
   if (auto s = n->as_string()) {
     if (s->get() == "start") return 0;
     if (s->get() == "end") return body.elements;
@@ -194,7 +196,7 @@ int nearest_node(const Body& striker, const Body& target) {
 
 void read_time(TableReader& r, TimeSettings& t) {
   const toml::node* dt = r.raw("dt");
-  if (!dt) r.fail("dt", "missing; expected a positive number (s) or \"auto\"");
+  if (!dt) r.missing("dt", "a positive number (s) or \"auto\"");
   if (auto s = dt->as_string()) {
     if (s->get() != "auto")
       r.fail("dt", "expected a positive number (s) or \"auto\", got \"" + s->get() + "\"");
@@ -288,7 +290,14 @@ void read_supports(TableReader& r, Body& b, std::map<std::string, std::string>* 
 /// @brief The scene file's bytes; records its SHA-256 in sc.
 std::string read_scene_file(const std::filesystem::path& path, Scene& sc) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(sc.file, "", "cannot open the scene file");
+  if (!in) {
+    const int err = errno;  // the reason, as the system gives it (No such file or directory, ...)
+    std::error_code ec;
+    const bool dir = std::filesystem::is_directory(path, ec);
+    throw SceneError(
+        sc.file, "",
+        std::string("cannot open the scene file: ") + (dir ? "it is a directory" : std::strerror(err)));
+  }
   std::stringstream buf;
   buf << in.rdbuf();
   const std::string text = buf.str();

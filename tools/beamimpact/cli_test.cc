@@ -229,4 +229,60 @@ TEST(Cli, FailedRerunRemovesAStaleSummary) {
   EXPECT_FALSE(fs::exists(out / "summary.json"));
 }
 
+TEST(Cli, StaleFieldsGoWithTheRunThatDoesNotWriteThem) {
+  // A run without --fields into a directory that holds an earlier run's fields: no .vtu of that
+  // run may stand beside the new summary.json; a diverged run with fields leaves none either.
+  const fs::path out = fresh_dir("stale_fields");
+  ASSERT_EQ(run_cli("run " + paper_scene("s1_central") + " --fields --out " + out.string()).code, 0);
+  ASSERT_TRUE(fs::exists(out / "fields.pvd"));
+  ASSERT_EQ(run_cli("run " + paper_scene("s1_central") + " --out " + out.string()).code, 0);
+  EXPECT_FALSE(fs::exists(out / "fields.pvd"));
+  EXPECT_FALSE(fs::exists(out / "fields"));
+  const Result r = run_cli("run " + paper_scene("s1_central") + " --fields --out " + out.string() +
+                           " --set time.dt=0.2 --set time.allow_above_critical=true --set time.end=400");
+  EXPECT_EQ(r.code, 3) << r.output;
+  EXPECT_FALSE(fs::exists(out / "fields"));
+}
+
+TEST(Cli, ModelIsCheckedForCostAndARefusalLeavesNoEarlierModel) {
+  // 1e7 elements per bar: `run` refuses it at once (exit 2); `model` grew to 7.1 GB and ran out
+  // of memory (exit 3). It now refuses it as `run` does, and a refused export leaves no model.json.
+  const fs::path out = fresh_dir("model_cost");
+  ASSERT_EQ(run_cli("model " + paper_scene("s1_central") + " --out " + out.string()).code, 0);
+  ASSERT_TRUE(fs::exists(out / "model.json"));
+  const Result r = run_cli("model " + paper_scene("s1_central") + " --out " + out.string() +
+                           " --set bodies.A.elements=10000000 --set bodies.B.elements=10000000");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("time.allow_long_run"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out / "model.json"));
+}
+
+TEST(Cli, SmallSlipsAreRefusedOrStated) {
+  const fs::path out = fresh_dir("slips");
+  // A typo beside a missing required key is named.
+  const Result typo = run_cli("run " + bad_scene("dt = 0.01", "dtt = 0.01") + " --out " + out.string());
+  EXPECT_EQ(typo.code, 2) << typo.output;
+  EXPECT_NE(typo.output.find("time.dtt"), std::string::npos) << typo.output;
+  // A missing file says why.
+  const Result missing = run_cli("run /no/such/scene.toml --out " + out.string());
+  EXPECT_EQ(missing.code, 2) << missing.output;
+  EXPECT_NE(missing.output.find("No such file or directory"), std::string::npos) << missing.output;
+  // Option ranges: jobs >= 1, a finite time limit > 0.
+  for (const std::string& bad :
+       {"verify verification/matrix.toml --jobs 0 --out " + out.string(),
+        "sweep " + paper_scene("s1_central") + " --jobs -1 --out " + out.string(),
+        "score paper --jobs 0 --out " + out.string(), "score paper --timeout nan --out " + out.string(),
+        "conform paper --timeout 0 --out " + out.string()}) {
+    const Result r = run_cli(bad);
+    EXPECT_EQ(r.code, 2) << bad << "\n" << r.output;
+  }
+  // The last row's time is the end time summary.json states (dt 0.03 s: 34 steps to 1.02 s).
+  ASSERT_EQ(run_cli("run " + paper_scene("s1_central") + " --set time.dt=0.03 --set time.end=1 --out " +
+                    out.string())
+                .code,
+            0);
+  const auto j = nlohmann::json::parse(std::ifstream(out / "summary.json"));
+  EXPECT_NEAR(j["end_time"].get<double>(), 34 * 0.03, 1e-12);
+}
+
 }  // namespace

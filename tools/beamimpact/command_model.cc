@@ -1,6 +1,7 @@
 #include "command_model.hpp"
 #include "command_scenes.hpp"
 
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -9,7 +10,9 @@
 
 #include <api/model_export.hpp>
 #include <solver/scene/SceneError.hpp>
+#include <solver/scene/run_cost.hpp>
 #include <solver/scene/scene_io.hpp>
+#include <solver/util/OutputLock.hpp>
 #include <verification/matrix/JobSpec.hpp>
 
 namespace beamimpact {
@@ -23,13 +26,19 @@ struct ModelArgs {
 };
 
 void export_scene(const ModelArgs& a) {
+  {  // a refused export leaves no earlier one's model.json to vouch for it
+    const OutputLock lock(a.out);
+    std::filesystem::remove(std::filesystem::path(a.out) / "model.json");
+  }
   if (a.mesh_factor < 1 || a.mesh_factor > 1000)
     throw SceneError(a.scene, "--mesh-factor",
                      "expected an element multiplier 1..1000, got " + std::to_string(a.mesh_factor));
   std::vector<std::string> sets;
   if (a.mesh_factor != 1) sets = verification::mesh_overrides(a.scene, a.mesh_factor);
   sets.insert(sets.end(), a.sets.begin(), a.sets.end());  // an explicit --set wins
-  const nlohmann::json doc = export_model(load_scene(a.scene, sets), a.out);
+  const Scene scene = load_scene(a.scene, sets);
+  check_model_cost(scene);  // as `run` refuses it, before anything is allocated
+  const nlohmann::json doc = export_model(scene, a.out);
   if (a.quiet) return;
   fmt::print("model of {}: {} layout, {} equations, {} contact(s), dt {:.6g} s, end {:.6g} s\n",
              doc["scene"].get<std::string>(), doc["layout"].get<std::string>(), doc["equations"].get<int>(),

@@ -1,5 +1,7 @@
 #include "command_protocol.hpp"
 
+#include "option_checks.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
@@ -243,7 +245,7 @@ void add_protocol_commands(CLI::App& app) {
       "is broken");
   c->add_option("NAME", ca->method, "The method (`beamimpact methods`)")->required();
   c->add_option("--out", ca->out, "Output directory (runs/, scenes/, junit.xml; default conform-NAME)");
-  c->add_option("--timeout", ca->timeout, "s, per run")->capture_default_str();
+  c->add_option("--timeout", ca->timeout, "s, per run")->capture_default_str()->check(positive_seconds());
   c->add_option("--scenes", ca->scenes,
                 "The conformance scenes to run, comma-separated (default: all): end_to_end, transverse, "
                 "node_to_surface, oblique_rotation, rigid_friction, two_contacts, friction; the malformed "
@@ -269,8 +271,8 @@ void add_protocol_commands(CLI::App& app) {
   s->add_option("--cards", sa->cards,
                 "The benchmark cards giving each scene's reference and tolerances (default "
                 "verification/cards.toml; docs/benchmark-cards.md)");
-  s->add_option("--jobs", sa->jobs, "Runs in parallel")->capture_default_str();
-  s->add_option("--timeout", sa->score_timeout, "s per run (default 900)");
+  s->add_option("--jobs", sa->jobs, "Runs in parallel")->capture_default_str()->check(job_count());
+  s->add_option("--timeout", sa->score_timeout, "s per run (default 900)")->check(positive_seconds());
   s->add_option(
        "--sets", sa->score.sets,
        "Scene sets scored: paper (verification/scenes/paper), hard (verification/scenes/hard), exact "

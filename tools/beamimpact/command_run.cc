@@ -36,7 +36,11 @@ void print_result(const SimulationResult& r, const std::string& out) {
     if (!c.intervals.empty()) fmt::print(", first [{:.6g}, {:.6g}] s", c.intervals[0][0], c.intervals[0][1]);
     fmt::print("\n");
   }
-  fmt::print("  energy {:.6g} -> {:.6g} J\n", r.energy_initial, r.energy_final);
+  if (r.extra.contains("loads") && r.extra["loads"].contains("work_final"))  // the loads' work fed it
+    fmt::print("  energy {:.6g} -> {:.6g} J, the loads' work {:.6g} J\n", r.energy_initial, r.energy_final,
+               r.extra["loads"]["work_final"].get<double>());
+  else
+    fmt::print("  energy {:.6g} -> {:.6g} J\n", r.energy_initial, r.energy_final);
   if (std::filesystem::exists(std::filesystem::path(out) / "history.csv"))
     fmt::print("  wrote {}/history.csv and {}/summary.json\n", out, out);
   else

@@ -1,6 +1,8 @@
 #include "command_verification.hpp"
+
 #include "command_run.hpp"
 #include "command_scenes.hpp"
+#include "option_checks.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -209,7 +211,7 @@ void add_verify_command(CLI::App& app) {
                 "meshes and small dt)")
       ->check(CLI::IsMember(VerificationMatrix::tier_names()))
       ->capture_default_str();
-  v->add_option("--jobs", va->jobs, "Runs in parallel")->capture_default_str();
+  v->add_option("--jobs", va->jobs, "Runs in parallel")->capture_default_str()->check(job_count());
   v->add_option("--only", va->only, "Only cases whose name contains this text (e.g. s1_central)");
   v->add_flag("--fresh", va->fresh,
               "Run everything again (default: the runs an interrupted verify finished in OUT/runs, with the "
@@ -287,7 +289,7 @@ void add_verification_commands(CLI::App& app) {
                     "), or a run directory")
       ->capture_default_str();
   s->add_option("--out", sa->out, "Output directory (runs/, sweep.md, sweep.csv, sweep.json)")->required();
-  s->add_option("--jobs", sa->o.jobs, "Runs in parallel")->capture_default_str();
+  s->add_option("--jobs", sa->o.jobs, "Runs in parallel")->capture_default_str()->check(job_count());
   add_threads_option(s, sa->threads,
                      "Threads of each run of the paper integrator (as run --threads; default: each run's)");
   add_methods_option(s);

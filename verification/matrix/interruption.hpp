@@ -1,16 +1,17 @@
 #pragma once
 /// @file interruption.hpp
-/// @brief Clean interruption of studies (verify, sweep): SIGINT / SIGTERM are caught and
-/// recorded; the child runs (each in its own process group) are then ended by spawn_and_wait,
+/// @brief Clean interruption of studies (verify, sweep): SIGINT / SIGTERM / SIGHUP are caught
+/// and recorded (catch_interruptions, api/child_process.hpp); the child runs (each in its own
+/// process group) are then ended by the handler and spawn_and_wait,
 /// no new run starts, and the command writes its report marked incomplete and exits non-zero.
 
 namespace beamimpact::verification {
 
-/// @brief Installs the SIGINT and SIGTERM handlers (they only record the signal). Call once,
-/// before the first child starts.
+/// @brief Installs the SIGINT, SIGTERM and SIGHUP handlers (they end the children and record the
+/// signal). Call once, before the first child starts.
 void forward_interruptions();
 
-/// @brief The signal that interrupted this process (SIGINT, SIGTERM), or 0.
+/// @brief The signal that interrupted this process (SIGINT, SIGTERM, SIGHUP), or 0.
 int interruption();
 
 /// @brief The exit code of an interrupted command: 128 + the signal (130 for SIGINT), the

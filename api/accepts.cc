@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include <solver/model/Effects.hpp>
-#include <solver/scene/SceneError.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact {
 namespace {
@@ -16,7 +16,7 @@ namespace {
 /// capabilities were declared.
 [[noreturn]] void refuse(const Method& m, const Scene& scene, const std::string& key, const std::string& what,
                          const std::string& expected, const std::string& flag) {
-  throw SceneError(
+  throw InputError(
       scene.file, key,
       fmt::format("not applicable: method '{}' does not take {}; expected {} (accepts.{} = false, {})",
                   m.name, what, expected, flag, m.origin));
@@ -31,7 +31,7 @@ void check_tables(const Scene& scene) {
       if (!m.options_table.empty()) tables += (tables.empty() ? "" : ", ") + m.options_table;
     }
     if (!known)
-      throw SceneError(scene.file, table,
+      throw InputError(scene.file, table,
                        "unknown table [" + table + "]; expected a scene table or a method's options table (" +
                            tables + ")");
   }
@@ -73,7 +73,7 @@ int mesh_factor(const std::string& mesh, const std::string& file, const std::str
   char* end = nullptr;
   const long f = std::strtol(mesh.c_str(), &end, 10);
   if (end == mesh.c_str() || *end != '\0' || f < 1 || f > 64)
-    throw SceneError(file, "mesh",
+    throw InputError(file, "mesh",
                      "expected an element multiplier 1..64 for method '" + method + "', got '" + mesh + "'");
   return static_cast<int>(f);
 }

@@ -9,7 +9,7 @@
 
 namespace beamimpact {
 
-/// @brief Throws SceneError(scene file, key, why) when the method does not take this run: a
+/// @brief Throws InputError(scene file, key, why) when the method does not take this run: a
 /// step asked for (time.dt / time.fraction override) from a method that picks its own, a mesh it
 /// cannot take, friction, large rotation, rigid bodies, contact search, several contacts,
 /// Timoshenko beams, the Hertz law, bending, a node-to-surface contact or loads it does not model, or an
@@ -19,7 +19,7 @@ namespace beamimpact {
 /// @param mesh the mesh asked for ("" none; an element multiplier or the method's preset)
 void check_accepts(const Method& m, const Scene& scene, const std::string& mesh);
 
-/// @brief The element multiplier `mesh` (1..64); throws SceneError naming `file` and "mesh".
+/// @brief The element multiplier `mesh` (1..64); throws InputError naming `file` and "mesh".
 int mesh_factor(const std::string& mesh, const std::string& file, const std::string& method);
 
 }  // namespace beamimpact

@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include <solver/scene/SceneError.hpp>
 #include <solver/testing/test_scenes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact {
 namespace {
@@ -37,7 +37,7 @@ TEST(Registry, HasEveryMethodOnceWithWhatItAccepts) {
   try {
     method("bogus", "matrix.toml", "method");
     FAIL() << "no error for an unknown method";
-  } catch (const SceneError& e) {
+  } catch (const InputError& e) {
     const std::string m = e.what();
     EXPECT_NE(m.find("matrix.toml"), std::string::npos) << m;
     EXPECT_NE(m.find("paper, exact, ida, fenicsx"), std::string::npos) << m;
@@ -61,7 +61,7 @@ TEST(Api, RefusesWhatTheMethodDoesNotTakeNamingFileKeyAndExpected) {
     try {
       run(testing::paper_scene("s1_central"), c.method, RunOptions{c.set, std::nullopt});
       ADD_FAILURE() << c.method << " ran " << c.key;
-    } catch (const SceneError& e) {
+    } catch (const InputError& e) {
       const std::string what = e.what();
       EXPECT_EQ(e.key(), c.key) << what;
       EXPECT_NE(what.find("s1_central.toml"), std::string::npos) << what;
@@ -92,8 +92,8 @@ TEST(Api, WritesTheRunDirectoryAndNeedsOneForExternalMethods) {
   EXPECT_TRUE(std::filesystem::exists(dir / "history.csv"));
   std::filesystem::remove_all(dir);
   // An external method writes its run into a directory: none given is bad input.
-  EXPECT_THROW(run(testing::paper_scene("s1_central"), "fenicsx"), SceneError);
-  EXPECT_THROW(run(testing::paper_scene("s1_central"), "no_such_method"), SceneError);
+  EXPECT_THROW(run(testing::paper_scene("s1_central"), "fenicsx"), InputError);
+  EXPECT_THROW(run(testing::paper_scene("s1_central"), "no_such_method"), InputError);
 }
 
 }  // namespace

@@ -10,8 +10,8 @@
 #include <api/child_process.hpp>
 #include <api/methods_file.hpp>
 #include <api/output_rules.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/scene_io.hpp>
+#include <solver/util/InputError.hpp>
 #include <solver/util/Progress.hpp>
 #include <solver/util/write_file_atomic.hpp>
 
@@ -95,7 +95,7 @@ SimulationResult run_external(const Method& m, const Scene& scene, const fs::pat
                               const std::string& mesh) {
   std::error_code ec;
   if (!fs::is_regular_file(scene.file, ec))
-    throw SceneError(scene.file, "", "expected a scene file: the external method '" + m.name + "' reads one");
+    throw InputError(scene.file, "", "expected a scene file: the external method '" + m.name + "' reads one");
   fs::create_directories(out);
   ExternalRun run{scene.file, out, "", mesh, number_text(scene.time.end)};
   if (scene.time.dt) run.dt = number_text(*scene.time.dt);
@@ -129,7 +129,7 @@ SimulationResult run_external(const Method& m, const Scene& scene, const fs::pat
   }
   fs::remove(out / "summary.json", ec);  // a failed run's summary vouches for nothing
   if (p.error.empty() && p.exit_code == 2)
-    throw SceneError(scene.file, "", "not applicable: method '" + m.name + "' refused the scene: " + said);
+    throw InputError(scene.file, "", "not applicable: method '" + m.name + "' refused the scene: " + said);
   throw std::runtime_error("method '" + m.name + "' failed (" +
                            (p.error.empty() ? "exit code " + std::to_string(p.exit_code) : p.error) +
                            "): " + said);

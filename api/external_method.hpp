@@ -33,7 +33,7 @@ inline constexpr const char* kRejectedSummary = "summary.rejected.json";
 /// on stderr after a failure or when progress is shown (Progress::enabled). Exit 0: the outputs are
 /// checked by every output rule (check_outputs()); one broken is std::runtime_error naming the rule,
 /// and summary.json is moved to kRejectedSummary. Otherwise the result's summary keys are read back
-/// (the run directory holds the rest). Exit 2: SceneError "not
+/// (the run directory holds the rest). Exit 2: InputError "not
 /// applicable: ..." with the program's last line. Otherwise std::runtime_error; a summary.json left by a
 /// failed run is removed.
 /// @param m the method; @param scene the scene; @param out the run directory

@@ -10,8 +10,8 @@
 
 #include <toml++/toml.h>
 
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/TableReader.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact {
 namespace {
@@ -178,7 +178,7 @@ std::vector<Method> read_methods_file(const fs::path& file, const fs::path& prog
     std::ostringstream os;
     os << e.description() << " (line " << e.source().begin.line << ")";
     std::error_code ec;
-    throw SceneError(file.string(), "",
+    throw InputError(file.string(), "",
                      fs::exists(file, ec) ? "expected valid TOML: " + os.str() : "methods file not found");
   }
   TableReader top(root, file.string(), "", nullptr);

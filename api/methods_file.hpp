@@ -34,13 +34,13 @@ bool expand_placeholders(std::string& arg, const std::map<std::string, std::stri
 
 /// @brief Reads and checks a methods file (unknown key, missing or empty command, a command
 /// that does not exist, an unknown placeholder, two methods of one name, accepts that the
-/// command cannot honour). Throws SceneError naming the file and the key.
+/// command cannot honour). Throws InputError naming the file and the key.
 /// @param file the methods file; @param program expands {beamimpact}
 std::vector<Method> read_methods_file(const std::filesystem::path& file,
                                       const std::filesystem::path& program);
 
 /// @brief Reads a methods file and adds its methods to the registry (a file already read, by
-/// canonical path, is not read again). Throws SceneError as read_methods_file and add_method.
+/// canonical path, is not read again). Throws InputError as read_methods_file and add_method.
 void load_methods_file(const std::filesystem::path& file);
 
 /// @brief Every methods file read so far, in order (for the runs a command starts: each gets

@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include <solver/scene/SceneError.hpp>
 #include <solver/testing/test_scenes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact {
 namespace {
@@ -35,7 +35,7 @@ class MethodsFile : public ::testing::Test {
   std::pair<std::string, std::string> error(const std::string& text) {
     try {
       (void)read_methods_file(write(text), "/usr/bin/beamimpact");
-    } catch (const SceneError& e) {
+    } catch (const InputError& e) {
       EXPECT_EQ(e.file(), (dir_ / "methods.toml").string());
       return {e.key(), e.what()};
     }
@@ -127,7 +127,7 @@ TEST_F(MethodsFile, ANameTakenByABuiltInMethodIsRefused) {
   try {
     load_methods_file(f);
     FAIL() << "a second 'paper' was accepted";
-  } catch (const SceneError& e) {
+  } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "method[0].name");
     EXPECT_NE(std::string(e.what()).find("built-in"), std::string::npos) << e.what();
   }
@@ -139,7 +139,7 @@ TEST_F(MethodsFile, ANameTakenByABuiltInMethodIsRefusedWhateverItsCase) {
   try {
     load_methods_file(f);
     FAIL() << "'PAPER' was accepted beside 'paper'";
-  } catch (const SceneError& e) {
+  } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "method[0].name");
     EXPECT_NE(std::string(e.what()).find("built-in"), std::string::npos) << e.what();
   }
@@ -168,7 +168,7 @@ TEST_F(MethodsFile, AcceptanceIsCheckedAgainstTheScene) {
   auto refusal = [&](const std::vector<std::string>& set, const std::string& mesh = "") -> std::string {
     try {
       check_accepts(m, testing::load_paper_scene("s1_central", set), mesh);
-    } catch (const SceneError& e) {
+    } catch (const InputError& e) {
       return e.key() + ": " + e.what();
     }
     return "";
@@ -188,13 +188,13 @@ TEST_F(MethodsFile, AcceptanceIsCheckedAgainstTheScene) {
   Method no_mesh = m;
   no_mesh.command.pop_back();
   no_mesh.command.erase(no_mesh.command.end() - 1);  // "--mesh={mesh}"
-  EXPECT_THROW(check_accepts(no_mesh, testing::load_paper_scene("s1_central"), "2"), SceneError);
+  EXPECT_THROW(check_accepts(no_mesh, testing::load_paper_scene("s1_central"), "2"), InputError);
   Method no_friction = m;
   no_friction.accepts.friction = false;
   try {
     check_accepts(no_friction, testing::load_paper_scene("s1_central", {"contacts[0].friction=0.3"}), "");
     FAIL() << "friction accepted by a method that does not model it";
-  } catch (const SceneError& e) {
+  } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "contacts[0].friction");
     EXPECT_NE(std::string(e.what()).find("not applicable"), std::string::npos) << e.what();
   }
@@ -260,7 +260,7 @@ TEST_F(MethodsFile, BendingNodeToSurfaceAndLoadsAreRefusedWhenNotDeclared) {
   auto key = [&](const char* scene, const std::vector<std::string>& set = {}) -> std::string {
     try {
       check_accepts(m, testing::load_paper_scene(scene, set), "");
-    } catch (const SceneError& e) {
+    } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find("not applicable"), std::string::npos) << e.what();
       return e.key();
     }

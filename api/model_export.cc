@@ -10,7 +10,7 @@
 #include <solver/model/Effects.hpp>
 #include <solver/model/critical_dt.hpp>
 #include <solver/model/load_vector.hpp>
-#include <solver/scene/SceneError.hpp>
+#include <solver/util/InputError.hpp>
 #include <solver/util/OutputLock.hpp>
 #include <solver/util/write_file_atomic.hpp>
 
@@ -176,7 +176,7 @@ json time_json(const Scene& scene, const Model& model) {
   const bool stiff = cs.bound != CriticalBound::kNone;
   const double dt = scene.time.dt ? *scene.time.dt : scene.time.fraction * cs.dt;
   if (!scene.time.dt && !stiff)
-    throw SceneError(scene.file, "time.dt",
+    throw InputError(scene.file, "time.dt",
                      "\"auto\" takes a fraction of the critical step, and a scene of rigid bodies has "
                      "none (no stiffness); expected a step in seconds");
   return {{"dt", dt},
@@ -239,11 +239,11 @@ void refuse_unexportable_contacts(const Scene& scene) {
     const Contact& c = scene.contacts[i];
     const std::string key = fmt::format("contacts[{}]", i);
     if (c.search)
-      throw SceneError(scene.file, key + ".node",
+      throw InputError(scene.file, key + ".node",
                        "node = \"all\" (contact search) cannot be exported: the model's contact rows are of "
                        "one declared node; expected \"start\", \"end\" or a node index");
     if (c.law == ContactLaw::kHertz)
-      throw SceneError(
+      throw InputError(
           scene.file, key + ".law",
           "\"hertz\" cannot be exported: the model's contact rows are the hard law's (gap >= 0, no "
           "spring); expected \"hard\" (or no law)");
@@ -258,7 +258,7 @@ nlohmann::json export_model(const Scene& scene_in, const std::filesystem::path& 
   refuse_unexportable_contacts(scene_in);
   const Effects effects = derive_effects(scene_in);
   if (effects.corotational)
-    throw SceneError(scene_in.file, "model.kinematics",
+    throw InputError(scene_in.file, "model.kinematics",
                      "expected \"linear\" for the model export: a corotational model's matrices change "
                      "every step and cannot be written once");
   const Scene scene = effective_scene(scene_in, effects);

@@ -34,7 +34,7 @@ Eigen::VectorXd external_load(const Scene& scene, const Model& model);
 /// @brief Writes the model of `scene` into dir (made if absent), holding dir's OutputLock (a
 /// second writer is refused, InputError). A model.json left by an earlier export is removed
 /// before anything else (also when this export is refused) and written last,
-/// atomically. Throws SceneError (exit 2) for a scene
+/// atomically. Throws InputError (exit 2) for a scene
 /// the export cannot describe: a contact search (node = "all") or corotational kinematics
 /// (the matrices would change every step).
 /// @param scene the loaded scene (with its --set overrides applied)

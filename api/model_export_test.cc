@@ -11,9 +11,9 @@
 #include <gtest/gtest.h>
 #include <Eigen/Eigenvalues>
 
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/scene_io.hpp>
 #include <solver/testing/test_scenes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact {
 namespace {
@@ -280,7 +280,7 @@ TEST(ModelExport, RefusesTheHertzLawNamingFileAndKey) {
   try {
     export_model(hertz, dir);
     FAIL() << "a Hertz contact was exported as hard contact rows";
-  } catch (const SceneError& err) {
+  } catch (const InputError& err) {
     EXPECT_EQ(err.key(), "contacts[0].law");
     EXPECT_NE(std::string(err.what()).find("s2_transverse.toml"), std::string::npos) << err.what();
     EXPECT_NE(std::string(err.what()).find("hard law"), std::string::npos) << err.what();
@@ -296,12 +296,12 @@ TEST(ModelExport, RefusesWhatItCannotWriteOnceAndLeavesNoModelJson) {
   try {
     export_model(corot, dir);
     FAIL() << "a corotational scene was exported";
-  } catch (const SceneError& err) {
+  } catch (const InputError& err) {
     EXPECT_NE(std::string(err.what()).find("model.kinematics"), std::string::npos) << err.what();
   }
   EXPECT_FALSE(fs::exists(dir / "model.json"));  // the earlier export no longer vouches for anything
   EXPECT_THROW(export_model(testing::load_paper_scene("s2_transverse", {"contacts[0].node=\"all\""}), dir),
-               SceneError);
+               InputError);
 }
 
 // S2 rotated by 37 degrees with the target's roller across it exports a rotation of S2's model:

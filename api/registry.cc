@@ -8,7 +8,7 @@
 #include <api/child_process.hpp>
 #include <api/methods_file.hpp>
 #include <solver/paper/solve.hpp>
-#include <solver/scene/SceneError.hpp>
+#include <solver/util/InputError.hpp>
 #ifdef BEAMIMPACT_HAVE_exact
 #include <references/exact/solve.hpp>
 #endif
@@ -91,7 +91,7 @@ bool same_name(std::string_view a, std::string_view b) {
 void add_method(Method m, const std::string& file, const std::string& key) {
   for (const Method& other : table())
     if (same_name(other.name, m.name))
-      throw SceneError(file, key,
+      throw InputError(file, key,
                        "a method named '" + other.name + "' is already declared (" + other.origin +
                            "); expected a new name (names compare without case)");
   table().push_back(std::move(m));
@@ -111,7 +111,7 @@ std::string method_names() {
 
 const Method& method(std::string_view name, const std::string& file, const std::string& key) {
   if (const Method* m = find_method(name)) return *m;
-  throw SceneError(file, key,
+  throw InputError(file, key,
                    "expected a method name (" + method_names() + "), got '" + std::string(name) + "'");
 }
 

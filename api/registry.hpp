@@ -74,10 +74,10 @@ struct Method {
 
 /// @brief Every method: the built-in ones (paper first), then those of the methods files in the
 /// order read. The first call reads the default methods files (methods_file.hpp); a bad file
-/// throws SceneError naming it and the key.
+/// throws InputError naming it and the key.
 const std::deque<Method>& methods();
 
-/// @brief Adds a method declared in a methods file. Throws SceneError(file, key) when its name is
+/// @brief Adds a method declared in a methods file. Throws InputError(file, key) when its name is
 /// already taken.
 /// @param m the method; @param file the methods file, for messages; @param key its table's key
 void add_method(Method m, const std::string& file, const std::string& key);
@@ -85,7 +85,7 @@ void add_method(Method m, const std::string& file, const std::string& key);
 /// @brief The method with this name, or nullptr.
 const Method* find_method(std::string_view name);
 
-/// @brief The method with this name. Throws SceneError naming `file` and `key` and listing the
+/// @brief The method with this name. Throws InputError naming `file` and `key` and listing the
 /// known names when there is none.
 const Method& method(std::string_view name, const std::string& file, const std::string& key);
 

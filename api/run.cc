@@ -8,9 +8,9 @@
 #include <solver/integrator/ExplicitContactIntegrator.hpp>
 #include <solver/record/FieldWriter.hpp>
 #include <solver/record/output_files.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/run_cost.hpp>
 #include <solver/scene/scene_io.hpp>
+#include <solver/util/InputError.hpp>
 #include <solver/util/OutputLock.hpp>
 #include <solver/util/heap_policy.hpp>
 #include <solver/util/write_file_atomic.hpp>
@@ -47,7 +47,7 @@ SimulationResult run_method(const Scene& scene, const Method& m,
   check_accepts(m, scene, mesh);
   if (!m.in_process()) {
     if (!out)
-      throw SceneError(
+      throw InputError(
           scene.file, "--out",
           "expected an output directory: the external method '" + m.name + "' writes its run there");
     SimulationResult r = run_external(m, scene, *out, mesh);
@@ -63,10 +63,10 @@ SimulationResult run_method(const Scene& scene, const Method& m,
   request.threads = threads.value_or(0);
   if (scene.output.fields) {
     if (!m.writes_fields)
-      throw SceneError(scene.file, "output.fields",
+      throw InputError(scene.file, "output.fields",
                        "expected false for method '" + m.name + "': it writes no fields");
     if (!out)
-      throw SceneError(scene.file, "output.fields",
+      throw InputError(scene.file, "output.fields",
                        "expected an output directory to write the fields into (--out)");
     request.fields_dir = *out;
   }
@@ -86,7 +86,7 @@ SimulationResult run_method(const Scene& scene, const Method& m,
 /// Refuses a thread count outside 1..kMaxThreads, naming --threads.
 void check_threads(const std::optional<int>& threads, const std::string& file) {
   if (threads && !paper::valid_thread_count(*threads))
-    throw SceneError(
+    throw InputError(
         file, "--threads",
         fmt::format("expected a whole number of threads 1..{}, got {}", paper::kMaxThreads, *threads));
 }
@@ -95,7 +95,7 @@ void check_threads(const std::optional<int>& threads, const std::string& file) {
 
 SimulationResult run(const Scene& scene, std::string_view method_name, const RunOptions& options) {
   if (!options.set.empty() || options.dt || !options.mesh.empty())
-    throw SceneError(scene.file, "set",
+    throw InputError(scene.file, "set",
                      "expected no overrides, dt or mesh for a loaded scene; pass them to load_scene()");
   check_threads(options.threads, scene.file);
   const OutputLock lock(options.out.value_or(std::filesystem::path()));
@@ -112,7 +112,7 @@ SimulationResult run(const std::filesystem::path& scene_file, std::string_view m
   check_threads(options.threads, scene_file.string());
   if (options.dt) {
     if (!(*options.dt > 0.0))
-      throw SceneError(scene_file.string(), "--dt",
+      throw InputError(scene_file.string(), "--dt",
                        fmt::format("expected a positive step (s), got {}", *options.dt));
     set.push_back(fmt::format("time.dt={:.17g}", *options.dt));
   }

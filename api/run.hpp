@@ -45,7 +45,7 @@ struct RunOptions {
 /// @param method a registry name: "paper", "exact", "ida", or an external method's
 /// @param options overrides, step, mesh and output directory
 /// @return the result (of an external method: its summary's keys; the run directory holds the
-/// rest); throws SceneError for bad input or a run the method does not take (file, key,
+/// rest); throws InputError for bad input or a run the method does not take (file, key,
 /// expectation; the CLI's exit code 2) and std::runtime_error when the run fails (exit code 3).
 /// With options.out, the run holds that directory's OutputLock from before it removes an earlier
 /// run's outputs until it returns: a second writer is refused (InputError) and touches nothing.

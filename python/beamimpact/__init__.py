@@ -10,8 +10,7 @@ compare command's norms, over the C++ library (beamimpact._core).
 A scene argument is a file, or a shipped scene's name (scenes(); the rule is the command's:
 docs/installation.md); the shipped data are found from the installed package (data_root()).
 
-Bad input raises beamimpact.InputError with the CLI's message (file, key, what was expected);
-beamimpact.SceneError is the same class under its earlier name (deprecated).
+Bad input raises beamimpact.InputError with the CLI's message (file, key, what was expected).
 """
 from __future__ import annotations
 
@@ -26,10 +25,10 @@ from typing import Any, Callable, Iterable, Mapping, Optional, Sequence, Union
 import numpy as np
 
 from . import _core
-from ._core import InputError, SceneError
+from ._core import InputError
 from .fields import read_fields
 
-__all__ = ["InputError", "SceneError", "Scene", "Run", "load_scene", "run", "read_run", "read_fields", "compare",
+__all__ = ["InputError", "Scene", "Run", "load_scene", "run", "read_run", "read_fields", "compare",
            "norm", "sweep", "verify", "methods", "scenes", "data_root"]
 __version__ = _core.__version__
 

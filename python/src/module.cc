@@ -202,7 +202,6 @@ PYBIND11_MODULE(_core, m) {
   using namespace beamimpact::python;
   m.doc() = "beamimpact's compiled core; use the package `beamimpact`, not this module";
   py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
-  m.attr("SceneError") = m.attr("InputError");  // the earlier name, kept for a deprecation period
   m.attr("__version__") = kVersion;
 
   py::class_<Scene>(m, "_Scene")

@@ -120,7 +120,7 @@ def test_bad_scene_raises_the_cli_message(tmp_path):
     path = PAPER / "s1_central.toml"
     p = cli("run", path, "--out", tmp_path / "bad", "--set", "bodies.A.area=-0.4")
     assert p.returncode == 2
-    with pytest.raises(beamimpact.SceneError) as e:
+    with pytest.raises(beamimpact.InputError) as e:
         beamimpact.load_scene(path, overrides={"bodies.A.area": -0.4})
     assert str(e.value) in p.stderr  # the CLI prints the same message (with its "error: " prefix)
     assert "bodies[0].area" in str(e.value) and "positive" in str(e.value)
@@ -129,12 +129,12 @@ def test_bad_scene_raises_the_cli_message(tmp_path):
 def test_bad_dict_names_the_key():
     tables = tomllib.loads((PAPER / "s1_central.toml").read_text())
     tables["time"]["dt"] = "fast"
-    with pytest.raises(beamimpact.SceneError, match=r"<dict>: key 'time.dt'.*auto"):
+    with pytest.raises(beamimpact.InputError, match=r"<dict>: key 'time.dt'.*auto"):
         beamimpact.Scene.from_dict(tables)
     tables["time"]["dt"] = None
-    with pytest.raises(beamimpact.SceneError, match=r"time.dt.*None"):
+    with pytest.raises(beamimpact.InputError, match=r"time.dt.*None"):
         beamimpact.Scene.from_dict(tables)
-    with pytest.raises(beamimpact.SceneError, match="expected a method name"):
+    with pytest.raises(beamimpact.InputError, match="expected a method name"):
         beamimpact.run(PAPER / "s1_central.toml", method="nope", progress=False)
 
 
@@ -144,7 +144,7 @@ def test_read_run_of_a_cli_directory(tmp_path):
     for name, col in csv_columns(out).items():
         assert np.array_equal(r.columns[name], col), name
     assert r.summary == json.loads((out / "summary.json").read_text())
-    with pytest.raises(beamimpact.SceneError, match="summary.json|history.csv"):
+    with pytest.raises(beamimpact.InputError, match="summary.json|history.csv"):
         beamimpact.read_run(tmp_path / "missing")
 
 
@@ -209,7 +209,7 @@ def test_fields_from_python_read_back(tmp_path):
     assert [t for t, _ in frames] == list(r.columns["t"])
     assert [f["displacement"][10, 0] for _, f in frames] == [float(np.float32(u)) for u in r.columns["ua_x"]]
     assert all(len(f["points"]) == 22 for _, f in frames)
-    with pytest.raises(beamimpact.SceneError, match="output.fields.*output directory"):
+    with pytest.raises(beamimpact.InputError, match="output.fields.*output directory"):
         beamimpact.run(PAPER / "s1_central.toml", fields=True, progress=False)
 
 

@@ -9,8 +9,8 @@
 
 #include <references/exact/CoaxialRods.hpp>
 #include <references/exact/solve.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/testing/test_scenes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact::exact {
 namespace {
@@ -68,7 +68,7 @@ TEST(CoaxialRodsCost, ExactRefusesAnExtraordinaryEndBeforeStarting) {
   try {
     (void)solve(scene);
     FAIL() << "solved 8.84e8 pieces";
-  } catch (const SceneError& e) {
+  } catch (const InputError& e) {
     const std::string m = e.what();
     EXPECT_EQ(e.key(), "time.end") << m;
     EXPECT_NE(m.find("8.84e+08 pieces"), std::string::npos) << m;

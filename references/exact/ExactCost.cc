@@ -2,8 +2,8 @@
 
 #include <fmt/format.h>
 
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/run_cost.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact::exact {
 
@@ -11,7 +11,7 @@ void refuse_extraordinary(const Scene& scene, const std::string& key, const std:
                           const ExactCost& cost, const std::string& remedy) {
   if (scene.time.allow_long_run || (cost.seconds <= kOrdinaryExactSeconds && cost.bytes <= kOrdinaryBytes))
     return;
-  throw SceneError(
+  throw InputError(
       scene.file, key,
       fmt::format("{} is far beyond an ordinary run: {} (ordinary: at most {:g} min and {:g} GB); "
                   "{}, or time.allow_long_run = true (or --allow-long) to run it",

@@ -24,7 +24,7 @@ struct ExactCost {
   std::string text;      ///< the estimate in words ("256 modes: 8.7e+04 integrator stops ...")
 };
 
-/// @brief Throws SceneError on `key` when `cost` exceeds kOrdinaryExactSeconds or
+/// @brief Throws InputError on `key` when `cost` exceeds kOrdinaryExactSeconds or
 /// kOrdinaryBytes and the scene does not set time.allow_long_run; the message states the
 /// estimate, the limits, what lowers the cost and the setting that allows the run.
 /// @param scene the scene (its file and time.allow_long_run)

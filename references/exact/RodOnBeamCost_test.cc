@@ -10,8 +10,8 @@
 
 #include <references/exact/rod_on_beam_testing.hpp>
 #include <references/exact/solve.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/testing/test_scenes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact::exact {
 namespace {
@@ -53,7 +53,7 @@ TEST(RodOnBeamCost, ExactRefusesAnExtraordinaryModeCountBeforeStarting) {
   try {
     (void)solve(scene);
     FAIL() << "ran 4096 modes";
-  } catch (const SceneError& e) {
+  } catch (const InputError& e) {
     const std::string m = e.what();
     EXPECT_EQ(e.key(), "exact.modes") << m;
     EXPECT_NE(m.find("4096 modes: 2.22e+07 integrator stops"), std::string::npos) << m;

@@ -4,8 +4,8 @@
 
 #include <fmt/format.h>
 
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/support_axes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact::exact {
 namespace {
@@ -42,9 +42,9 @@ bool holds_along(const Body& b, int node, Vec2 d) {
   return h.held == 2 || (h.held == 1 && std::abs(cross(h.direction, d)) < kTol);
 }
 
-/// @brief Throws SceneError(scene.file, key, "the exact method cannot solve this scene: " + msg).
+/// @brief Throws InputError(scene.file, key, "the exact method cannot solve this scene: " + msg).
 [[noreturn]] void refuse(const Scene& scene, const std::string& key, const std::string& msg) {
-  throw SceneError(scene.file, key, "the exact method cannot solve this scene: " + msg);
+  throw InputError(scene.file, key, "the exact method cannot solve this scene: " + msg);
 }
 
 /// @brief Refuses a scene that is not two bodies with one frictionless contact and no damping.

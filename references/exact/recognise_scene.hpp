@@ -50,7 +50,7 @@ struct ExactProblem {
   double g = 0.0;      ///< kRodOnWall: m/s^2, gravity along dir (towards the wall)
 };
 
-/// @brief Recognises the scene or throws SceneError(scene.file, key, condition that failed).
+/// @brief Recognises the scene or throws InputError(scene.file, key, condition that failed).
 ExactProblem recognise_scene(const Scene& scene);
 
 }  // namespace beamimpact::exact

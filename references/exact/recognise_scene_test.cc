@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/scene_io.hpp>
 #include <solver/testing/test_scenes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact::exact {
 namespace {
@@ -15,12 +15,12 @@ namespace {
 using beamimpact::testing::benchmark_scene;
 using beamimpact::testing::paper_scene;
 
-// Expects a SceneError whose key is `key` and whose message contains `text`.
+// Expects a InputError whose key is `key` and whose message contains `text`.
 void expect_refused(const Scene& s, const std::string& key, const std::string& text) {
   try {
     recognise_scene(s);
     ADD_FAILURE() << "accepted, expected refusal: " << text;
-  } catch (const SceneError& e) {
+  } catch (const InputError& e) {
     EXPECT_EQ(e.key(), key);
     EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
   }

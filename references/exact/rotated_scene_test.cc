@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include <solver/scene/SceneError.hpp>
 #include <solver/testing/test_scenes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact::exact {
 namespace {
@@ -44,7 +44,7 @@ TEST(RotatedSceneExact, GlobalRollerOnTheRotatedTargetIsRefused) {
     try {
       recognise_scene(testing::rotated_s2(degrees, true));
       ADD_FAILURE() << degrees << " deg: accepted";
-    } catch (const SceneError& e) {
+    } catch (const InputError& e) {
       EXPECT_EQ(e.key(), "bodies[1].supports") << degrees;
       EXPECT_NE(std::string(e.what()).find("not simply supported"), std::string::npos) << e.what();
     }

@@ -17,9 +17,9 @@
 #include <references/exact/recognise_scene.hpp>
 #include <references/exact/solve_ball_on_beam.hpp>
 #include <solver/record/ResultRecorder.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/TableReader.hpp>
 #include <solver/scene/run_cost.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact::exact {
 namespace {

@@ -8,7 +8,7 @@
 
 namespace beamimpact::exact {
 
-/// @brief Runs the exact solution of the scene. Throws SceneError (exit 2) when the scene has
+/// @brief Runs the exact solution of the scene. Throws InputError (exit 2) when the scene has
 /// no exact counterpart, naming the condition that failed, or for a bad [exact] table.
 ///
 /// [exact] options (all optional): dt_out (s, output interval; default time.dt x

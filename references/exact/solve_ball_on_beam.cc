@@ -8,8 +8,8 @@
 #include <references/exact/BallOnBeam.hpp>
 #include <references/exact/ExactCost.hpp>
 #include <references/exact/finish_summary.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/run_cost.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact::exact {
 namespace {
@@ -81,7 +81,7 @@ SimulationResult solve_ball_on_beam_scene(const Scene& scene, const ExactProblem
   s.dt_out = r.dt;
   s.rtol = o.rtol;
   if (!(s.v0 > 0.0))
-    throw SceneError(scene.file, fmt::format("bodies[{}].velocity", p.striker),
+    throw InputError(scene.file, fmt::format("bodies[{}].velocity", p.striker),
                      "the exact method cannot solve this scene: the striker does not move towards the beam");
   check_ball_cost(scene, s, o);
   BallModeStudy study;

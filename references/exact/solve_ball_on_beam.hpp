@@ -17,7 +17,7 @@ BallOnBeamSetup ball_on_beam_setup(const ExactProblem& p);
 
 /// @brief Solves the recognised problem p (kind kBallOnBeam) with the [exact] options o; the
 /// mode study (or the fixed count) and the cost estimate are written into the summary.
-/// Throws SceneError (exit 2) when the solution is far beyond an ordinary run.
+/// Throws InputError (exit 2) when the solution is far beyond an ordinary run.
 SimulationResult solve_ball_on_beam_scene(const Scene& scene, const ExactProblem& p, const BeamModeOptions& o,
                                           ResultRecorder& rec);
 

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/scene_io.hpp>
 #include <solver/testing/test_scenes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact {
 namespace {
@@ -114,11 +114,11 @@ TEST(RunExact, S2TransverseHonoursContactInvariants) {
 }
 
 TEST(RunExact, ExactTableIsChecked) {
-  EXPECT_THROW(exact::solve(load_scene(paper_scene("s2_transverse"), {"exact.mode=32"})), SceneError);
-  EXPECT_THROW(exact::solve(load_scene(paper_scene("s2_transverse"), {"exact.modes=0"})), SceneError);
-  EXPECT_THROW(exact::solve(load_scene(paper_scene("s1_central"), {"exact.dt_out=-1"})), SceneError);
+  EXPECT_THROW(exact::solve(load_scene(paper_scene("s2_transverse"), {"exact.mode=32"})), InputError);
+  EXPECT_THROW(exact::solve(load_scene(paper_scene("s2_transverse"), {"exact.modes=0"})), InputError);
+  EXPECT_THROW(exact::solve(load_scene(paper_scene("s1_central"), {"exact.dt_out=-1"})), InputError);
   // Keys of the beam solution mean nothing for rods: unknown there.
-  EXPECT_THROW(exact::solve(load_scene(paper_scene("s1_central"), {"exact.modes=8"})), SceneError);
+  EXPECT_THROW(exact::solve(load_scene(paper_scene("s1_central"), {"exact.modes=8"})), InputError);
   const SimulationResult r = exact::solve(load_scene(paper_scene("s1_central"), {"exact.dt_out=0.5"}));
   EXPECT_EQ(r.history.size(), 9u);
 }
@@ -132,7 +132,7 @@ TEST(RunExact, ModeCountsAnIntCannotHoldAreRefusedEvenForALongRun) {
       exact::solve(
           load_scene(paper_scene("s2_transverse"), {"time.allow_long_run=true", key + "=2147483648"}));
       ADD_FAILURE() << key << " = 2^31 ran";
-    } catch (const SceneError& e) {
+    } catch (const InputError& e) {
       EXPECT_EQ(e.key(), key) << e.what();
       EXPECT_NE(std::string(e.what()).find("1073741822"), std::string::npos) << e.what();
     }
@@ -200,7 +200,7 @@ TEST(RunExact, RefusesLoadsItDoesNotModel) {
   const auto key_of = [](const std::string& file, const std::vector<std::string>& set) {
     try {
       exact::solve(load_scene(file, set));
-    } catch (const SceneError& e) {
+    } catch (const InputError& e) {
       return e.key();
     }
     return std::string("(solved)");

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <solver/scene/SceneError.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact::ida {
 namespace {
@@ -62,9 +62,9 @@ ModelContact::ModelContact(const Model& model, const Scene& scene, int contact_i
     end_t_ = model.project(end_node_, t_);
   } else {
     if (std::abs(h) <= tol)
-      throw SceneError(scene.file, key, "the striker node lies on the target's axis inside it");
+      throw InputError(scene.file, key, "the striker node lies on the target's axis inside it");
     if (s < -tol || s > L + tol)
-      throw SceneError(scene.file, key,
+      throw InputError(scene.file, key,
                        "the striker node does not lie over the target (its foot on the target's "
                        "line is outside the target)");
     n_ = h > 0.0 ? n0 : Vec2{-n0[0], -n0[1]};

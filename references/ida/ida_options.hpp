@@ -31,7 +31,7 @@ struct IdaOptions {
 
 /// @brief Reads scene.method_tables["ida"]. dt: s, the scene's step (resolved when "auto"),
 /// which sets the default chatter merge gap; v_scale: m/s, the largest initial speed.
-/// Throws SceneError naming the file and "ida.key" for a bad or unknown key.
+/// Throws InputError naming the file and "ida.key" for a bad or unknown key.
 IdaOptions read_ida_options(const Scene& scene, double dt, double v_scale,
                             std::map<std::string, std::string>* assumed);
 

@@ -18,8 +18,8 @@
 #include <solver/model/load_vector.hpp>
 #include <solver/record/ContactIntervals.hpp>
 #include <solver/record/ResultRecorder.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/run_cost.hpp>
+#include <solver/util/InputError.hpp>
 #include <solver/util/Progress.hpp>
 
 namespace beamimpact::ida {
@@ -130,7 +130,7 @@ void check_penalty_cost(const Scene& scene, const PenaltyContacts& pc, int unkno
     const double period = 2.0 * M_PI * std::sqrt(m_red / pc.laws[i].kn);
     const double steps = 20.0 * scene.time.end / period;
     if (!(steps * unknowns <= kOrdinaryWork))
-      throw SceneError(
+      throw InputError(
           scene.file, "time.allow_long_run",
           fmt::format("IDA's penalty on contacts[{}] oscillates with a period of {:.3g} s "
                       "(kn {:.3g} N/m, reduced mass {:.3g} kg): resolving it over time.end = "

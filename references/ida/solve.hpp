@@ -9,7 +9,7 @@
 namespace beamimpact::ida {
 
 /// @brief Runs the scene with the IDA reference. Options come from the scene's [ida] table
-/// (see ida_options.hpp). Throws SceneError for bad options, std::runtime_error if IDA fails.
+/// (see ida_options.hpp). Throws InputError for bad options, std::runtime_error if IDA fails.
 /// A contact search (node = "all") is the registry's to refuse (Method::Accepts, checked by
 /// api::run): here each contact is its declared node.
 SimulationResult solve(const Scene& scene);

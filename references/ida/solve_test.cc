@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <solver/record/output_files.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/testing/test_scenes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact::ida {
 namespace {
@@ -215,12 +215,12 @@ TEST(RunIda, SummaryCarriesIdaStatisticsAndDefaults) {
   EXPECT_FALSE(j["assumed"].contains("ida.rtol"));  // given, not assumed
 }
 
-TEST(RunIda, BadOptionsAreSceneErrors) {
+TEST(RunIda, BadOptionsAreInputErrors) {
   auto expect_error = [](const std::string& set, const std::string& key) {
     try {
       ida::solve(load_paper_scene("s1_central", {set}));
       ADD_FAILURE() << set << ": no error";
-    } catch (const SceneError& e) {
+    } catch (const InputError& e) {
       EXPECT_EQ(e.key(), key) << e.what();
     }
   };

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <solver/scene/SceneError.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact::paper {
 namespace {
@@ -67,7 +67,7 @@ void ContactPair::locate(const Scene& scene, int index, int striker_body, int no
     kind_ = (xi2_ == 0.0 || xi2_ == 1.0) ? ContactKind::kNodeToNode : ContactKind::kNodeToSurface;
     on_surface_ = along >= -tol && along <= L + tol;  // a searched node beyond an end joins later
   } else {
-    throw SceneError(scene.file, key + ".node",
+    throw InputError(scene.file, key + ".node",
                      "the striker node of body '" + scene.bodies[striker_body].name +
                          "' faces neither the surface nor an end of target '" + tb.name +
                          "'; expected a node above the target's span or on its axis beyond an end");
@@ -77,7 +77,7 @@ void ContactPair::locate(const Scene& scene, int index, int striker_body, int no
   const Vec2 xt{xi1_ * x1[0] + xi2_ * x2[0], xi1_ * x1[1] + xi2_ * x2[1]};
   g0_ = dot(n_, sub(xs, xt));
   if (g0_ < -tol)
-    throw SceneError(scene.file, key,
+    throw InputError(scene.file, key,
                      "the striker node penetrates the target at t = 0 (gap " + std::to_string(g0_) +
                          " m); expected a gap >= 0");
   // Room for the largest row: no growth while sliding.

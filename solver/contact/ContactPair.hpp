@@ -25,7 +25,7 @@ enum class SurfaceInterpolation {
 /// @brief One contact pair of the scene and its current contact point.
 class ContactPair {
  public:
-  /// @brief Locates contact `index` of the scene in the model. Throws SceneError when the striker
+  /// @brief Locates contact `index` of the scene in the model. Throws InputError when the striker
   /// node faces neither the target's surface nor its end, or penetrates it at t = 0.
   ContactPair(const Model& model, const Scene& scene, int index,
               SurfaceInterpolation surface = SurfaceInterpolation::kLinear);

@@ -25,7 +25,7 @@ struct ContactPairs {
 };
 
 /// @brief Builds the pairs of every contact of the scene (declared pair first within a contact).
-/// Throws SceneError as ContactPair does for a declared node that faces nothing.
+/// Throws InputError as ContactPair does for a declared node that faces nothing.
 ContactPairs make_contact_pairs(const Model& model, const Scene& scene, SurfaceInterpolation surface);
 
 /// @brief Axis-aligned boxes around the deformed nodes of the bodies a contact search involves.

@@ -2,9 +2,9 @@
 
 #include <set>
 
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/collinear.hpp>
 #include <solver/scene/support_axes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact {
 
@@ -31,7 +31,7 @@ void refuse_rotating_body_axes(const Scene& scene, int b) {
     // As Model: a held direction not exactly along x or y puts the node in the body's axes.
     if (const NodeHold h = node_hold(body, s.node);
         h.held == 1 && h.direction[0] != 0.0 && h.direction[1] != 0.0)
-      throw SceneError(scene.file,
+      throw InputError(scene.file,
                        "bodies[" + std::to_string(b) + "].supports[" + std::to_string(j) + "].fix",
                        "a roller in the axes of an inclined body is modelled with linear kinematics only; "
                        "expected model.kinematics = \"linear\" (or a pin, or supports in global x, y)");

@@ -7,9 +7,9 @@
 
 #include <solver/model/frame_element.hpp>
 #include <solver/model/timoshenko_element.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/collinear.hpp>
 #include <solver/scene/support_axes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact {
 namespace {
@@ -139,7 +139,7 @@ Model::Model(const Scene& scene, bool bending)
       a0_(scene.model.rayleigh_mass),
       a1_(scene.model.rayleigh_stiffness) {
   if (!bending && !scene_is_collinear(scene, &axis_))
-    throw SceneError(scene.file, "effects.bending",
+    throw InputError(scene.file, "effects.bending",
                      "false requires all bodies and velocities on one line; this scene is not collinear");
   number_equations(scene, add_bodies(scene));
   assemble(scene, form_groups());

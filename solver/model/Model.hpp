@@ -41,7 +41,7 @@ struct DofTerm {
 class Model {
  public:
   /// @brief Assembles the scene. bending = false builds the rod layout (the scene must be
-  /// collinear: SceneError otherwise).
+  /// collinear: InputError otherwise).
   Model(const Scene& scene, bool bending);
 
   /// @brief 3 (frame) or 1 (rod).

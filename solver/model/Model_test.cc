@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 #include <Eigen/Eigenvalues>
 
-#include <solver/scene/SceneError.hpp>
 #include <solver/testing/test_scenes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact {
 namespace {
@@ -113,7 +113,7 @@ TEST(Model, FreeRodAxialFrequenciesConvergeSecondOrder) {
 TEST(Model, RodLayoutNeedsACollinearScene) {
   Scene s = single(soft_body("A", {0, 0}, {10, 0}, 4), MassKind::kLumped);
   s.bodies[1] = soft_body("B", {0, 1}, {10, 1}, 4);  // parallel but offset: not one line
-  EXPECT_THROW(Model(s, false), SceneError);
+  EXPECT_THROW(Model(s, false), InputError);
 }
 
 TEST(Model, MomentumCovectorGivesRigidMomentum) {

@@ -12,8 +12,8 @@
 
 #include <solver/model/Model.hpp>
 #include <solver/model/critical_dt.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/testing/test_scenes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact {
 namespace {
@@ -189,7 +189,7 @@ TEST(TimoshenkoElement, SceneKeysAreCheckedAndDefaultsRecorded) {
   auto error_key = [](const std::vector<std::string>& o) -> std::string {
     try {
       testing::load_paper_scene("s2_transverse", o);
-    } catch (const SceneError& e) {
+    } catch (const InputError& e) {
       return e.what();
     }
     return "";

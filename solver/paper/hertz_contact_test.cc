@@ -13,9 +13,9 @@
 
 #include <gtest/gtest.h>
 
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/scene_io.hpp>
 #include <solver/testing/test_scenes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact::paper {
 namespace {
@@ -138,7 +138,7 @@ TEST(HertzContact, KeysAreCheckedWithTheirLaw) {
   auto fails = [](const std::vector<std::string>& o, const std::string& key) {
     try {
       drop(1e-6, o);
-    } catch (const SceneError& e) {
+    } catch (const InputError& e) {
       return std::string(e.what()).find(key) != std::string::npos;
     }
     return false;
@@ -154,7 +154,7 @@ TEST(HertzContact, KeysAreCheckedWithTheirLaw) {
   text.replace(text.find("stiffness = 1.0e9"), 17, "radius = 0.01\nmodulus = 1.5e11");
   EXPECT_DOUBLE_EQ(load_scene_text(text, "t").contacts[0].hertz_stiffness, 4.0 / 3.0 * 1.5e11 * 0.1);
   text.replace(text.find("radius = 0.01"), 13, "");  // modulus alone
-  EXPECT_THROW(load_scene_text(text, "t"), SceneError);
+  EXPECT_THROW(load_scene_text(text, "t"), InputError);
 }
 
 }  // namespace

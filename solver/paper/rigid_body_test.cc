@@ -7,9 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <solver/model/Model.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/scene_io.hpp>
 #include <solver/testing/test_scenes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact::paper {
 namespace {
@@ -91,8 +91,8 @@ TEST(RigidBodies, NodesFollowTheCentreAndMassIsTheRodsOwn) {
 TEST(RigidBodies, PartialSupportIsRefused) {
   try {
     load_scene(rigid_scene(), {"bodies.B.supports=[{ at = \"start\", fix = [\"y\"] }]"});
-    FAIL() << "expected a SceneError";
-  } catch (const SceneError& e) {
+    FAIL() << "expected a InputError";
+  } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "bodies[1].supports") << e.what();
   }
 }

@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <solver/model/Effects.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/testing/test_scenes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact::paper {
 namespace {
@@ -60,7 +60,7 @@ TEST(RotatedScene, CorotationalRefusesABodyAxisRollerOnABodyItTurns) {
   try {
     derive_effects(s);
     ADD_FAILURE() << "accepted";
-  } catch (const SceneError& e) {
+  } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "bodies[1].supports[0].fix");
     EXPECT_NE(std::string(e.what()).find("model.kinematics = \"linear\""), std::string::npos) << e.what();
   }

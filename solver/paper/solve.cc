@@ -14,10 +14,10 @@
 #include <solver/paper/gap_in_contact.hpp>
 #include <solver/record/FieldWriter.hpp>
 #include <solver/record/ResultRecorder.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/TableReader.hpp>
 #include <solver/scene/run_cost.hpp>
 #include <solver/schema/output_schema.hpp>
+#include <solver/util/InputError.hpp>
 #include <solver/util/Progress.hpp>
 
 namespace beamimpact::paper {
@@ -27,7 +27,7 @@ namespace {
 double choose_dt(const Scene& scene, const CriticalStep& cs, SimulationResult& r) {
   if (cs.bound == CriticalBound::kNone) {  // only rigid bodies: no stiffness, no stability limit
     if (!scene.time.dt)
-      throw SceneError(scene.file, "time.dt",
+      throw InputError(scene.file, "time.dt",
                        "\"auto\" takes a fraction of the critical step, and a scene of rigid bodies has none "
                        "(no stiffness); expected a step in seconds");
     return *scene.time.dt;
@@ -38,7 +38,7 @@ double choose_dt(const Scene& scene, const CriticalStep& cs, SimulationResult& r
   }
   const double dt = *scene.time.dt;
   if (dt > cs.dt * (1.0 + 1e-12) && !scene.time.allow_above_critical)
-    throw SceneError(
+    throw InputError(
         scene.file, "time.dt",
         fmt::format("expected at most the critical step {:.6g} s (2/omega_max, omega_max = "
                     "{:.6g} rad/s an upper estimate for M^-1 K), got {:.6g} s; use dt = \"auto\", a "

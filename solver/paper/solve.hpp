@@ -21,11 +21,11 @@ struct Options {
   int threads = 0;  ///< threads of the step's element sweep; 0 = default_threads() of the model
 
   /// @brief Reads [paper] of `scene`; defaults not given are recorded in `assumed`. Throws
-  /// SceneError naming the file and key for a bad value or an unknown key.
+  /// InputError naming the file and key for a bad value or an unknown key.
   static Options read(const Scene& scene, std::map<std::string, std::string>* assumed);
 };
 
-/// @brief Runs the scene with the paper's integrator. Throws SceneError for bad settings
+/// @brief Runs the scene with the paper's integrator. Throws InputError for bad settings
 /// (dt above the critical step) and std::runtime_error if the run diverges.
 /// @param scene the scene
 /// @param fields_dir when not empty, the run directory that receives the VTK fields of every

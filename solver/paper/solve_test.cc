@@ -7,9 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <solver/integrator/ExplicitContactIntegrator.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/scene_io.hpp>
 #include <solver/testing/test_scenes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact::paper {
 namespace {
@@ -378,7 +378,7 @@ TEST(RunCost, FieldFilesAreEstimatedAtTheStepTheRunTakesNotTheWaveEstimate) {
   try {
     paper::solve(scene, dir);
     FAIL() << "expected a refusal";
-  } catch (const SceneError& e) {
+  } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "output.fields");
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "fields"));

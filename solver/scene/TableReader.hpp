@@ -13,7 +13,7 @@
 #include <toml++/toml.h>
 
 #include <solver/scene/Scene.hpp>
-#include <solver/scene/SceneError.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact {
 

@@ -28,7 +28,7 @@ void check_beam_theory(const Scene& sc) {
   if (sc.model.kinematics != Kinematics::kCorotational) return;
   for (std::size_t i = 0; i < sc.bodies.size(); ++i)
     if (sc.bodies[i].theory == BeamTheory::kTimoshenko)
-      throw SceneError(sc.file, "bodies[" + std::to_string(i) + "].theory",
+      throw InputError(sc.file, "bodies[" + std::to_string(i) + "].theory",
                        "\"timoshenko\" runs with model.kinematics = \"linear\" only (the corotational "
                        "element is Euler-Bernoulli); expected \"euler-bernoulli\" or linear kinematics");
 }

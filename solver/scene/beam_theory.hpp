@@ -9,12 +9,12 @@
 namespace beamimpact {
 
 /// @brief Reads theory, shear_coefficient and poisson of body b from its table reader.
-/// SceneError for an unknown theory, a Timoshenko rigid body, shear_coefficient <= 0 or above
+/// InputError for an unknown theory, a Timoshenko rigid body, shear_coefficient <= 0 or above
 /// 10, poisson outside (-1, 0.5], or either given without theory = "timoshenko".
 void read_beam_theory(TableReader& r, Body& b);
 
 /// @brief Refuses a Timoshenko body under model.kinematics = "corotational" (the corotational
-/// element is the Euler-Bernoulli one): SceneError naming bodies[i].theory.
+/// element is the Euler-Bernoulli one): InputError naming bodies[i].theory.
 void check_beam_theory(const Scene& sc);
 
 }  // namespace beamimpact

@@ -11,7 +11,7 @@
 
 namespace beamimpact {
 
-/// @brief Reads law, stiffness, radius and modulus of contact c. SceneError for an unknown law,
+/// @brief Reads law, stiffness, radius and modulus of contact c. InputError for an unknown law,
 /// a Hertz law with neither stiffness nor radius and modulus (or both), or Hertz keys with the
 /// hard law.
 void read_contact_law(TableReader& r, Contact& c);

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include <solver/scene/SceneError.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact {
 namespace {
@@ -65,19 +65,19 @@ double estimate_auto_dt(const Scene& scene) {
 RunCost check_run_cost(const Scene& scene, double dt) {
   const RunCost c = estimate_run_cost(scene, dt);
   if (!(c.steps <= kMostSteps))
-    throw SceneError(scene.file, "time.dt",
+    throw InputError(scene.file, "time.dt",
                      fmt::format("expected a step that divides time.end = {:g} s into at most {:g} steps, "
                                  "got dt = {:g} s ({:.3g} steps)",
                                  scene.time.end, kMostSteps, dt, c.steps));
   if ((c.work > kOrdinaryWork || c.bytes > kOrdinaryBytes) && !scene.time.allow_long_run)
-    throw SceneError(
+    throw InputError(
         scene.file, "time.allow_long_run",
         fmt::format("this run is far beyond an ordinary one: {} (ordinary: at most {:g} DOF-steps "
                     "and {:g} GB); set time.allow_long_run = true (or --allow-long) to run it",
                     c.to_string(), kOrdinaryWork, kOrdinaryBytes / 1e9));
   if (c.field_bytes > kOrdinaryFieldBytes && !scene.time.allow_long_run) {
     const double every = std::ceil(scene.time.output_every * c.field_bytes / kOrdinaryFieldBytes);
-    throw SceneError(
+    throw InputError(
         scene.file, "output.fields",
         fmt::format("the field files would take about {:.3g} GB ({:.3g} files, one per output row; "
                     "ordinary: at most {:g} GB); write fewer with time.output_every = {:g} or more, "
@@ -93,7 +93,7 @@ double check_model_cost(const Scene& scene) {
   for (const Body& b : scene.bodies) dofs += 3.0 * (static_cast<double>(b.elements) + 1.0);
   const double bytes = dofs * kBytesPerDof;
   if (bytes > kOrdinaryBytes && !scene.time.allow_long_run)
-    throw SceneError(
+    throw InputError(
         scene.file, "time.allow_long_run",
         fmt::format("this model is far beyond an ordinary one: {:.3g} DOFs, about {:.3g} GB of "
                     "memory (ordinary: at most {:g} GB); set time.allow_long_run = true to build it",

@@ -51,21 +51,21 @@ inline double planned_dt(const Scene& scene) {
   return scene.time.dt ? *scene.time.dt : estimate_auto_dt(scene);
 }
 
-/// @brief Throws SceneError (key time.dt or time.allow_long_run) when `scene` at step `dt` (s)
+/// @brief Throws InputError (key time.dt or time.allow_long_run) when `scene` at step `dt` (s)
 /// has more than kMostSteps steps, or exceeds kOrdinaryWork / kOrdinaryBytes without
 /// time.allow_long_run; key output.fields when the field files exceed kOrdinaryFieldBytes
 /// without it. The message states the estimate and the setting that allows the run.
 /// @return the estimate it checked (estimate_run_cost(scene, dt)).
 RunCost check_run_cost(const Scene& scene, double dt);
 
-/// @brief Throws SceneError (key time.allow_long_run) when the assembled model of `scene` alone
+/// @brief Throws InputError (key time.allow_long_run) when the assembled model of `scene` alone
 /// (estimate_run_cost's model part, no history) exceeds kOrdinaryBytes without
 /// time.allow_long_run: `beamimpact model` refuses what `run` would refuse for its model.
 /// @return the estimated bytes of the model
 double check_model_cost(const Scene& scene);
 
 /// @brief The number of steps ceil(end / dt - 1e-9) as a long, after the check against
-/// kMostSteps (SceneError on key time.dt otherwise).
+/// kMostSteps (InputError on key time.dt otherwise).
 long step_count(const Scene& scene, double dt);
 
 }  // namespace beamimpact

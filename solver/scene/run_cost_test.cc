@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include <solver/scene/SceneError.hpp>
 #include <solver/testing/test_scenes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact {
 namespace {
@@ -32,14 +32,14 @@ TEST(RunCost, RefusesBeyondOrdinaryUnlessAllowed) {
   // 1e9 steps x 66 DOFs = 6.6e10 DOF-steps is ordinary work but 1e9 rows x 200 B = 200 GB of
   // history is not; end 4e9 s: 4e11 x 66 = 2.6e13 DOF-steps.
   const Scene big = load_paper_scene("s1_central", {"time.end=1e7"});
-  EXPECT_THROW(check_run_cost(big, 0.01), SceneError);
+  EXPECT_THROW(check_run_cost(big, 0.01), InputError);
   EXPECT_NO_THROW(
       check_run_cost(load_paper_scene("s1_central", {"time.end=1e7", "time.allow_long_run=true"}), 0.01));
   EXPECT_NO_THROW(check_run_cost(load_paper_scene("s1_central"), 0.01));
   try {
     check_run_cost(load_paper_scene("s1_central", {"time.end=4e9"}), 0.01);
     FAIL() << "expected a refusal";
-  } catch (const SceneError& e) {
+  } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "time.allow_long_run");
     EXPECT_NE(std::string(e.what()).find(
                   "4e+11 steps (the fastest wave needs 4e+10) x 66 DOFs = 2.64e+13 DOF-steps"),
@@ -52,9 +52,9 @@ TEST(RunCost, StepCountBeyondTheTimeAxisIsAlwaysRefused) {
   // 1e3 s / 1e-13 s = 1e16 steps > 1e15: refused even with allow_long_run (it overflowed a long
   // at dt = 1e-300 and could not advance t in double precision).
   const Scene s = load_paper_scene("s1_central", {"time.end=1e3", "time.allow_long_run=true"});
-  EXPECT_THROW(step_count(s, 1e-13), SceneError);
-  EXPECT_THROW(check_run_cost(s, 1e-13), SceneError);
-  EXPECT_THROW(check_run_cost(s, 0.0), SceneError);
+  EXPECT_THROW(step_count(s, 1e-13), InputError);
+  EXPECT_THROW(check_run_cost(s, 1e-13), InputError);
+  EXPECT_THROW(check_run_cost(s, 0.0), InputError);
   EXPECT_EQ(step_count(s, 1e-12), 1'000'000'000'000'000);
 }
 
@@ -74,7 +74,7 @@ TEST(RunCost, FieldFilesBeyondAGigabyteNeedFewerRowsOrTheOption) {
   try {
     check_run_cost(load_paper_scene("s1_central", {"output.fields=true", "time.end=4e4"}), 0.01);
     FAIL() << "expected a refusal";
-  } catch (const SceneError& e) {
+  } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "output.fields");
     EXPECT_NE(std::string(e.what()).find("time.output_every = 13 or more"), std::string::npos) << e.what();
   }

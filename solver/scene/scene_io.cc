@@ -9,13 +9,13 @@
 
 #include <fmt/format.h>
 
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/TableReader.hpp>
 #include <solver/scene/beam_theory.hpp>
 #include <solver/scene/collinear.hpp>
 #include <solver/scene/contact_law.hpp>
 #include <solver/scene/loads_io.hpp>
 #include <solver/scene/support_axes.hpp>
+#include <solver/util/InputError.hpp>
 #include <solver/util/sha256.hpp>
 
 namespace beamimpact {
@@ -46,7 +46,7 @@ std::vector<std::string> split_key(const std::string& key) {
 void apply_override(toml::table& root, const std::string& file, const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
-    throw SceneError(file, assignment, "--set expects key=value (e.g. time.dt=0.005)");
+    throw InputError(file, assignment, "--set expects key=value (e.g. time.dt=0.005)");
   const std::string key = assignment.substr(0, eq), text = assignment.substr(eq + 1);
   const std::vector<std::string> seg = split_key(key);
   // The value is TOML ("0.005", "[1, 0]", "true", "\"lumped\""); a bare word is a string.
@@ -76,17 +76,17 @@ void apply_override(toml::table& root, const std::string& file, const std::strin
             found = tb;
       }
       if (!found)
-        throw SceneError(
+        throw InputError(
             file, key,
             "--set: no entry '" + sel + "' in '" + seg[i - 1] + "' (use an index from 0 or a body name)");
-      if (i + 1 == seg.size()) throw SceneError(file, key, "--set: expected a key after '" + sel + "'");
+      if (i + 1 == seg.size()) throw InputError(file, key, "--set: expected a key after '" + sel + "'");
       t = found;
       continue;
     }
     t = next->as_table();
-    if (!t) throw SceneError(file, key, "--set: '" + seg[i] + "' is not a table");
+    if (!t) throw InputError(file, key, "--set: '" + seg[i] + "' is not a table");
   }
-  if (seg.empty()) throw SceneError(file, key, "--set: empty key");
+  if (seg.empty()) throw InputError(file, key, "--set: empty key");
   t->insert_or_assign(seg.back(), *parsed.get("v"));
 }
 
@@ -294,7 +294,7 @@ std::string read_scene_file(const std::filesystem::path& path, Scene& sc) {
     const int err = errno;  // the reason, as the system gives it (No such file or directory, ...)
     std::error_code ec;
     const bool dir = std::filesystem::is_directory(path, ec);
-    throw SceneError(
+    throw InputError(
         sc.file, "",
         std::string("cannot open the scene file: ") + (dir ? "it is a directory" : std::strerror(err)));
   }
@@ -313,7 +313,7 @@ toml::table parse_scene_text(const std::string& text, const Scene& sc) {
     std::ostringstream msg;
     msg << "TOML syntax error at line " << e.source().begin.line << ", column " << e.source().begin.column
         << ": " << e.description();
-    throw SceneError(sc.file, "", msg.str());
+    throw InputError(sc.file, "", msg.str());
   }
 }
 
@@ -494,7 +494,7 @@ void check_initial_gaps(const Scene& sc) {
     for (int node = c.search ? 0 : c.node; node <= (c.search ? striker.elements : c.node); ++node) {
       const Vec2 x = striker.node_position(node);
       if (distance_to_body(x, target) <= 1e-9 * scale)
-        throw SceneError(
+        throw InputError(
             sc.file, "contacts[" + std::to_string(i) + "].node",
             fmt::format("the striker node of '{}' at ({:.6g}, {:.6g}) m touches target '{}' at t = 0 "
                         "(zero initial gap); expected a positive gap: move '{}' away from '{}' "
@@ -504,7 +504,7 @@ void check_initial_gaps(const Scene& sc) {
     // A search also checks the target's end nodes against the striker.
     for (int end : {0, target.elements})
       if (c.search && distance_to_body(target.node_position(end), striker) <= 1e-9 * scale)
-        throw SceneError(
+        throw InputError(
             sc.file, "contacts[" + std::to_string(i) + "].node",
             fmt::format("node = \"all\": an end node of target '{}' touches striker '{}' at t = 0 "
                         "(zero initial gap); expected a positive gap",
@@ -516,12 +516,12 @@ void check_whole_scene(const Scene& sc) {
   const bool bending = sc.effects.bending.value_or(!scene_is_collinear(sc));
   for (std::size_t i = 0; i < sc.bodies.size(); ++i)
     if (bending && sc.bodies[i].inertia <= 0.0 && !sc.bodies[i].rigid)
-      throw SceneError(sc.file, "bodies[" + std::to_string(i) + "].inertia",
+      throw InputError(sc.file, "bodies[" + std::to_string(i) + "].inertia",
                        "missing; expected a positive second moment of area (m^4): this scene bends");
   for (std::size_t i = 0; i < sc.bodies.size(); ++i)
     for (std::size_t j = i + 1; j < sc.bodies.size(); ++j)
       if (segments_overlap(sc.bodies[i], sc.bodies[j]))
-        throw SceneError(sc.file, "bodies[" + std::to_string(j) + "].start",
+        throw InputError(sc.file, "bodies[" + std::to_string(j) + "].start",
                          "bodies '" + sc.bodies[i].name + "' and '" + sc.bodies[j].name +
                              "' overlap at t = 0; expected a positive gap between them");
   check_initial_gaps(sc);

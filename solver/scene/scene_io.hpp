@@ -12,7 +12,7 @@ namespace beamimpact {
 
 /// @brief Loads `path`, applies `overrides` ("time.dt=0.005", "bodies.B.elements=20",
 /// "bodies[1].elements=20", "contacts[0].friction=0.3"; values are TOML, bare words are strings)
-/// and validates everything. Throws SceneError naming the file, the key and what was expected.
+/// and validates everything. Throws InputError naming the file, the key and what was expected.
 Scene load_scene(const std::filesystem::path& path, const std::vector<std::string>& overrides = {});
 
 /// @brief As load_scene(), from TOML text already in memory (the Python module's
@@ -25,7 +25,7 @@ Scene load_scene_text(const std::string& text, const std::string& label,
                       const std::vector<std::string>& overrides = {});
 
 /// @brief The scene's file with its --set overrides applied, as TOML text: the scene an external
-/// method reads (it has no --set of its own). Throws SceneError when the file cannot be read.
+/// method reads (it has no --set of its own). Throws InputError when the file cannot be read.
 std::string scene_toml(const Scene& scene);
 
 }  // namespace beamimpact

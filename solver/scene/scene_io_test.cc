@@ -1,14 +1,14 @@
 // Scene files: the shipped scenes load, --set overrides work, and every kind of bad input gives
-// a SceneError naming the file, the key and what was expected.
+// a InputError naming the file, the key and what was expected.
 #include <solver/scene/scene_io.hpp>
 
 #include <fstream>
 
 #include <gtest/gtest.h>
 
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/TableReader.hpp>
 #include <solver/testing/test_scenes.hpp>
+#include <solver/util/InputError.hpp>
 
 namespace beamimpact {
 namespace {
@@ -72,7 +72,7 @@ TEST(SceneIo, SceneTextLoadsAsTheFileDoes) {
   try {
     load_scene_text("name = 3\n", "<dict>");
     FAIL() << "a bad scene text loaded";
-  } catch (const SceneError& e) {
+  } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "name");
     EXPECT_NE(std::string(e.what()).find("<dict>"), std::string::npos) << e.what();
   }
@@ -99,20 +99,20 @@ TEST(SceneIo, SetStepInSecondsOnAnAutoScene) {
   const Scene back = load_scene(paper_scene("s4_oblique_45"), {"time.dt=0.001", "time.dt=\"auto\""});
   EXPECT_FALSE(back.time.dt.has_value());
   EXPECT_DOUBLE_EQ(back.time.fraction, 0.5);  // the file's fraction stays with "auto"
-  EXPECT_THROW(load_scene(paper_scene("s4_oblique_45"), {"time.dt=0.001", "time.fraction=0.25"}), SceneError);
+  EXPECT_THROW(load_scene(paper_scene("s4_oblique_45"), {"time.dt=0.001", "time.fraction=0.25"}), InputError);
 }
 
-// Writes `text` to a temporary scene file and returns the SceneError it raises.
-SceneError error_of(const std::string& text, const std::vector<std::string>& sets = {}) {
+// Writes `text` to a temporary scene file and returns the InputError it raises.
+InputError error_of(const std::string& text, const std::vector<std::string>& sets = {}) {
   const std::string path = testing::temp_path("bad_scene.toml").string();
   std::ofstream(path) << text;
   try {
     load_scene(path, sets);
-  } catch (const SceneError& e) {
+  } catch (const InputError& e) {
     return e;
   }
   ADD_FAILURE() << "no error for:\n" << text;
-  return SceneError("", "", "");
+  return InputError("", "", "");
 }
 
 std::string good() {
@@ -167,7 +167,7 @@ TEST(SceneIo, BadInputNamesFileKeyAndExpectation) {
       {"empty fix", replace(g, "fix = [\"y\"]", "fix = []"), "bodies[1].supports[1].fix", "non-empty array"},
   };
   for (const BadCase& c : cases) {
-    const SceneError e = error_of(c.text);
+    const InputError e = error_of(c.text);
     EXPECT_EQ(e.key(), c.key) << c.what << ": " << e.what();
     EXPECT_NE(std::string(e.what()).find(c.says), std::string::npos) << c.what << ": " << e.what();
     EXPECT_NE(std::string(e.what()).find("bad_scene.toml"), std::string::npos) << c.what;
@@ -205,9 +205,9 @@ TEST(SceneIo, BodyAxisSupportsAndTheGlobalRollerWarning) {
 }
 
 TEST(SceneIo, BadOverrideIsAnError) {
-  const SceneError e = error_of(good(), {"bodies.Z.elements=3"});
+  const InputError e = error_of(good(), {"bodies.Z.elements=3"});
   EXPECT_NE(std::string(e.what()).find("no entry 'Z'"), std::string::npos) << e.what();
-  const SceneError typo = error_of(good(), {"time.ddt=0.1"});
+  const InputError typo = error_of(good(), {"time.ddt=0.1"});
   EXPECT_EQ(typo.key(), "time.ddt");  // a typo becomes an unknown key, not a silent default
 }
 

@@ -9,9 +9,9 @@
 #include <fmt/format.h>
 
 #include <api/model_export.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/run_cost.hpp>
 #include <solver/scene/scene_io.hpp>
+#include <solver/util/InputError.hpp>
 #include <solver/util/OutputLock.hpp>
 #include <verification/matrix/JobSpec.hpp>
 
@@ -31,7 +31,7 @@ void export_scene(const ModelArgs& a) {
     std::filesystem::remove(std::filesystem::path(a.out) / "model.json");
   }
   if (a.mesh_factor < 1 || a.mesh_factor > 1000)
-    throw SceneError(a.scene, "--mesh-factor",
+    throw InputError(a.scene, "--mesh-factor",
                      "expected an element multiplier 1..1000, got " + std::to_string(a.mesh_factor));
   std::vector<std::string> sets;
   if (a.mesh_factor != 1) sets = verification::mesh_overrides(a.scene, a.mesh_factor);

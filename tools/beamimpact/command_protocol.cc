@@ -16,7 +16,6 @@
 #include <api/methods_file.hpp>
 #include <api/registry.hpp>
 #include <beamimpact/version.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/util/InputError.hpp>
 #include <verification/matrix/cards.hpp>
 #include <verification/matrix/conform.hpp>
@@ -50,7 +49,7 @@ struct ProtocolArgs {
 fs::path data_folder(const std::string& command) {
   const fs::path root = data_root();
   if (root.empty())
-    throw SceneError("verification/methods.toml", "",
+    throw InputError("verification/methods.toml", "",
                      "not found from the program or the working directory upwards; `beamimpact " + command +
                          "` needs the shipped scenes (run it inside the repository or an installed tree)");
   return root;
@@ -59,14 +58,14 @@ fs::path data_folder(const std::string& command) {
 const Method& runnable(const std::string& name, const std::string& command) {
   const Method& m = method(name, "--methods", command);
   if (const std::string why = unavailable(m); !why.empty())
-    throw SceneError(m.origin, "check", "the method cannot run here: " + why);
+    throw InputError(m.origin, "check", "the method cannot run here: " + why);
   return m;
 }
 
 void conform_command(const ProtocolArgs& a) {
   const Method& m = runnable(a.method, "conform");
   if (m.in_process())
-    throw SceneError(m.origin, "conform", "'" + m.name + "' is built in; conform checks an external program");
+    throw InputError(m.origin, "conform", "'" + m.name + "' is built in; conform checks an external program");
   const fs::path out = a.out.empty() ? fs::path("conform-" + m.name) : fs::path(a.out);
   const OutputLock lock = lock_output(out);
   const ConformResult r{m.name, m.origin, conform(m, data_folder("conform"), out, a.timeout, a.scenes)};
@@ -211,8 +210,10 @@ void score_command(const ProtocolArgs& a) {
   std::map<std::string, JobOutcome> runs = execute_jobs(own, out / "runs", launcher(), a.jobs, timeout);
   if (!interruption()) run_references(items, runs, cache, a.jobs, timeout);
   const std::string command =
-      fmt::format("beamimpact score {} --out {} --jobs {} --sets {} --references {} --timeout {}{}", names,
-                  out.string(), a.jobs, fmt::join(a.score.sets, ","), a.score.references, timeout,
+      fmt::format("beamimpact score {} --out {} --jobs {} --sets {}{} --references {} --timeout {}{}", names,
+                  out.string(), a.jobs, fmt::join(a.score.sets, ","),
+                  a.score.scenes.empty() ? "" : fmt::format(" --scenes {}", fmt::join(a.score.scenes, ",")),
+                  a.score.references, timeout,
                   a.score.ladder ? fmt::format(" --rungs {}", a.score.rungs) : std::string(" --no-ladder"));
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   int exit_code = 0;
@@ -279,6 +280,10 @@ void add_protocol_commands(CLI::App& app) {
        "(the other scenes with an exact answer)")
       ->delimiter(',')
       ->capture_default_str();
+  s->add_option(
+       "--scenes", sa->score.scenes,
+       "Scenes scored, by name, comma-separated (default: every scene of the sets; `beamimpact scenes`)")
+      ->delimiter(',');
   s->add_option("--references", sa->score.references,
                 "IDA references: converged (rtol 1e-10, atol 1e-13, penalty 1e4 EA/le) or matrix (the card's "
                 "settings: quicker, less strict; not for IDA itself)")

@@ -295,10 +295,9 @@ TEST_F(Commands, BadCompareAndSweepOptionsExitTwo) {
   const Result ref =
       run(fmt::format("sweep {} --dt 0.01 --reference bogus --out '{}'", s1, (tmp_ / "sw").string()));
   EXPECT_EQ(ref.code, 2) << ref.output;
-  EXPECT_NE(
-      ref.output.find("expected a method name (paper, exact, ida, fenicsx, siconos, example), got 'bogus'"),
-      std::string::npos)
-      << ref.output;
+  // The list names every method of the registry (the shipped methods file's included).
+  EXPECT_NE(ref.output.find("expected a method name (paper, exact, ida, "), std::string::npos) << ref.output;
+  EXPECT_NE(ref.output.find("), got 'bogus'"), std::string::npos) << ref.output;
 }
 
 // The ratchet: a baseline written from a run holds the next run to its values. Its noise is

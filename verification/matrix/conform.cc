@@ -14,7 +14,6 @@
 #include <api/child_process.hpp>
 #include <api/external_method.hpp>
 #include <api/output_rules.hpp>
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/scene_io.hpp>
 #include <solver/schema/output_schema.hpp>
 #include <solver/util/InputError.hpp>
@@ -73,7 +72,7 @@ std::vector<ConformScene> conformance_set(const Method& m, const fs::path& root,
   for (ConformScene& c : set) {
     try {
       check_accepts(m, load_scene(c.file), "");
-    } catch (const SceneError& e) {
+    } catch (const InputError& e) {
       c.expect_exit = 2;
       c.why = e.what();
     }
@@ -98,7 +97,7 @@ Ran run_program(const Method& m, const ConformScene& c, const fs::path& dir, dou
   double end = 0.0;
   try {
     end = load_scene(c.file).time.end;
-  } catch (const SceneError&) {  // the malformed scene: no end time to offer
+  } catch (const InputError&) {  // the malformed scene: no end time to offer
   }
   ExternalRun run{c.file, dir, "", "", end > 0.0 ? fmt::format("{:.17g}", end) : ""};
   r.process = spawn_and_wait(external_argv(m, run), r.log, timeout);
@@ -228,7 +227,7 @@ const std::vector<std::pair<std::string, std::string>>& protocol_rules() {
 std::vector<RuleResult> conform(const Method& m, const fs::path& data_root, const fs::path& out,
                                 double timeout, const std::vector<std::string>& scenes) {
   if (m.in_process())
-    throw SceneError(m.origin, "conform", "'" + m.name + "' is built in; conform checks an external program");
+    throw InputError(m.origin, "conform", "'" + m.name + "' is built in; conform checks an external program");
   std::vector<RuleResult> results;
   Checker check(results);
   const std::vector<ConformScene> set = conformance_set(m, data_root, out / "scenes", scenes);

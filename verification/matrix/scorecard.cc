@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <solver/util/InputError.hpp>
 #include <verification/compare/compare_runs.hpp>
@@ -70,6 +71,10 @@ std::vector<ScoreItem> score_items(const std::vector<BenchmarkCard>& cards, cons
   options.validate(method.name);
   const bool converge = options.references == "converged";
   std::vector<ScoreItem> items;
+  const auto picked = [&](const JobSpec& run) {
+    return options.scenes.empty() ||
+           std::find(options.scenes.begin(), options.scenes.end(), run.scene_name()) != options.scenes.end();
+  };
   for (const std::string& set : options.sets)
     for (const BenchmarkCard& c : cards) {
       if (c.set != set) continue;
@@ -87,8 +92,14 @@ std::vector<ScoreItem> score_items(const std::vector<BenchmarkCard>& cards, cons
       it.gates = c.quantities;
       it.source = c.source;
       it.set = c.set;
-      items.push_back(std::move(it));
+      if (picked(it.run)) items.push_back(std::move(it));
     }
+  for (const std::string& name : options.scenes)
+    if (std::none_of(items.begin(), items.end(),
+                     [&](const ScoreItem& it) { return it.run.scene_name() == name; }))
+      throw InputError("command line", "--scenes",
+                       fmt::format("expected the name of a scene of the sets {} (a card's scene), got '{}'",
+                                   fmt::join(options.sets, ","), name));
   return items;
 }
 

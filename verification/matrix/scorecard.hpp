@@ -50,6 +50,9 @@ struct ScoreOptions {
   std::string references = "converged";
   bool ladder = true;  ///< false (--no-ladder): one run a scene, its error judged under the card
   int rungs = 3;       ///< runs of a ladder (>= 3)
+  /// Scenes scored, by name (a card's scene file without .toml); empty: every scene of the sets.
+  /// A name no card of the sets holds is bad input.
+  std::vector<std::string> scenes;
 
   /// @brief Throws InputError naming the option and the values allowed.
   /// @param method the scored method ("ida" may not take matrix references)

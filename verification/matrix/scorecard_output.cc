@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <api/methods_file.hpp>
 #include <solver/util/write_file_atomic.hpp>
 #include <verification/matrix/reports.hpp>
 #include <verification/matrix/scorecard.hpp>
@@ -12,6 +13,17 @@ namespace {
 namespace fs = std::filesystem;
 
 nlohmann::json number(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); }
+
+/// A path as the scorecard shows it: relative to the data root (the repository or the installed
+/// share/beamimpact) when it lies there, so that a committed scorecard names no machine's folders.
+std::string shown_path(const std::string& p) {
+  const fs::path root = data_root();
+  std::error_code ec;
+  if (root.empty() || p.empty() || !fs::exists(p, ec)) return p;
+  const fs::path a = fs::absolute(p).lexically_normal(), r = fs::absolute(root).lexically_normal();
+  const fs::path rel = a.lexically_relative(r);
+  return !rel.empty() && *rel.begin() != ".." ? rel.string() : p;
+}
 
 std::string text(const std::optional<double>& v) { return v ? fmt::format("{:.3g}", *v) : "-"; }
 
@@ -64,7 +76,7 @@ nlohmann::json scene_json(const ScoreRow& r, nlohmann::json quantities) {
                        {"solver_seconds", o.solver_seconds},
                        {"process_seconds", o.process_seconds}});
   return {{"scene", it.run.scene_name()},
-          {"file", it.run.scene.string()},
+          {"file", shown_path(it.run.scene.string())},
           {"set", it.set},
           {"run", it.run.settings_label()},
           {"reference", it.reference.settings_label()},
@@ -121,7 +133,7 @@ nlohmann::json scorecard_json(const ScoreContext& ctx, const std::vector<ScoreRo
     scenes.push_back(scene_json(r, std::move(qs)));
   }
   return {{"method", ctx.method},
-          {"origin", ctx.origin},
+          {"origin", shown_path(ctx.origin)},
           {"command", ctx.command},
           {"version", ctx.version},
           {"made", ctx.made},

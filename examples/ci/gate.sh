@@ -9,13 +9,18 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 out=${1:-out}
 [[ $out == --update ]] && out=out
-sets=paper  # the paper's scenes: the set this solver is held to (add hard,exact as it grows)
-beamimpact conform mysolver --methods "$here/methods.toml" --out "$out/conform"
+# The benchmark scenes this solver is held to: the central rod impact (S1) and its offset-gap
+# variant, both with an exact answer (a ladder of three resolutions each). Add scenes and sets as
+# the solver grows (`beamimpact scenes`; docs/benchmark-cards.md).
+sets=paper,exact
+scenes=s1_central,s1_offset_gap
+score=(beamimpact score mysolver --methods "$here/methods.toml" --sets "$sets" --scenes "$scenes"
+       --out "$out/score" --cache "$out/reference-cache")
+beamimpact conform mysolver --methods "$here/methods.toml" --out "$out/conform" --scenes end_to_end
 if [[ ${1:-} == --update ]]; then
-  beamimpact score mysolver --methods "$here/methods.toml" --sets "$sets" --out "$out/score"
+  "${score[@]}"
   cp "$out/score/scorecard.json" "$here/scorecard.json"
   echo "gate: wrote $here/scorecard.json"
 else
-  beamimpact score mysolver --methods "$here/methods.toml" --sets "$sets" --out "$out/score" \
-    --baseline "$here/scorecard.json"
+  "${score[@]}" --baseline "$here/scorecard.json"
 fi

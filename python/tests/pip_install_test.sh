@@ -2,7 +2,7 @@
 # @brief ctest python_pip_install: `pip install --no-build-isolation .` into a fresh virtual
 # environment made with --system-site-packages (numpy, matplotlib from Debian), both outside the
 # clone, then, from an empty folder outside the clone, everything a user does with the install:
-# the program (methods, scenes, run by name and by path, verify), the module (data_root, methods,
+# the program (methods, scenes, run by name and by path, verify, examples/ci's gate), the module (data_root, methods,
 # run by name, verify with no environment variable), pip show's licence. Checked against theory.
 # Usage: python/tests/pip_install_test.sh BUILD_DIR [--whole-tier]
 #   The module's verify(tier="quick") runs the S1 items of the quick tier; --whole-tier runs all of
@@ -29,7 +29,7 @@ exe=$venv/bin/beamimpact
 head -c 4 "$exe" | grep -q ELF || fail "$exe is not the compiled program"
 # Every method of the shipped methods file is listed, declared by the installed file.
 methods=$("$exe" methods)
-for m in paper exact ida fenicsx siconos example; do
+for m in paper exact ida fenicsx siconos example getfem; do
   grep -q "^$m " <<<"$methods" || fail "beamimpact methods does not list $m:"$'\n'"$methods"
 done
 grep -q "from: $venv/share/beamimpact/verification/methods.toml" <<<"$methods" ||
@@ -48,6 +48,10 @@ impulse() { /usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[
   fail "run by path: paper impulse $(impulse by-path/summary.json), expected 3.8-4 N s"
 "$exe" verify --tier quick --only s1_central --out verify-s1 --jobs 2 --baseline "$root/verification/baselines/quick.json" \
   > verify-s1.log || { cat verify-s1.log; fail "verify --only s1_central failed"; }
+# The CI recipe of an outside solver's repository against the installed program: its gate passes
+# for the honest solver and fails for one with 2 % more contact force (examples/ci/gate_test.sh).
+bash "$root/examples/ci/gate_test.sh" "$root/examples/ci" "$venv/bin" > gate.log 2>&1 ||
+  { cat gate.log; fail "examples/ci's gate against the installed program"; }
 # The module, with no environment variable: data, methods, a run by name, the whole quick tier.
 env -u BEAMIMPACT_EXE -u BEAMIMPACT_METHODS -u PYTHONPATH "$venv/bin/python" - "$venv" "$only" <<'PY'
 import sys
@@ -55,7 +59,7 @@ import beamimpact
 venv, only = sys.argv[1], sys.argv[2]
 assert beamimpact.__file__.startswith(venv), f"imported {beamimpact.__file__}, not the installed package"
 assert str(beamimpact.data_root()) == f"{venv}/share/beamimpact", beamimpact.data_root()
-missing = {"paper", "exact", "ida", "fenicsx", "siconos", "example"} - set(beamimpact.methods())
+missing = {"paper", "exact", "ida", "fenicsx", "siconos", "example", "getfem"} - set(beamimpact.methods())
 assert not missing, f"methods() lacks {missing}: {beamimpact.methods()}"
 assert beamimpact.scenes()["s1_central"].is_file(), beamimpact.scenes()
 exact = beamimpact.run("s1_central", method="exact", progress=False).summary["contacts"][0]["impulse_normal"]

@@ -15,14 +15,18 @@ namespace fs = std::filesystem;
 nlohmann::json number(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); }
 
 /// A path as the scorecard shows it: relative to the data root (the repository or the installed
-/// share/beamimpact) when it lies there, so that a committed scorecard names no machine's folders.
+/// share/beamimpact) when it lies there, else to the working folder when it lies there, so that a
+/// committed scorecard names no machine's folders.
 std::string shown_path(const std::string& p) {
-  const fs::path root = data_root();
   std::error_code ec;
-  if (root.empty() || p.empty() || !fs::exists(p, ec)) return p;
-  const fs::path a = fs::absolute(p).lexically_normal(), r = fs::absolute(root).lexically_normal();
-  const fs::path rel = a.lexically_relative(r);
-  return !rel.empty() && *rel.begin() != ".." ? rel.string() : p;
+  if (p.empty() || !fs::exists(p, ec)) return p;
+  const fs::path a = fs::absolute(p).lexically_normal();
+  for (const fs::path& base : {data_root(), fs::current_path()}) {
+    if (base.empty()) continue;
+    const fs::path rel = a.lexically_relative(fs::absolute(base).lexically_normal());
+    if (!rel.empty() && *rel.begin() != "..") return rel.string();
+  }
+  return p;
 }
 
 std::string text(const std::optional<double>& v) { return v ? fmt::format("{:.3g}", *v) : "-"; }
@@ -141,7 +145,7 @@ nlohmann::json scorecard_json(const ScoreContext& ctx, const std::vector<ScoreRo
           {"references", ctx.options.references},
           {"ladder", ctx.options.ladder},
           {"rungs", ctx.options.ladder ? ctx.options.rungs : 1},
-          {"reference_cache", ctx.cache},
+          {"reference_cache", shown_path(ctx.cache)},
           {"wall_seconds", ctx.wall_seconds},
           {"verdict", v.exit_code == 0 ? "passed" : "failed"},
           {"verdict_line", v.line},

@@ -4,7 +4,7 @@
 - the `beamimpact` program, into the environment's bin/ (a data file of the wheel's "bin" scheme
   path: the compiled program itself, no Python wrapper in front of it);
 - the shipped data into the environment's share/beamimpact/: verification/scenes/**,
-  verification/matrix.toml and verification/methods.toml, and the adapters methods.toml points
+  verification/matrix.toml, verification/methods.toml and verification/cards.toml, and the adapters methods.toml points
   to by `{here}/../` (references/<name>/*.py, examples/external_solver/penalty_central.py).
 
 This is the layout `cmake --install` makes (cmake/package.cmake): the program finds its data
@@ -94,7 +94,8 @@ def data_files():
     the references methods.toml points to (getfem and any other with a run.py as well)."""
     out = [("bin", [os.path.relpath(BUILD / "beamimpact", ROOT)])]  # setup() takes relative paths only
     out += _files("verification/scenes", "*.toml")
-    out += [("share/beamimpact/verification", ["verification/matrix.toml", "verification/methods.toml"])]
+    out += [("share/beamimpact/verification", ["verification/matrix.toml", "verification/methods.toml",
+                                                       "verification/cards.toml"])]
     for ref in sorted(p.parent.name for p in (ROOT / "references").glob("*/run.py")):
         out += _files(f"references/{ref}", "*.py")
     out += [("share/beamimpact/examples/external_solver", ["examples/external_solver/penalty_central.py"])]

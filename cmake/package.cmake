@@ -44,12 +44,15 @@ install(FILES ${BEAMIMPACT_INCLUDE_DIR}/beamimpact/version.hpp DESTINATION ${CMA
 # Data: scenes, matrix and methods file (share/beamimpact/verification), the FEniCSx reference script.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/verification/scenes DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/verification)
 install(FILES ${PROJECT_SOURCE_DIR}/verification/matrix.toml ${PROJECT_SOURCE_DIR}/verification/methods.toml
-  DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/verification)
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/references/fenicsx DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/references
-  FILES_MATCHING PATTERN "*.py" PATTERN "tests" EXCLUDE PATTERN "__pycache__" EXCLUDE)
-# The Siconos adapter and the minimal outside solver (Python, run on `beamimpact model`'s export).
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/references/siconos DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/references
-  FILES_MATCHING PATTERN "*.py" PATTERN "tests" EXCLUDE PATTERN "__pycache__" EXCLUDE)
+  ${PROJECT_SOURCE_DIR}/verification/cards.toml DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/verification)
+# The Python references the methods file runs (every references/NAME with a run.py: FEniCSx, Siconos,
+# GetFEM, ...), as setup.py's data_files lays them out.
+file(GLOB _python_references LIST_DIRECTORIES false ${PROJECT_SOURCE_DIR}/references/*/run.py)
+foreach(_run IN LISTS _python_references)
+  get_filename_component(_folder ${_run} DIRECTORY)
+  install(DIRECTORY ${_folder} DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/references
+    FILES_MATCHING PATTERN "*.py" PATTERN "tests" EXCLUDE PATTERN "__pycache__" EXCLUDE)
+endforeach()
 install(FILES ${PROJECT_SOURCE_DIR}/examples/external_solver/penalty_central.py
   DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/examples/external_solver)
 

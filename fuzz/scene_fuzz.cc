@@ -1,13 +1,13 @@
 // Fuzz target: the scene loader (TOML + --set overrides) and the run-cost guard.
 // Input: a scene file; optional --set overrides follow a line "#--set", one per line.
-// Contract: a scene loads, or load_scene throws SceneError (exit 2 in the CLI). Anything else
+// Contract: a scene loads, or load_scene throws InputError (exit 2 in the CLI). Anything else
 // (another exception, a crash, a sanitizer report) is a finding.
 #include <sstream>
 #include <vector>
 
-#include <solver/scene/SceneError.hpp>
 #include <solver/scene/run_cost.hpp>
 #include <solver/scene/scene_io.hpp>
+#include <solver/util/InputError.hpp>
 
 #include "fuzz_input.hpp"
 
@@ -21,7 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
     const Scene s = load_scene(path, overrides);
     check_run_cost(s, planned_dt(s));
-  } catch (const SceneError&) {
+  } catch (const InputError&) {
   }
   return 0;
 }

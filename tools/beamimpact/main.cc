@@ -38,6 +38,9 @@ int main(int argc, char** argv) {
   CLI::App app{"beamimpact: dynamic beam-to-beam collision (Pu & Chi 2011) with independent references"};
   app.set_version_flag("--version", kVersion);
   app.require_subcommand(1);
+  // A bad option is one line, as every other bad input: what was expected, no second line.
+  app.failure_message(
+      [](const CLI::App*, const CLI::Error& e) { return std::string("error: ") + e.what() + "\n"; });
   try {
     (void)methods();  // the built-in ones and the default methods files, for the help texts
     add_command_run(app);

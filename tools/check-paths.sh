@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # @brief No tracked file names a path outside the repository, which a clone does not have:
-# ../shared, shared/spec, shared/notes or shared/paper anywhere (what users need is copied into
+# the folder of shared material beside a developer's clone, anywhere (what users need is copied into
 # docs/: the scene format is docs/scene-format.md), nor an absolute path of the machine that
 # made it (/tmp/..., /work/..., /home/..., /root/...) in a committed report (reports/: JSON and
 # Markdown write paths relative to the repository). Also: README.md stays under 10 KB (a

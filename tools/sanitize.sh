@@ -24,7 +24,10 @@ cmake --build "$build" -j"$jobs"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 # Everything but the slow tier, the install test (it installs and builds a consumer: no
-# sanitizer value, a minute of build) and the scorecard figures' test (it scores the paper
+# sanitizer value, a minute of build), the scorecard figures' test (it scores the paper
 # integrator on all 21 benchmark scenes: over its 5 min under ASan; the scorer's C++ is checked
-# here by the Scorecard.* tests, the figures are Python).
-ctest --test-dir "$build" --output-on-failure -j"$jobs" -LE full -E '^(install_consumer|reports_scorecard_figures_test)$'
+# here by the Scorecard.* tests, the figures are Python) and the documentation's build (Sphinx and
+# its gallery, which runs the Python examples on the Python module this build leaves out; the test
+# command builds and checks it).
+ctest --test-dir "$build" --output-on-failure -j"$jobs" -LE full \
+  -E '^(install_consumer|reports_scorecard_figures_test|docs_build)$'

@@ -8,7 +8,13 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install-deps.sh
 build=${BEAMIMPACT_BUILD_DIR:-build}
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+# Ninja and ccache (the repository as ccache's base folder): tools/mutation-test.sh builds a copy of
+# the tree with the same compile lines, so every object it does not mutate comes from the cache.
+export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$PWD}
+config=(-DCMAKE_BUILD_TYPE=Release)
+[[ -f "$build/CMakeCache.txt" ]] || config+=(-G Ninja)
+command -v ccache >/dev/null && config+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+cmake -S . -B "$build" "${config[@]}" >/dev/null
 targets=()
 for t in "$@"; do targets+=(--target "$t"); done
 cmake --build "$build" -j"${BEAMIMPACT_JOBS:-$(nproc)}" "${targets[@]}"

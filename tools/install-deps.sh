@@ -5,7 +5,7 @@
 #   --sanitizers  only the packages of tools/sanitize.sh and tools/fuzz.sh (clang, its sanitizer and
 #                 libFuzzer runtimes, ninja)
 set -euo pipefail
-pkgs=(cmake g++ make libeigen3-dev libsundials-dev libgsl-dev libgtest-dev libbenchmark-dev
+pkgs=(cmake g++ make ninja-build ccache libeigen3-dev libsundials-dev libgsl-dev libgtest-dev libbenchmark-dev
       libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev
       python3-numpy python3-scipy python3-matplotlib python3-jinja2 python3-dev pybind11-dev python3-pytest python3-siconos python3-getfem clang-format universal-ctags
       chromium libopenmpi-dev openmpi-bin python3-vtk9

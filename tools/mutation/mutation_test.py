@@ -96,13 +96,14 @@ def check_applicable():
 
 
 def build(build_dir: Path, tree: Path, log: Path, targets):
+    # The compile lines of tools/build.sh (Ninja, Release, ccache with the repository as its base
+    # folder): the copy's objects have the same relative paths, so ccache serves every unmutated one.
     env = dict(os.environ)
-    env.setdefault("CCACHE_BASEDIR", "/work")
-    env.setdefault("CCACHE_DIR", "/work/.ccache")
+    env.setdefault("CCACHE_BASEDIR", str(ROOT))
+    launcher = ["-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"] if shutil.which("ccache") else []
     if not (build_dir / "build.ninja").exists():
         r = sh(["cmake", "-S", str(tree), "-B", str(build_dir), "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
-                "-DCMAKE_CXX_COMPILER_LAUNCHER=ccache", "-DBEAMIMPACT_FENICSX_TESTS=OFF",
-                "-DBEAMIMPACT_BENCHMARKS=OFF"], env=env)
+                *launcher, "-DBEAMIMPACT_FENICSX_TESTS=OFF", "-DBEAMIMPACT_BENCHMARKS=OFF"], env=env)
         if r.returncode:
             log.write_text(r.stdout + r.stderr)
             return False

@@ -166,7 +166,7 @@ py::object verify(const std::filesystem::path& matrix, const std::filesystem::pa
     py::gil_scoped_release release;
     r = verification::verify(o, exe);
   }
-  verification::write_verify_reports(out, *r);
+  verification::write_verify_reports(o, *r);
   return to_python(verification::norms_json(r->context, r->items));
 }
 

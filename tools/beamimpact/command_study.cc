@@ -5,8 +5,6 @@
 
 #include <fmt/format.h>
 
-#include <beamimpact/version.hpp>
-#include <solver/util/write_file_atomic.hpp>
 #include <verification/study/run_study.hpp>
 
 #include "methods_option.hpp"
@@ -15,33 +13,21 @@
 namespace beamimpact {
 namespace {
 
-struct StudyArgs {
-  std::string file, out;
-  bool keep_runs = false;
-  bool fresh = false;
-};
-
-void study_command(const StudyArgs& a) {
-  const OutputLock lock = lock_output(a.out);
-  remove_stale_outputs(a.out, {"study.csv", "study.json", "study.md", "timing.csv", "timing.json"});
-  study::Study s = study::Study::load(a.file);
-  s.keep_runs = s.keep_runs || a.keep_runs;
-  const auto r = study::execute_study(s, a.out, a.fresh);
+void study_command(const study::StudyOptions& o) {
+  const OutputLock lock = lock_output(o.out);
+  const auto r = study::run_study(o);
   if (!r) return;  // an MPI worker rank: rank 0 writes the table
-  const std::string command =
-      fmt::format("beamimpact study {} --out {}{}", a.file, a.out, a.keep_runs ? " --keep-runs" : "");
-  const study::StudyCounts n = study::write_study(s, *r, a.out, command, kVersion);
-  const auto out = std::filesystem::path(a.out);
+  const study::StudyCounts n = study::write_study_reports(o, *r);
   fmt::print("study {}: {} case(s) in {:.1f} s on {} rank(s) ({:.2f} cases/s), {} where the method broke\n",
-             s.name, n.cases, r->wall_seconds, r->ranks, n.cases_per_second, n.broken);
-  fmt::print("table: {} {}\nreport: {}\ntiming: {}\n", (out / "study.csv").string(),
-             (out / "study.json").string(), (out / "study.md").string(), (out / "timing.json").string());
+             r->study.name, n.cases, r->wall_seconds, r->ranks, n.cases_per_second, n.broken);
+  fmt::print("table: {} {}\nreport: {}\ntiming: {}\n", (o.out / "study.csv").string(),
+             (o.out / "study.json").string(), (o.out / "study.md").string(), (o.out / "timing.json").string());
 }
 
 }  // namespace
 
 void add_command_study(CLI::App& app) {
-  auto a = std::make_shared<StudyArgs>();
+  auto a = std::make_shared<study::StudyOptions>();
   CLI::App* c = app.add_subcommand(
       "study",
       "Parameter study: a scene over a grid or Latin hypercube of parameters, each point compared with its "

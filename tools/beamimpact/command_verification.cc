@@ -45,22 +45,6 @@ struct CompareArgs {
   CompareOptions options;
 };
 
-struct VerifyArgs {
-  std::string matrix = "verification/matrix.toml", out, tier = "quick", only;
-  std::string baseline;          ///< --baseline FILE ("" none)
-  bool update_baseline = false;  ///< write FILE from this run instead of holding it to FILE
-  int jobs = 1;
-  int threads = 0;  // 0: each run's default
-  bool fresh = false;
-};
-
-struct SweepArgs {
-  SweepOptions o;
-  int threads = 0;  // 0: each run's default
-  std::string out;
-  std::string scene;
-};
-
 }  // namespace
 
 Launcher launcher() {
@@ -82,93 +66,50 @@ void compare(const CompareArgs& a) {
   fmt::print("wrote {}\n", json.string());
 }
 
-/// --baseline FILE: this run's gates against FILE (false when one got worse beyond its noise);
-/// with --update-baseline, FILE is written from this run instead, when it passed.
-bool hold_to_baseline(const VerifyArgs& a, const VerifyResult& r) {
-  if (a.baseline.empty()) return true;
-  const fs::path file = a.baseline;
-  std::error_code ec;
-  const bool exists = fs::exists(file, ec);
-  if (!exists && !a.update_baseline)
-    throw InputError(file.string(), "--baseline", "no such file (write one with --update-baseline)");
-  BaselineComparison c;
-  if (exists) {
-    c = compare_baseline(read_baseline(file), file.string(), r.items);
-    fmt::print("{}", c.to_text());
-  }
-  if (!a.update_baseline) {
-    if (!c.passed())
-      fmt::print("baseline FAILED: {} gate(s) worse than in {}\n", c.worse.size(), file.string());
-    return c.passed();
-  }
-  if (!r.passed()) {
-    fmt::print(stderr, "baseline: {} not updated: this verification failed\n", file.string());
-    return false;
-  }
-  write_file_atomic(file, baseline_json(kVersion, r.context.tier, r.items).dump(1) + "\n");
-  fmt::print("baseline: wrote {}\n", file.string());
-  return true;
+/// The verdict lines of a result: failing gates, counts, where the reports are, the baseline.
+void print_verify(const VerifyOptions& o, const VerifyResult& r, const fs::path& baseline_written) {
+  for (const auto& i : r.items)
+    for (const auto& g : i.gates)
+      if (g.status == GateStatus::kFail) fmt::print("FAIL {}: {} ({})\n", i.name, g.gate.metric, g.message);
+  const GateCounts n = count_gates(r.items);
+  fmt::print("verify {}: {} gates, {} passed, {} failed, {} skipped, {:.1f} s\nreport: {}\n",
+             r.gates_passed() ? "passed" : "FAILED", n.gates, n.pass, n.fail, n.skipped, r.context.wall_seconds,
+             (o.out / "report.md").string());
+  fmt::print("junit: {}\nnorms: {}\n", (o.out / "junit.xml").string(), (o.out / "norms.json").string());
+  if (r.baseline) fmt::print("{}", r.baseline->to_text());
+  if (r.baseline && !r.update_baseline && !r.baseline->passed())
+    fmt::print("baseline FAILED: {} gate(s) worse than in {}\n", r.baseline->worse.size(),
+               r.baseline_file.string());
+  if (!baseline_written.empty()) fmt::print("baseline: wrote {}\n", baseline_written.string());
+  if (r.update_baseline && !r.gates_passed())
+    fmt::print(stderr, "baseline: {} not updated: this verification failed\n", r.baseline_file.string());
 }
 
-void verify(const VerifyArgs& a) {
-  const OutputLock lock = lock_output(a.out);  // before the earlier reports are removed
+void verify(VerifyOptions o) {
+  const OutputLock lock = lock_output(o.out);  // before the earlier reports are removed
   forward_interruptions();
-  VerifyOptions o;
-  o.matrix = resolve_data_file(a.matrix);  // verification/matrix.toml from any folder
-  o.out = a.out;
-  o.tier = a.tier;
-  o.only = a.only;
-  o.jobs = a.jobs;
-  o.fresh = a.fresh;
-  o.threads = a.threads;
+  o.matrix = resolve_data_file(o.matrix.string());  // verification/matrix.toml from any folder
   o.executor = study::distributed_jobs;
   o.quiet = study::World::rank() != 0;
   if (study::World::size() > 1) o.executor_note = fmt::format(", {} MPI ranks", study::World::size());
   const auto result = verification::verify(o, program_path());
   if (!result) return;  // an MPI worker rank: rank 0 evaluates and writes the reports
-  const fs::path out = a.out;
-  write_verify_reports(out, *result);
-  for (const auto& i : result->items)
-    for (const auto& g : i.gates)
-      if (g.status == GateStatus::kFail) fmt::print("FAIL {}: {} ({})\n", i.name, g.gate.metric, g.message);
-  const GateCounts n = count_gates(result->items);
-  fmt::print("verify {}: {} gates, {} passed, {} failed, {} skipped, {:.1f} s\nreport: {}\n",
-             result->passed() ? "passed" : "FAILED", n.gates, n.pass, n.fail, n.skipped,
-             result->context.wall_seconds, (out / "report.md").string());
-  fmt::print("junit: {}\nnorms: {}\n", (out / "junit.xml").string(), (out / "norms.json").string());
+  print_verify(o, *result, write_verify_reports(o, *result));
   if (interruption()) {
     fmt::print(stderr, "verify: interrupted (signal {}): the report is marked incomplete\n", interruption());
     throw CommandExit{interrupted_exit_code()};
   }
-  const bool held = hold_to_baseline(a, *result);
-  if (!result->passed() || !held) throw CommandExit{1};
+  if (!result->passed()) throw CommandExit{1};
 }
 
-void sweep(SweepArgs& a) {
-  const auto start = std::chrono::steady_clock::now();
-  const OutputLock lock = lock_output(a.out);  // before the earlier tables are removed
-  a.o.scene = a.scene;
-  a.o.out = a.out;
+void sweep(SweepOptions o) {
+  const OutputLock lock = lock_output(o.out);  // before the earlier tables are removed
   forward_interruptions();
-  a.o.executor = study::distributed_jobs;
-  Launcher l = launcher();
-  l.threads = a.threads;
-  const auto ran = execute_sweep(a.o, l);
+  o.executor = study::distributed_jobs;
+  const auto ran = execute_sweep(o, launcher());
   if (!ran) return;  // an MPI worker rank: rank 0 compares and writes the outputs
   const SweepResult& r = *ran;
-  std::string dts, meshes;
-  for (double d : a.o.fractions.empty() ? a.o.dts : a.o.fractions)
-    dts += fmt::format("{}{:g}", dts.empty() ? "" : ",", d);
-  for (const auto& m : a.o.meshes) meshes += (meshes.empty() ? "" : ",") + m;
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const std::string header = fmt::format(
-      "- command: `beamimpact sweep {} --method {} {} {}{} --reference {} --out {} --jobs {}`\n- version: "
-      "`{}`\n"
-      "- made {} (UTC), wall time {:.1f} s\n{}",
-      a.scene, a.o.method, a.o.fractions.empty() ? "--dt" : "--fraction", dts,
-      meshes.empty() ? "" : " --mesh " + meshes, a.o.reference, a.out, a.o.jobs, kVersion, utc_now(), wall,
-      interruption() ? fmt::format("- **INCOMPLETE: interrupted by signal {}**\n", interruption()) : "");
-  write_sweep(a.o, r, header);
+  write_sweep(o, r);
   for (const auto& p : r.points) {
     const auto& s = p.outcome.spec;
     fmt::print("{:<28} {:>8} steps {:>9.4f} s", s.settings_label(), p.outcome.steps,
@@ -183,10 +124,7 @@ void sweep(SweepArgs& a) {
     }
     fmt::print("\n");
   }
-  fmt::print("errors against {}\nreport: {}\n", r.reference_label, (fs::path(a.out) / "sweep.md").string());
-  if (std::all_of(r.points.begin(), r.points.end(),
-                  [](const SweepPoint& p) { return p.outcome.status == JobOutcome::Status::kNotApplicable; }))
-    throw InputError(a.scene, "", "every run of the sweep was refused: " + r.points.front().outcome.message);
+  fmt::print("errors against {}\nreport: {}\n", r.reference_label, (o.out / "sweep.md").string());
   if (interruption()) {
     fmt::print(stderr, "sweep: interrupted (signal {}): the report is marked incomplete\n", interruption());
     throw CommandExit{interrupted_exit_code()};
@@ -199,7 +137,7 @@ namespace {
 
 /// `verify`: its options, --baseline and --update-baseline among them.
 void add_verify_command(CLI::App& app) {
-  auto va = std::make_shared<VerifyArgs>();
+  auto va = std::make_shared<VerifyOptions>();
   CLI::App* v = app.add_subcommand("verify", "Run the verification matrix; exit 1 if any gate fails");
   v->add_option("MATRIX", va->matrix,
                 "VerificationMatrix file; a relative path missing here is looked for under the data root "
@@ -271,25 +209,25 @@ void add_verification_commands(CLI::App& app) {
 
   add_verify_command(app);
 
-  auto sa = std::make_shared<SweepArgs>();
+  auto sa = std::make_shared<SweepOptions>();
   CLI::App* s =
       app.add_subcommand("sweep", "Error norms and wall time of one scene at several dt (and meshes)");
   s->add_option("SCENE", sa->scene, "Scene file or a shipped scene's name (`beamimpact scenes`)")
       ->required()
       ->transform(scene_argument());
-  auto* dt = s->add_option("--dt", sa->o.dts, "s, time steps, e.g. 0.01,0.005,0.0025")->delimiter(',');
-  auto* fr = s->add_option("--fraction", sa->o.fractions,
+  auto* dt = s->add_option("--dt", sa->dts, "s, time steps, e.g. 0.01,0.005,0.0025")->delimiter(',');
+  auto* fr = s->add_option("--fraction", sa->fractions,
                            "fractions of the critical step, for scenes with dt = \"auto\" (e.g. 0.5,0.25)")
                  ->delimiter(',');
   dt->excludes(fr);
-  s->add_option("--mesh", sa->o.meshes, "Element multipliers (beam methods), e.g. 1,2,4")->delimiter(',');
-  s->add_option("--method", sa->o.method, "Method under test")->capture_default_str();
-  s->add_option("--reference", sa->o.reference,
+  s->add_option("--mesh", sa->meshes, "Element multipliers (beam methods), e.g. 1,2,4")->delimiter(',');
+  s->add_option("--method", sa->method, "Method under test")->capture_default_str();
+  s->add_option("--reference", sa->reference,
                 "self (the method at the finest dt/4 on the finest mesh), a method name (" + method_names() +
                     "), or a run directory")
       ->capture_default_str();
   s->add_option("--out", sa->out, "Output directory (runs/, sweep.md, sweep.csv, sweep.json)")->required();
-  s->add_option("--jobs", sa->o.jobs, "Runs in parallel")->capture_default_str()->check(job_count());
+  s->add_option("--jobs", sa->jobs, "Runs in parallel")->capture_default_str()->check(job_count());
   add_threads_option(s, sa->threads,
                      "Threads of each run of the paper integrator (as run --threads; default: each run's)");
   add_methods_option(s);

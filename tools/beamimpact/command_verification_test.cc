@@ -343,6 +343,7 @@ TEST_F(Commands, BaselineHoldsTheRunToItsValues) {
       run(fmt::format("verify verification/matrix.toml --only s1_central --out '{}' --baseline '{}'",
                       (tmp_ / "vm").string(), (tmp_ / "none.json").string()));
   EXPECT_EQ(missing.code, 2) << missing.output;
+  EXPECT_FALSE(fs::exists(tmp_ / "vm" / "runs")) << "a missing baseline is refused before any run";
 }
 
 // A shipped scene by name from a folder outside the repository; a file of the working folder

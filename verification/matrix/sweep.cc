@@ -1,15 +1,18 @@
 #include <verification/matrix/sweep.hpp>
 
 #include <algorithm>
+#include <chrono>
 
 #include <fmt/format.h>
 
 #include <api/registry.hpp>
+#include <beamimpact/version.hpp>
 #include <solver/util/InputError.hpp>
 #include <solver/util/write_file_atomic.hpp>
 #include <verification/compare/compare_runs.hpp>
 #include <verification/matrix/Table.hpp>
 #include <verification/matrix/evaluate.hpp>
+#include <verification/matrix/interruption.hpp>
 #include <verification/matrix/reports.hpp>
 
 namespace beamimpact::verification {
@@ -39,6 +42,18 @@ void check_steps(const SweepOptions& o) {
                        fmt::format("expected fractions of the critical step in (0, 1], got {:g}", v));
 }
 
+/// The command line that makes this sweep.
+std::string command_of(const SweepOptions& o) {
+  std::string steps, meshes;
+  for (double d : o.fractions.empty() ? o.dts : o.fractions)
+    steps += fmt::format("{}{:g}", steps.empty() ? "" : ",", d);
+  for (const auto& m : o.meshes) meshes += (meshes.empty() ? "" : ",") + m;
+  return fmt::format("beamimpact sweep {} --method {} {} {}{} --reference {} --out {} --jobs {}{}",
+                     o.scene.string(), o.method, o.fractions.empty() ? "--dt" : "--fraction", steps,
+                     meshes.empty() ? "" : " --mesh " + meshes, o.reference, o.out.string(), o.jobs,
+                     o.threads > 0 ? fmt::format(" --threads {}", o.threads) : "");
+}
+
 }  // namespace
 
 const std::vector<std::string>& sweep_norms() {
@@ -48,8 +63,10 @@ const std::vector<std::string>& sweep_norms() {
   return n;
 }
 
-std::optional<SweepResult> execute_sweep(const SweepOptions& o, const Launcher& launcher) {
+std::optional<SweepResult> execute_sweep(const SweepOptions& o, Launcher launcher) {
+  const auto start = std::chrono::steady_clock::now();
   remove_stale_outputs(o.out, {"sweep.csv", "sweep.json", "sweep.md"});  // before anything can refuse
+  launcher.threads = o.threads;
   check_steps(o);
   const bool by_fraction = !o.fractions.empty();
   const auto& steps = by_fraction ? o.fractions : o.dts;
@@ -70,6 +87,8 @@ std::optional<SweepResult> execute_sweep(const SweepOptions& o, const Launcher& 
     }
 
   SweepResult r;
+  r.command = command_of(o);
+  r.made = utc_now();
   std::optional<JobSpec> ref;
   if (o.reference == "self") {
     const double finest = *std::min_element(steps.begin(), steps.end()) / 4;
@@ -118,6 +137,11 @@ std::optional<SweepResult> execute_sweep(const SweepOptions& o, const Launcher& 
       p.comparison = compare_runs(*stored_run(p.outcome), *reference);
     r.points.push_back(std::move(p));
   }
+  if (std::all_of(r.points.begin(), r.points.end(),
+                  [](const SweepPoint& p) { return p.outcome.status == JobOutcome::Status::kNotApplicable; }))
+    throw InputError(o.scene.string(), "", "every run of the sweep was refused: " + r.points.front().outcome.message);
+  if (interruption()) r.incomplete = fmt::format("interrupted by signal {}", interruption());
+  r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
 
@@ -150,7 +174,10 @@ Table order_table(const SweepOptions& o, const SweepResult& r) {
 
 }  // namespace
 
-void write_sweep(const SweepOptions& o, const SweepResult& r, const std::string& header) {
+void write_sweep(const SweepOptions& o, const SweepResult& r) {
+  const std::string header = fmt::format(
+      "- command: `{}`\n- version: `{}`\n- made {} (UTC), wall time {:.1f} s\n{}", r.command, kVersion, r.made,
+      r.wall_seconds, r.incomplete.empty() ? "" : fmt::format("- **INCOMPLETE: {}**\n", r.incomplete));
   fs::create_directories(o.out);
   const auto& names = sweep_norms();
   // CSV: one row per point, machine-readable; Markdown: the same points for reading.

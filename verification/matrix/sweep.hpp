@@ -23,6 +23,7 @@ struct SweepOptions {
   std::filesystem::path out;
   int jobs = 1;
   double timeout = 3600.0;  ///< s per run
+  int threads = 0;          ///< --threads of each run of the paper integrator (0: each run's default)
   JobExecutor executor;     ///< where the runs go (empty: execute_jobs, threads of this process)
 };
 
@@ -37,15 +38,21 @@ struct SweepResult {
   std::string reference_label;  ///< what the errors are measured against
   std::filesystem::path reference_dir;
   std::vector<SweepPoint> points;  ///< in the order dts x meshes
+  std::string command;             ///< the command line that makes this sweep
+  std::string made;                ///< UTC, when it started
+  double wall_seconds = 0.0;       ///< s, the whole sweep
+  std::string incomplete;          ///< why the sweep is not complete (an interruption); "" complete
 };
 
 /// @brief Runs the sweep (runs in parallel) and compares each point with the reference.
-/// Throws InputError for bad options and std::runtime_error when the reference run fails.
-/// Returns nullopt on an MPI rank other than 0 (see JobExecutor).
-std::optional<SweepResult> execute_sweep(const SweepOptions& o, const Launcher& launcher);
+/// Throws InputError for bad options or when every run was refused, and std::runtime_error when
+/// the reference run fails. Returns nullopt on an MPI rank other than 0 (see JobExecutor).
+/// @param launcher the program and methods files of the runs (its threads: o.threads)
+std::optional<SweepResult> execute_sweep(const SweepOptions& o, Launcher launcher);
 
-/// @brief Writes out/sweep.md, sweep.csv and sweep.json; `header` says how it was made.
-void write_sweep(const SweepOptions& o, const SweepResult& r, const std::string& header);
+/// @brief Writes o.out/sweep.md (headed by how it was made: command, version, time), sweep.csv
+/// and sweep.json.
+void write_sweep(const SweepOptions& o, const SweepResult& r);
 
 /// @brief The norms tabulated by sweep (and printed by verify for a case).
 const std::vector<std::string>& sweep_norms();

@@ -65,6 +65,13 @@ std::optional<VerifyResult> verify(const VerifyOptions& o, const std::filesystem
   remove_stale_outputs(o.out, {"report.md", "junit.xml", "norms.json", "report.html"});
   if (o.jobs < 1)
     throw InputError(o.matrix.string(), "--jobs", "expected a positive number of parallel runs");
+  std::error_code ec;
+  const bool baseline_exists = !o.baseline.empty() && std::filesystem::exists(o.baseline, ec);
+  if (!o.baseline.empty() && !baseline_exists && !o.update_baseline)
+    throw InputError(o.baseline.string(), "--baseline", "no such file (write one with --update-baseline)");
+  if (o.update_baseline && o.baseline.empty())
+    throw InputError(o.matrix.string(), "--update-baseline", "expected --baseline FILE: the file to write");
+  const nlohmann::json baseline = baseline_exists ? read_baseline(o.baseline) : nlohmann::json();
   const VerificationMatrix m = VerificationMatrix::load(o.matrix);
   const Selection s = select(m, o);
   if (s.cases.empty() && s.ladders.empty() && s.checks.empty())
@@ -111,13 +118,19 @@ std::optional<VerifyResult> verify(const VerifyOptions& o, const std::filesystem
   if (interruption())
     ctx.incomplete =
         fmt::format("interrupted by signal {}; runs not finished are failed or skipped", interruption());
+  r.baseline_file = o.baseline;
+  r.update_baseline = o.update_baseline;
+  if (baseline_exists) r.baseline = compare_baseline(baseline, o.baseline.string(), r.items);
   return r;
 }
 
-void write_verify_reports(const std::filesystem::path& out, const VerifyResult& r) {
-  write_junit(out / "junit.xml", r.context, r.items);
-  write_json(out / "norms.json", r.context, r.items);
-  write_markdown(out / "report.md", r.context, r.items);
+std::filesystem::path write_verify_reports(const VerifyOptions& o, const VerifyResult& r) {
+  write_junit(o.out / "junit.xml", r.context, r.items);
+  write_json(o.out / "norms.json", r.context, r.items);
+  write_markdown(o.out / "report.md", r.context, r.items);
+  if (!o.update_baseline || !r.gates_passed()) return {};
+  write_file_atomic(o.baseline, baseline_json(kVersion, r.context.tier, r.items).dump(1) + "\n");
+  return o.baseline;
 }
 
 }  // namespace beamimpact::verification

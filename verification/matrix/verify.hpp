@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include <verification/matrix/baseline.hpp>
 #include <verification/matrix/evaluate.hpp>
 #include <verification/matrix/execute_jobs.hpp>
 #include <verification/matrix/reports.hpp>
@@ -30,24 +31,38 @@ struct VerifyOptions {
   /// @brief Run everything again; otherwise a run recorded as finished under out/runs with the
   /// same input (an interrupted verify's) is taken as it is (finished_runs.hpp).
   bool fresh = false;
+  /// @brief A baseline (an earlier --update-baseline file, or a norms.json) this result is held to:
+  /// a gated value worse than in it beyond its noise fails the verdict (baseline.hpp). "" none.
+  std::filesystem::path baseline;
+  /// @brief Write `baseline` from this result (when its gates pass) instead of holding it to it.
+  bool update_baseline = false;
 };
 
 /// @brief A verification run: how it was made, every item's gates, and the verdict.
 struct VerifyResult {
   ReportContext context;
   std::vector<ItemResult> items;
-  /// @brief The one pass rule (verification_passed()): complete and no gate failed.
-  bool passed() const { return verification_passed(items, context.incomplete.empty()); }
+  /// @brief This result against VerifyOptions::baseline, when one was given and exists.
+  std::optional<BaselineComparison> baseline;
+  std::filesystem::path baseline_file;  ///< VerifyOptions::baseline
+  bool update_baseline = false;         ///< VerifyOptions::update_baseline: written, not held
+  /// @brief The gates' rule (verification_passed()): complete and no gate failed.
+  bool gates_passed() const { return verification_passed(items, context.incomplete.empty()); }
+  /// @brief The one verdict: the gates pass and, unless the baseline is being written, no gated
+  /// value got worse than in the baseline.
+  bool passed() const { return gates_passed() && (update_baseline || !baseline || baseline->passed()); }
 };
 
-/// @brief Checks the options (InputError naming the option), loads the matrix, runs the selected
-/// items' runs into out/runs/ (those finished earlier taken, unless o.fresh) and evaluates them. Returns
+/// @brief Checks the options (InputError naming the option; a --baseline that does not exist, unless it
+/// is to be written), loads the matrix, runs the selected items' runs into out/runs/ (those finished
+/// earlier taken, unless o.fresh), evaluates them and compares them with the baseline. Returns
 /// nullopt on an MPI rank other than 0 (see JobExecutor). An interruption (interruption()) leaves a result
 /// marked incomplete.
 /// @param exe the beamimpact executable the runs start (with --methods for each methods file read)
 std::optional<VerifyResult> verify(const VerifyOptions& o, const std::filesystem::path& exe);
 
-/// @brief Writes out/junit.xml, out/norms.json and out/report.md of a result.
-void write_verify_reports(const std::filesystem::path& out, const VerifyResult& r);
+/// @brief Writes o.out/junit.xml, norms.json and report.md of a result, and with o.update_baseline the
+/// baseline file when the gates passed. Returns the baseline file written ("" none).
+std::filesystem::path write_verify_reports(const VerifyOptions& o, const VerifyResult& r);
 
 }  // namespace beamimpact::verification

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <beamimpact/version.hpp>
 #include <solver/util/Progress.hpp>
 #include <solver/util/write_file_atomic.hpp>
 #include <verification/matrix/Table.hpp>
@@ -255,6 +256,22 @@ StudyCounts write_study(const Study& s, const StudyResult& r, const fs::path& ou
   write_file_atomic(out / "timing.csv", t.timing.csv());
   write_file_atomic(out / "timing.json", timing.dump(1) + "\n");
   return {t.n_cases, t.n_broken, rate};
+}
+
+std::optional<StudyResult> run_study(const StudyOptions& o) {
+  remove_stale_outputs(o.out, {"study.csv", "study.json", "study.md", "timing.csv", "timing.json"});
+  Study s = Study::load(o.file);
+  s.keep_runs = s.keep_runs || o.keep_runs;
+  auto r = execute_study(s, o.out, o.fresh);
+  if (!r) return std::nullopt;  // an MPI worker rank: rank 0 writes the tables
+  r->study = std::move(s);
+  r->command = fmt::format("beamimpact study {} --out {}{}{}", o.file.string(), o.out.string(),
+                           o.keep_runs ? " --keep-runs" : "", o.fresh ? " --fresh" : "");
+  return r;
+}
+
+StudyCounts write_study_reports(const StudyOptions& o, const StudyResult& r) {
+  return write_study(r.study, r, o.out, r.command, kVersion);
 }
 
 }  // namespace beamimpact::study

@@ -16,8 +16,18 @@
 
 namespace beamimpact::study {
 
+/// @brief What to run: a study file, where its tables go, and how.
+struct StudyOptions {
+  std::filesystem::path file;  ///< the study (TOML, verification/studies/)
+  std::filesystem::path out;   ///< the tables; the points' records under out/points
+  bool keep_runs = false;      ///< keep every run's files under out/runs (besides the file's own keep_runs)
+  bool fresh = false;          ///< run every point again (default: an interrupted study's points are taken)
+};
+
 /// @brief The results of a study, in design order.
 struct StudyResult {
+  Study study;          ///< the study as loaded (keep_runs as run)
+  std::string command;  ///< the command line that makes it (study.md)
   std::vector<Point> points;
   std::vector<PointResult> results;  ///< results[i] belongs to points[i]
   double wall_seconds = 0.0;         ///< s, the whole study (timing field)
@@ -36,6 +46,11 @@ struct StudyResult {
 std::optional<StudyResult> execute_study(const Study& s, const std::filesystem::path& out,
                                          bool fresh = false);
 
+/// @brief `beamimpact study` as a library call: removes the tables of an earlier study in o.out (before
+/// anything can refuse), loads o.file (InputError naming the file and key) and runs it
+/// (execute_study()). Returns nullopt on an MPI rank other than 0.
+std::optional<StudyResult> run_study(const StudyOptions& o);
+
 /// @brief What the written tables count.
 struct StudyCounts {
   std::size_t cases = 0;          ///< points x methods
@@ -52,5 +67,9 @@ struct StudyCounts {
 /// @return the counts the tables state
 StudyCounts write_study(const Study& s, const StudyResult& r, const std::filesystem::path& out,
                         const std::string& command, const std::string& version);
+
+/// @brief The tables of run_study()'s result in o.out (write_study() with its study, command and
+/// this build's version).
+StudyCounts write_study_reports(const StudyOptions& o, const StudyResult& r);
 
 }  // namespace beamimpact::study

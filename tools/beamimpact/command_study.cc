@@ -21,7 +21,8 @@ void study_command(const study::StudyOptions& o) {
   fmt::print("study {}: {} case(s) in {:.1f} s on {} rank(s) ({:.2f} cases/s), {} where the method broke\n",
              r->study.name, n.cases, r->wall_seconds, r->ranks, n.cases_per_second, n.broken);
   fmt::print("table: {} {}\nreport: {}\ntiming: {}\n", (o.out / "study.csv").string(),
-             (o.out / "study.json").string(), (o.out / "study.md").string(), (o.out / "timing.json").string());
+             (o.out / "study.json").string(), (o.out / "study.md").string(),
+             (o.out / "timing.json").string());
 }
 
 }  // namespace

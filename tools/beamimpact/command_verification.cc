@@ -73,8 +73,8 @@ void print_verify(const VerifyOptions& o, const VerifyResult& r, const fs::path&
       if (g.status == GateStatus::kFail) fmt::print("FAIL {}: {} ({})\n", i.name, g.gate.metric, g.message);
   const GateCounts n = count_gates(r.items);
   fmt::print("verify {}: {} gates, {} passed, {} failed, {} skipped, {:.1f} s\nreport: {}\n",
-             r.gates_passed() ? "passed" : "FAILED", n.gates, n.pass, n.fail, n.skipped, r.context.wall_seconds,
-             (o.out / "report.md").string());
+             r.gates_passed() ? "passed" : "FAILED", n.gates, n.pass, n.fail, n.skipped,
+             r.context.wall_seconds, (o.out / "report.md").string());
   fmt::print("junit: {}\nnorms: {}\n", (o.out / "junit.xml").string(), (o.out / "norms.json").string());
   if (r.baseline) fmt::print("{}", r.baseline->to_text());
   if (r.baseline && !r.update_baseline && !r.baseline->passed())

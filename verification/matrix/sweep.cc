@@ -54,6 +54,15 @@ std::string command_of(const SweepOptions& o) {
                      o.threads > 0 ? fmt::format(" --threads {}", o.threads) : "");
 }
 
+/// A sweep whose every run was refused is bad input; an interrupted one says so.
+void finish(const SweepOptions& o, SweepResult& r) {
+  if (std::all_of(r.points.begin(), r.points.end(),
+                  [](const SweepPoint& p) { return p.outcome.status == JobOutcome::Status::kNotApplicable; }))
+    throw InputError(o.scene.string(), "",
+                     "every run of the sweep was refused: " + r.points.front().outcome.message);
+  if (interruption()) r.incomplete = fmt::format("interrupted by signal {}", interruption());
+}
+
 }  // namespace
 
 const std::vector<std::string>& sweep_norms() {
@@ -137,10 +146,7 @@ std::optional<SweepResult> execute_sweep(const SweepOptions& o, Launcher launche
       p.comparison = compare_runs(*stored_run(p.outcome), *reference);
     r.points.push_back(std::move(p));
   }
-  if (std::all_of(r.points.begin(), r.points.end(),
-                  [](const SweepPoint& p) { return p.outcome.status == JobOutcome::Status::kNotApplicable; }))
-    throw InputError(o.scene.string(), "", "every run of the sweep was refused: " + r.points.front().outcome.message);
-  if (interruption()) r.incomplete = fmt::format("interrupted by signal {}", interruption());
+  finish(o, r);
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
@@ -175,9 +181,10 @@ Table order_table(const SweepOptions& o, const SweepResult& r) {
 }  // namespace
 
 void write_sweep(const SweepOptions& o, const SweepResult& r) {
-  const std::string header = fmt::format(
-      "- command: `{}`\n- version: `{}`\n- made {} (UTC), wall time {:.1f} s\n{}", r.command, kVersion, r.made,
-      r.wall_seconds, r.incomplete.empty() ? "" : fmt::format("- **INCOMPLETE: {}**\n", r.incomplete));
+  const std::string header =
+      fmt::format("- command: `{}`\n- version: `{}`\n- made {} (UTC), wall time {:.1f} s\n{}", r.command,
+                  kVersion, r.made, r.wall_seconds,
+                  r.incomplete.empty() ? "" : fmt::format("- **INCOMPLETE: {}**\n", r.incomplete));
   fs::create_directories(o.out);
   const auto& names = sweep_norms();
   // CSV: one row per point, machine-readable; Markdown: the same points for reading.

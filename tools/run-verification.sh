@@ -83,7 +83,7 @@ if ((score)); then
   if ((rc <= 1)); then
     for m in "${found[@]}"; do
       dir=out/score; ((${#found[@]} > 1)) && dir=out/score/$m
-      /usr/bin/python3 reports/render.py scorecard "$dir"   # the page from scorecard.json (reports/templates)
+      # score made the page (reports/render.py); this adds the work-precision diagrams and renders it again.
       /usr/bin/python3 reports/scorecard_figures.py "$dir"
     done
   fi

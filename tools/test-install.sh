@@ -57,8 +57,8 @@ done
 rc=0
 (cd "$empty" && "$prefix/bin/beamimpact" score paper --sets paper --scenes s1_central --no-ladder --out score \
   --cache cache) > "$empty/score.log" 2>&1 || rc=$?
-verdict=$(grep -o 'score paper: [A-Z]*' "$empty/score.log" | head -1)
-if ((rc > 1)) || ! grep -q "^page: score/scorecard.html$" "$empty/score.log" ||
+verdict=$(grep -oE 'score paper: (PASSED|FAILED)' "$empty/score.log" | head -1)
+if ((rc > 1)) || [[ -z $verdict ]] || ! grep -q "^page: score/scorecard.html$" "$empty/score.log" ||
   ! grep -q "$verdict" "$empty/score/scorecard.html"; then
   cat "$empty/score.log"; echo "install test: the installed score made no page with its verdict ($verdict)"; rm -rf "$empty"; exit 1
 fi

@@ -41,7 +41,7 @@ reference did not finish within `--timeout` (its reason in scorecard.json). Made
 ```sh
 build/beamimpact score paper ida fenicsx siconos example --out /tmp/scores --jobs 2 --timeout 3600
 for m in paper ida fenicsx siconos example; do
-  /usr/bin/python3 reports/scorecard_figures.py /tmp/scores/$m     # scorecard.html with the diagrams
+  /usr/bin/python3 reports/scorecard_figures.py /tmp/scores/$m     # the diagrams, figures.json, scorecard.html again
 done
 /usr/bin/python3 reports/scorecard_table.py /tmp/scores/{paper,ida,fenicsx,siconos,example} --set reports/scorecards
 ```

@@ -5,7 +5,9 @@
   path: the compiled program itself, no Python wrapper in front of it);
 - the shipped data into the environment's share/beamimpact/: verification/scenes/**,
   verification/matrix.toml, verification/methods.toml and verification/cards.toml, and the adapters methods.toml points
-  to by `{here}/../` (references/<name>/*.py, examples/external_solver/penalty_central.py).
+  to by `{here}/../` (references/<name>/*.py, examples/external_solver/penalty_central.py), and
+  the page generator that `beamimpact score` and `conform` run (reports/page_files.txt and
+  reports/templates/*.j2, into share/beamimpact/reports/).
 
 This is the layout `cmake --install` makes (cmake/package.cmake): the program finds its data
 from its own location (bin/ -> ../share/beamimpact, api/methods_file.cc data_root()) and the
@@ -99,6 +101,11 @@ def data_files():
     for ref in sorted(p.parent.name for p in (ROOT / "references").glob("*/run.py")):
         out += _files(f"references/{ref}", "*.py")
     out += [("share/beamimpact/examples/external_solver", ["examples/external_solver/penalty_central.py"])]
+    # The page generator that score and conform run (reports/page_files.txt, as cmake --install ships it).
+    pages = [line.strip() for line in (ROOT / "reports/page_files.txt").read_text().splitlines()
+             if line.strip() and not line.startswith("#")]
+    out += [("share/beamimpact/reports", [f"reports/{f}" for f in pages])]
+    out += _files("reports/templates", "*.j2")
     return out
 
 

@@ -45,7 +45,8 @@ bool mentions(const std::vector<std::string>& command, const std::string& placeh
   });
 }
 
-/// A program given without a folder, looked up in PATH; "" when not found.
+}  // namespace
+
 std::string on_path(const std::string& name) {
   const char* path = std::getenv("PATH");
   std::stringstream dirs(path ? path : "");
@@ -56,6 +57,8 @@ std::string on_path(const std::string& name) {
       return (fs::path(d) / name).string();
   return "";
 }
+
+namespace {
 
 /// Expands {here} and {beamimpact}; checks placeholders; resolves and checks the program.
 std::vector<std::string> read_command(TableReader& r, const std::string& key, const fs::path& here,

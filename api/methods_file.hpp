@@ -51,6 +51,11 @@ const std::vector<std::filesystem::path>& loaded_methods_files();
 /// file when it exists.
 std::vector<std::filesystem::path> default_methods_files();
 
+/// @brief A program given without a folder, looked up in PATH as the shell does (an executable
+/// file); "" when not found.
+/// @param name the program's name, e.g. "python3"
+std::string on_path(const std::string& name);
+
 /// @brief The folder holding verification/methods.toml, verification/matrix.toml and the
 /// shipped scenes: the repository or the installed share/beamimpact ("" when none is found).
 std::filesystem::path data_root();

@@ -1,5 +1,5 @@
 # cmake --install: the libraries, the public headers under include/beamimpact/ at their repository paths, the
-# `beamimpact` program, the shipped scenes and matrix, the FEniCSx script, and a CMake package
+# `beamimpact` program, the shipped scenes and matrix, the FEniCSx script, the page generator, and a CMake package
 # so that another project writes find_package(beamimpact) and links beamimpact::beamimpact.
 include(CMakePackageConfigHelpers)
 
@@ -55,6 +55,14 @@ foreach(_run IN LISTS _python_references)
 endforeach()
 install(FILES ${PROJECT_SOURCE_DIR}/examples/external_solver/penalty_central.py
   DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/examples/external_solver)
+# The page generator (reports/page_files.txt, as setup.py ships it): score and conform make their
+# HTML pages with it from the installed tree.
+file(STRINGS ${PROJECT_SOURCE_DIR}/reports/page_files.txt _page_files REGEX "^[^#]")
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/reports/page_files.txt)
+list(TRANSFORM _page_files PREPEND ${PROJECT_SOURCE_DIR}/reports/)
+install(FILES ${_page_files} DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/reports)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/reports/templates DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/reports
+  FILES_MATCHING PATTERN "*.j2")
 
 set(_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/beamimpact)
 install(EXPORT beamimpactTargets NAMESPACE beamimpact:: DESTINATION ${_cmake_dir})

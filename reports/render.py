@@ -11,16 +11,25 @@ Usage:
       (figure_sets.FIGURE_SETS, reports/NAME) after those of --figures, but for a set of the same
       name given with --figures (a set remade by this build replaces the committed one). The figures are copied to
       FILE's folder, figures/SET/..., and loaded lazily; the page itself stays small.
-  render.py scorecard DIR [--out FILE]     DIR/scorecard.json of `beamimpact score` -> DIR/scorecard.html
+  render.py scorecard DIR [--out FILE]     DIR/scorecard.json of `beamimpact score` -> DIR/scorecard.html,
+      with the diagrams of DIR/figures.json (reports/scorecard_figures.py) embedded when it exists:
+      the page stays one file
   render.py conform DIR [--out FILE]       DIR/conform.json of `beamimpact conform` -> DIR/conform.html
+`beamimpact score` and `beamimpact conform` run the scorecard and conform pages themselves
+(tools/beamimpact/page.cc) from the data root: the repository or the installed share/beamimpact.
 A figure set whose manifest is missing is shown as "not generated" with the command that makes it.
-Exit 2 on bad input (a missing norms.json, a manifest or gate without a key), naming file and key.
+Exit 2 on bad input (a missing norms.json, a manifest or gate without a key), naming file and key;
+exit 3 when Jinja2 is missing (Debian python3-jinja2), with one line saying so.
 """
 import argparse
 import os
 import sys
 
-import jinja2
+try:
+    import jinja2
+except ImportError:
+    print("render: Jinja2 is missing (Debian: apt-get install python3-jinja2)", file=sys.stderr)
+    sys.exit(3)
 
 from figure_sets import FIGURE_SETS, InputProblem, load_json
 from report_files import write_text_atomic
@@ -48,8 +57,10 @@ def render_report(a):
 
 def render_scorecard(a):
     import scorecard_page
-    return environment().get_template("scorecard.html.j2").render(
-        **scorecard_page.context(load_json(os.path.join(a.dir, "scorecard.json"), "a `beamimpact score` result")))
+    card = load_json(os.path.join(a.dir, "scorecard.json"), "a `beamimpact score` result")
+    manifest = os.path.join(a.dir, "figures.json")
+    figures = load_json(manifest, "reports/scorecard_figures.py's manifest") if os.path.isfile(manifest) else None
+    return environment().get_template("scorecard.html.j2").render(**scorecard_page.context(card, figures, a.dir))
 
 
 def render_conform(a):

@@ -119,30 +119,136 @@ def test_norms_without_margins_are_refused(tmp_path):
     assert r.returncode == 2 and "margin" in r.stderr
 
 
-def test_scorecard_page_lists_fields_it_does_not_know(tmp_path):
-    with open(os.path.join(ROOT, "reports", "scorecards", "example", "scorecard.json")) as f:
-        card = json.load(f)
-    card["ladders"] = {"s1_central": [0.1, 0.05]}
-    card["scenes"][0]["ladder_orders"] = [1.0, 1.1]
-    (tmp_path / "scorecard.json").write_text(json.dumps(card))
-    r = render("scorecard", str(tmp_path))
+class Tables(html.parser.HTMLParser):
+    """Every table's rows as lists of cell texts, in order and by the table's id or class (the first of
+    that name); section ids in order."""
+
+    def __init__(self):
+        super().__init__()
+        self.tables, self.all, self.sections, self._t, self._cell = {}, [], [], None, False
+
+    def handle_starttag(self, tag, attrs):
+        a = dict(attrs)
+        if tag == "section":
+            self.sections.append(a.get("id"))
+        elif tag == "table":
+            self._t = []
+            self.all.append(self._t)
+            self.tables.setdefault(a.get("id") or a.get("class"), self._t)
+        elif tag == "tr" and self._t is not None:
+            self._t.append([])
+        elif tag in ("td", "th") and self._t is not None and self._t:
+            self._t[-1].append("")
+            self._cell = True
+
+    def handle_endtag(self, tag):
+        if tag == "table":
+            self._t = None
+        elif tag in ("td", "th") and self._t and self._t[-1]:
+            self._t[-1][-1] = self._t[-1][-1].strip()
+            self._cell = False
+
+    def handle_data(self, data):
+        if self._cell and self._t and self._t[-1]:
+            self._t[-1][-1] += data
+
+
+SCORECARD = os.path.join(ROOT, "reports", "testdata", "scorecard")
+
+
+def render_fixture(tmp_path, page, doc):
+    (tmp_path / f"{page}.json").write_text(json.dumps(doc))
+    r = render(page, str(tmp_path))
     assert r.returncode == 0, r.stderr
-    text = (tmp_path / "scorecard.html").read_text()
-    assert "ladders" in text and "ladder_orders" in text
-    quantities = sum(len(s["quantities"]) for s in card["scenes"])
-    assert text.count("<tr class=") == quantities
+    text = (tmp_path / f"{page}.html").read_text()
+    t = Tables()
+    t.feed(text)
+    return text, t
 
 
-def test_conform_page_puts_the_broken_rule_first(tmp_path):
-    doc = {"method": "demo", "command": "beamimpact conform demo", "version": "test",
+def test_scorecard_page_opens_with_the_verdict_then_the_failing_quantity(tmp_path):
+    with open(os.path.join(SCORECARD, "scorecard.json")) as f:
+        card = json.load(f)
+    text, t = render_fixture(tmp_path, "scorecard", card)
+    assert t.sections[:2] == ["verdict", "tightest"]
+    assert "score demo: FAILED: 1 of 3 quantities failed (fixture)" in text.split('<section id="tightest">')[0]
+    # The fixture's one failing quantity leads: S2's peak_R, error 0.062 against 0.05, 0.062 / 0.05 = 1.24 over.
+    first = t.tables["first"][1]
+    assert first[:3] == ["s2_transverse", "peak_R", "fail"] and first[4:6] == ["0.062", "0.05"]
+    assert "1.24 × the tolerance: over" in first[3]
+    # Then the passing ones, tightest first: S2 impulse 0.01 / 0.04 = 25 %; the S1 limit's error
+    # 1e-4 against its allowance 1.25 x 2e-4 + 0.04 / 10 = 4.25e-3 uses 2.4 %.
+    assert [r[:2] for r in t.tables["first"][2:]] == [["s2_transverse", "impulse"], ["s1_central", "impulse"]]
+    assert "uses 25 % of the tolerance" in t.tables["first"][2][3]
+    assert "uses 2.4 % of the limit's allowance" in t.tables["first"][3][3]
+    # The whole table: one row a quantity, how each was judged.
+    rows = t.tables["scorecard"][1:]
+    assert [(r[0], r[2], r[3]) for r in rows] == [("s1_central", "impulse", "limit of a ladder"),
+                                                  ("s2_transverse", "peak_R", "single run"),
+                                                  ("s2_transverse", "impulse", "single run")]
+    assert "fixture rule for the limit" in text and "s, fixture unit text" in text
+    assert "IDA converged beyond its defaults (fixture text)" in text
+
+
+def test_scorecard_page_shows_a_ladders_rungs_order_and_limit(tmp_path):
+    with open(os.path.join(SCORECARD, "scorecard.json")) as f:
+        card = json.load(f)
+    _, t = render_fixture(tmp_path, "scorecard", card)
+    # The fixture's S1 ladder: rungs 3.9204, 3.9804, 3.9954 differ by 0.06 then 0.015 (ratio 4:
+    # order 2), limit 3.9954 + 0.015 / (2^2 - 1) = 4.0004.
+    rungs = t.tables["rungs"][1:]
+    assert [(r[1], r[2], r[3], r[7]) for r in rungs] == [("demo n=10", "0.004", "500", "3.9204"),
+                                                         ("demo n=20", "0.002", "1000", "3.9804"),
+                                                         ("demo n=40", "0.001", "2000", "3.9954")]
+    order = t.tables["orders"][1]
+    assert order[:5] == ["impulse", "2", "4.0004", "0.0002", "4"]
+
+
+def test_scorecard_page_lists_fields_it_does_not_know(tmp_path):
+    with open(os.path.join(SCORECARD, "scorecard.json")) as f:
+        card = json.load(f)
+    card["ladders_v2"] = {"s1_central": [0.1, 0.05]}
+    card["scenes"][0]["ladder_orders"] = [1.0, 1.1]
+    card["scenes"][0]["quantities"][0]["ladder"]["richardson_ratio"] = 4.0
+    card["scenes"][0]["ladder"]["rungs"][0]["memory_mb"] = 12
+    text, t = render_fixture(tmp_path, "scorecard", card)
+    for k in ("ladders_v2", "ladder_orders", "richardson_ratio", "memory_mb"):
+        assert k in text, k
+    assert len(t.tables["scorecard"]) - 1 == sum(len(s["quantities"]) for s in card["scenes"])
+
+
+def test_scorecard_page_embeds_the_diagrams_of_its_manifest(tmp_path):
+    import base64
+    with open(os.path.join(SCORECARD, "scorecard.json")) as f:
+        card = json.load(f)
+    png = base64.b64decode("iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mNk+M9QDwADhgGAWjR9awAAAABJRU5ErkJggg==")
+    (tmp_path / "s1.png").write_bytes(png)
+    (tmp_path / "figures.json").write_text(json.dumps({"title": "Diagrams", "figures": [
+        {"png": "s1.png", "scene": "s1_central", "title": "S1 diagram", "command": "fixture-command --x",
+         "version": "0.0.0+fixture", "made": "2026-01-01T00:00:00Z", "caption": "fixture caption"}]}))
+    text, _ = render_fixture(tmp_path, "scorecard", card)
+    assert text.count('<img alt="S1 diagram" src="data:image/png;base64,') == 1
+    assert "fixture-command --x" in text and "fixture caption" in text  # how it was made: the caption's
+    (tmp_path / "s1.png").unlink()
+    r = render("scorecard", str(tmp_path))
+    assert r.returncode == 2 and "s1.png" in r.stderr
+
+
+def test_conform_page_opens_with_the_verdict_and_puts_the_broken_rule_first(tmp_path):
+    doc = {"method": "demo", "command": "beamimpact conform demo", "version": "test", "verdict": "failed",
            "rules": [{"rule": "exit code", "definition": "0 done; 2 refused; 3 failed"},
                      {"rule": "columns", "definition": "t and R first"}],
-           "results": [{"rule": "exit code", "scene": "a", "file": "run.log", "passed": True, "message": ""},
+           "results": [{"rule": "exit code", "scene": "a", "file": "run.log", "passed": True, "not_applicable": False,
+                        "message": ""},
+                       {"rule": "exit code", "scene": "b", "file": "", "passed": True, "not_applicable": True,
+                        "message": "refused (exit 2)"},
                        {"rule": "columns", "scene": "a", "file": "history.csv", "passed": False,
-                        "message": "no column R"}]}
-    (tmp_path / "conform.json").write_text(json.dumps(doc))
-    r = render("conform", str(tmp_path))
-    assert r.returncode == 0, r.stderr
-    text = (tmp_path / "conform.html").read_text()
-    assert "FAILED" in text and text.index("columns:") < text.index("exit code:")
+                        "not_applicable": False, "message": "no column R"}],
+           "counts": {"checks": 2, "broken": 1, "not_applicable": 1}}
+    text, t = render_fixture(tmp_path, "conform", doc)
+    assert t.sections[0] == "verdict"
+    assert "conform demo: FAILED: 2 check(s), 1 broken, 1 scene(s) not applicable" in text
+    assert text.index("columns:") < text.index("exit code:")
     assert "t and R first" in text and "no column R" in text
+    verdicts = [r[2] for rows in t.all for r in rows[1:]]
+    assert verdicts == ["broken", "holds", "not applicable"]

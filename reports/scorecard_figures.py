@@ -1,23 +1,24 @@
 #!/usr/bin/env python3
-"""@brief Draws a scored method's runs on the committed work-precision diagrams and adds them to
-its scorecard.html: for each scene of the scorecard with a work-precision set
-(reports/work_precision/<scene>/work_precision.json), the set's curves (impulse error against CPU
-time of the paper integrator, IDA, FEniCSx, Siconos, exact) and the scored run as one large
-marker (its impulse error against the scorecard's process seconds).
+"""@brief Draws a scored method's runs on the committed work-precision diagrams: for each scene of the
+scorecard with a work-precision set (reports/work_precision/<scene>/work_precision.json), the set's
+curves (impulse error against CPU time of the paper integrator, IDA, FEniCSx, Siconos, exact) and
+the scored run as one large marker (its impulse error against the scorecard's process seconds).
 
 Usage: scorecard_figures.py SCORE_DIR [--sets reports/work_precision]
 
-SCORE_DIR holds scorecard.json and scorecard.html (`beamimpact score NAME --out SCORE_DIR`).
-Writes SCORE_DIR/<scene>_work_precision.png and rewrites scorecard.html (atomically) with the
-figures embedded, so it stays one self-contained file. Exit 2 with one line on bad input.
+SCORE_DIR holds scorecard.json (`beamimpact score NAME --out SCORE_DIR`). Writes
+SCORE_DIR/<scene>_work_precision.png and the manifest SCORE_DIR/figures.json (which diagram belongs
+to which scene and how it was made: command, version, date), then renders SCORE_DIR/scorecard.html
+again through reports/render.py, which embeds the diagrams with their captions. A second run
+replaces the diagrams. Exit 2 with one line on bad input.
 """
 import argparse
-import base64
+import datetime
 import json
 import os
 import sys
 
-from report_files import save_figure_atomic, write_text_atomic
+from report_files import save_figure_atomic, write_json_atomic
 
 import matplotlib
 
@@ -25,7 +26,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-MARK = "<!-- work-precision figures -->"
+HERE = os.path.dirname(os.path.abspath(__file__))
 
 
 def fail(msg):
@@ -84,38 +85,38 @@ def figure(name, wp, marks, out_png):
             f"(impulse error against the scorecard's reference: {'; '.join(said)}).")
 
 
-def embed(html, blocks):
-    head = html.split(MARK)[0].replace("</body></html>", "").rstrip()
-    section = [MARK, "<h2>On the work-precision diagrams</h2>"]
-    for png, caption in blocks:
-        with open(png, "rb") as f:
-            data = base64.b64encode(f.read()).decode()
-        section.append(f'<figure><img alt="{os.path.basename(png)}" src="data:image/png;base64,{data}">'
-                       f"<figcaption>{caption}</figcaption></figure>")
-    return head + "\n" + "\n".join(section) + "\n</body></html>\n"
+def manifest(card, entries, argv):
+    """@brief figures.json of the score folder: each diagram's PNG, scene, caption and how it was
+    made (this script's command, the scorecard's version, the date). @param entries (scene, png, caption)"""
+    made = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
+    command = " ".join(["/usr/bin/python3 reports/scorecard_figures.py", *argv])
+    return {"title": "On the work-precision diagrams",
+            "about": f"The scored runs of {card['method']} (markers) on the committed work-precision curves of "
+                     "each scene that has a set (reports/work_precision).",
+            "figures": [{"png": png, "scene": scene, "title": f"{scene}: {card['method']} on the work-precision diagram",
+                         "command": command, "version": card.get("version", "?"), "made": made, "caption": caption}
+                        for scene, png, caption in entries]}
 
 
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("score_dir")
-    ap.add_argument("--sets", default="reports/work_precision", help="folder of the work-precision sets")
+    ap.add_argument("--sets", default=os.path.join(HERE, "work_precision"), help="folder of the work-precision sets")
     args = ap.parse_args(argv)
     card = load_json(os.path.join(args.score_dir, "scorecard.json"), "a scorecard (beamimpact score)")
-    html_path = os.path.join(args.score_dir, "scorecard.html")
-    if not os.path.isfile(html_path):
-        fail(f"{html_path}: missing; expected the scorecard.html beside scorecard.json")
-    blocks = []
+    entries = []
     for scene in card.get("scenes", []):
         wp_path = os.path.join(args.sets, scene["scene"], "work_precision.json")
         if not os.path.isfile(wp_path):
             continue  # only the paper's scenes have a work-precision set
-        png = os.path.join(args.score_dir, f"{scene['scene']}_work_precision.png")
+        png = f"{scene['scene']}_work_precision.png"
         wp = load_json(wp_path, "a work-precision set")
-        blocks.append((png, figure(scene["scene"], wp, [(card["method"], scene)], png)))
-    with open(html_path) as f:
-        html = embed(f.read(), blocks)
-    write_text_atomic(html_path, html)
-    print(f"scorecard_figures: {len(blocks)} diagram(s) added to {html_path}")
+        entries.append((scene["scene"], png, figure(scene["scene"], wp, [(card["method"], scene)],
+                                                    os.path.join(args.score_dir, png))))
+    write_json_atomic(os.path.join(args.score_dir, "figures.json"), manifest(card, entries, argv))
+    print(f"scorecard_figures: {len(entries)} diagram(s) in {os.path.join(args.score_dir, 'figures.json')}")
+    import render  # the page, with the diagrams, from the one page generator
+    render.main(["scorecard", args.score_dir])
 
 
 if __name__ == "__main__":

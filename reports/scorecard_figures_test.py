@@ -1,5 +1,6 @@
-"""scorecard_figures.py on a real scorecard (`beamimpact score paper --sets paper`): one embedded diagram per
-scored scene with a committed work-precision set, the page still self-contained, a second run
+"""scorecard_figures.py on a real scorecard (`beamimpact score paper --sets paper`): one diagram per
+scored scene with a committed work-precision set, each in the manifest figures.json with its scene
+and how it was made, embedded in the page render.py makes (still self-contained), a second run
 replacing the figures instead of adding to them, and bad input refused with exit 2."""
 import json
 import os
@@ -33,6 +34,14 @@ def test_one_diagram_per_scene_with_a_set_and_idempotent(tmp_path):
         subprocess.run(["/usr/bin/python3", SCRIPT, str(out)], cwd=ROOT, check=True, capture_output=True)
         html, n = figures(out / "scorecard.html")
         assert n == len(sets)  # every paper scene is scored, each once (the second run replaces)
+        with open(out / "figures.json") as f:
+            manifest = json.load(f)
+        assert sorted(f["scene"] for f in manifest["figures"]) == sorted(sets)
+        with open(out / "scorecard.json") as f:
+            version = json.load(f)["version"]
+        for f in manifest["figures"]:
+            assert (out / f["png"]).is_file() and f["version"] == version
+            assert "scorecard_figures.py" in f["command"] and f["command"] in html  # the caption says it
     assert not re.search(r'src="(?!data:)', html)  # self-contained: no file the page would fetch
     assert html.rstrip().endswith("</html>")
 

@@ -43,7 +43,7 @@ IDA's converged references and FEniCSx):
 ```sh
 build/beamimpact score paper ida fenicsx siconos example getfem --out out/scores --cache out/ref-cache --jobs 2 --timeout 3600
 for m in paper ida fenicsx siconos example getfem; do
-  /usr/bin/python3 reports/scorecard_figures.py out/scores/$m     # the diagrams of the scorecard page
+  /usr/bin/python3 reports/scorecard_figures.py out/scores/$m     # the diagrams, figures.json, scorecard.html again
 done
 /usr/bin/python3 reports/scorecard_table.py out/scores/{paper,ida,fenicsx,siconos,example,getfem} --set reports/scorecards
 ```

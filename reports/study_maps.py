@@ -6,18 +6,20 @@ a third parameter (e.g. the mesh).
 
 Usage: study_maps.py STUDY_DIR --x alpha0 --y mu [--facet mesh] [--norm impulse] [--method paper]
                      [--command CMD] [--out PREFIX]
-Writes PREFIX_error.png and PREFIX_stability.png (default STUDY_DIR/study). Each figure says in its
-footer how its data was made (command, study, scene, reference, version from study.json).
+Writes PREFIX_error.png and PREFIX_stability.png (default STUDY_DIR/study) and their manifest
+PREFIX_figures.json in the report's figure-set format (reports/figure_sets.py: png, title, command,
+scene, version, made, caption): how the data was made (command, study, scene, reference, version
+from study.json) is said there once, as each figure's caption, not drawn into the image.
 Run with /usr/bin/python3 (matplotlib from Debian's python3-matplotlib).
 """
 import argparse
+import datetime
 import json
 import math
 import os
 import sys
-import textwrap
 
-from report_files import save_figure_atomic
+from report_files import save_figure_atomic, write_json_atomic
 
 import matplotlib
 
@@ -38,11 +40,22 @@ def load(study_dir):
     return meta
 
 
-def footer(fig, args, meta):
+def provenance(args, meta):
+    """@brief How the maps' data was made, in words (the figures' caption)."""
     ref = meta["reference"]
-    text = (f"{args.command}   study {meta['file']}: scene {meta['scene']}, set {' '.join(meta['set'])}; reference "
-            f"{ref['method']} {' '.join(ref['set'])}; beamimpact {meta['version']}")
-    fig.text(0.01, 0.005, "\n".join(textwrap.wrap(text, 120)), fontsize=6, family="monospace", va="bottom")
+    return (f"Study {meta['file']}: scene {meta['scene']}, set {' '.join(meta['set'])}; reference "
+            f"{ref['method']} {' '.join(ref['set'])}.")
+
+
+def manifest(args, meta, titles):
+    """@brief PREFIX_figures.json: each map's PNG, title, command, scene, version, date and caption.
+    @param titles {kind: the figure's title}"""
+    made = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
+    return {"title": f"{meta['study']}: maps over {args.x} x {args.y}",
+            "about": provenance(args, meta),
+            "figures": [{"png": os.path.basename(f"{args.out}_{kind}.png"), "title": title, "command": args.command,
+                         "scene": meta["scene"], "version": meta["version"], "made": made,
+                         "caption": provenance(args, meta)} for kind, title in titles.items()]}
 
 
 def panels(meta, args):
@@ -73,7 +86,7 @@ def edges(v):
 def draw(meta, args, kind):
     cases, facets = panels(meta, args)
     fig, axes = plt.subplots(1, len(facets), figsize=(5.2 * len(facets), 4.6), squeeze=False, constrained_layout=False)
-    fig.subplots_adjust(left=0.07, right=0.84, top=0.86, bottom=0.2, wspace=0.25)
+    fig.subplots_adjust(left=0.07, right=0.84, top=0.86, bottom=0.13, wspace=0.25)
     mappable = None
     for ax, f in zip(axes[0], facets):
         sub = [c for c in cases if f is None or c["parameters"][args.facet] == f]
@@ -95,22 +108,22 @@ def draw(meta, args, kind):
         ax.set_xlabel(args.x)
         ax.set_ylabel(args.y)
         ax.set_title(f"{args.facet} = {f:g}" if f is not None else meta["study"], fontsize=9)
-    cax = fig.add_axes([0.86, 0.2, 0.015, 0.66])
+    cax = fig.add_axes([0.86, 0.13, 0.015, 0.73])
     if kind == "error":
         fig.colorbar(mappable, cax=cax, label=f"log10 {args.norm} ({args.method} vs {meta['reference']['method']})")
-        fig.suptitle(f"{meta['study']}: {args.norm} error of {args.method} against {meta['reference']['method']}"
-                     " (white: no value)", fontsize=10)
+        title = f"{meta['study']}: {args.norm} error of {args.method} against {meta['reference']['method']} (white: no value)"
     else:
         cb = fig.colorbar(mappable, cax=cax, ticks=range(len(STATUS)))
         cb.ax.set_yticklabels(STATUS, fontsize=7)
         rules = " or ".join(f"{r['metric']} > {r['above']:g}" for r in meta["breaks"])
-        fig.suptitle(f"{meta['study']}: stability of {args.method} (energy: created > "
-                     f"{meta['energy_growth_bound']:g} E0); x: ok but {rules}", fontsize=10)
-    footer(fig, args, meta)
+        title = (f"{meta['study']}: stability of {args.method} (energy: created > "
+                 f"{meta['energy_growth_bound']:g} E0); x: ok but {rules}")
+    fig.suptitle(title, fontsize=10)
     out = f"{args.out}_{kind}.png"
     save_figure_atomic(fig, out, dpi=110)
     plt.close(fig)
     print(f"wrote {out}")
+    return title
 
 
 def main():
@@ -130,8 +143,9 @@ def main():
         sys.exit("study_maps: maps need a grid design (a Latin hypercube has no grid to colour)")
     if args.norm not in meta["norms"]:
         sys.exit(f"study_maps: '{args.norm}' is not a norm of this study ({', '.join(meta['norms'])})")
-    draw(meta, args, "error")
-    draw(meta, args, "stability")
+    titles = {kind: draw(meta, args, kind) for kind in ("error", "stability")}
+    write_json_atomic(f"{args.out}_figures.json", manifest(args, meta, titles))
+    print(f"wrote {args.out}_figures.json (how the maps were made: their captions)")
 
 
 if __name__ == "__main__":

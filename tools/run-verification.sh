@@ -12,9 +12,10 @@
 #              out/figures/NAME (the committed reports/NAME are left as they are), and the report
 #              shows those instead: paper_figures, classical_benchmarks, beam_theories and
 #              work_precision at the paper scenes' own sizes. Each step prints its time and the total.
-#              Measured with beamimpact 0.1.0+7a8559d on 2 cores shared with other builds (wall):
-#              paper_figures 3.0 min, classical_benchmarks 1.7 min (each script as run below);
-#              beam_theories 13.9 min under a concurrent build (docs/beam-theories.md: about 4 min on
+#              Measured with beamimpact 0.1.0+3f2bc03 on 2 cores at load 11-13 (wall, each script
+#              as run below): paper_figures 3.6 min (a build running beside it), classical_benchmarks
+#              21 s (docs/user-guide.md, "Reading the report");
+#              beam_theories 13.9 min with 0.1.0+7a8559d under a concurrent build (docs/beam-theories.md: about 4 min on
 #              a quiet machine); work_precision not timed here
 #              (it times FEniCSx and Siconos as processes, 3 repeats of each point).
 #              The sets that take hours keep their committed figures and say which build made them:
@@ -83,7 +84,7 @@ if ((score)); then
   if ((rc <= 1)); then
     for m in "${found[@]}"; do
       dir=out/score; ((${#found[@]} > 1)) && dir=out/score/$m
-      /usr/bin/python3 reports/render.py scorecard "$dir"   # the page from scorecard.json (reports/templates)
+      # score made the page (reports/render.py); this adds the work-precision diagrams and renders it again.
       /usr/bin/python3 reports/scorecard_figures.py "$dir"
     done
   fi

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # @brief The install test: `cmake --install` the build into a fresh prefix, build the example
 # consumer (examples/consumer) against it with find_package(beamimpact), run it on the shipped
-# S1 scene with the exact method and check the impulse against theory (m v0 / 2 = 4 N s).
+# S1 scene with the exact method and check the impulse against theory (m v0 / 2 = 4 N s); the
+# installed `beamimpact score` makes its page with the installed reports/render.py.
 # Usage: tools/test-install.sh BUILD_DIR   (run by ctest as install_consumer)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -48,6 +49,20 @@ imp=$(/usr/bin/python3 -c "import json, sys; print(json.load(open(sys.argv[1]))[
   "$empty/s1/summary.json")
 [[ $imp == 4.0 ]] ||
   { echo "install test: run s1_central from $empty: expected impulse 4 N s"; rm -rf "$empty"; exit 1; }
+# The installed score makes its page with the installed page generator (share/beamimpact/reports):
+# exit 0 or 1 is the verdict (the card's tolerance), the page carries the same verdict line.
+for f in $(grep -v '^#' "$root/reports/page_files.txt") templates/scorecard.html.j2 templates/conform.html.j2; do
+  [[ -f $prefix/share/beamimpact/reports/$f ]] || { echo "install test: reports/$f is not installed"; rm -rf "$empty"; exit 1; }
+done
+rc=0
+(cd "$empty" && "$prefix/bin/beamimpact" score paper --sets paper --scenes s1_central --no-ladder --out score \
+  --cache cache) > "$empty/score.log" 2>&1 || rc=$?
+verdict=$(grep -oE 'score paper: (PASSED|FAILED)' "$empty/score.log" | head -1)
+if ((rc > 1)) || [[ -z $verdict ]] || ! grep -q "^page: score/scorecard.html$" "$empty/score.log" ||
+  ! grep -q "$verdict" "$empty/score/scorecard.html"; then
+  cat "$empty/score.log"; echo "install test: the installed score made no page with its verdict ($verdict)"; rm -rf "$empty"; exit 1
+fi
+echo "install test: the installed score made score/scorecard.html ($verdict)"
 rm -rf "$empty"
 # The Python package, when the build has it: importable from the prefix, same impulse.
 pkg=$prefix/lib/python3/dist-packages

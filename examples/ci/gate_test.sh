@@ -16,6 +16,11 @@ if ! (cd "$d/honest" && bash gate.sh out) > "$d/honest.log" 2>&1; then
   echo "gate_test: the honest solver failed its gate (expected exit 0)"
   exit 1
 fi
+# The pages the workflow keeps (github-workflow.yml): made by the program's page generator.
+for page in score/scorecard.html conform/conform.html; do
+  grep -q "passed\|PASSED" "$d/honest/out/$page" 2>/dev/null ||
+    { cat "$d/honest.log"; echo "gate_test: no page out/$page with the gate's verdict"; exit 1; }
+done
 # The wrong copy: the same solver, its contact force scaled by 1.02 in every output.
 cat > "$d/wrong/wrong_solver.py" <<'PY'
 import csv, json, os, subprocess, sys

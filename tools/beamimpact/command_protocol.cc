@@ -28,6 +28,7 @@
 #include "command_verification.hpp"
 #include "methods_option.hpp"
 #include "output_lock.hpp"
+#include "page.hpp"
 
 namespace beamimpact {
 namespace {
@@ -87,11 +88,10 @@ void conform_command(const ProtocolArgs& a) {
   const std::string command =
       fmt::format("beamimpact conform {} --out {} --timeout {}", m.name, out.string(), a.timeout);
   write_conform_reports(out, r, command, a.timeout);
-  fmt::print(
-      "conform {}: {} check(s), {} broken rule(s), {} scene(s) not applicable\njunit: {}\nresults: {} "
-      "(page: /usr/bin/python3 reports/render.py conform {})\n",
-      r.passed() ? "passed" : "FAILED", r.checks(), r.broken(), r.not_applicable(),
-      (out / "junit.xml").string(), (out / "conform.json").string(), out.string());
+  fmt::print("junit: {}\nresults: {}\n", (out / "junit.xml").string(), (out / "conform.json").string());
+  print_page("conform", out);  // the verdict is conform.json's: the page never changes the exit code
+  fmt::print("conform {}: {} check(s), {} broken rule(s), {} scene(s) not applicable\n",
+             r.passed() ? "passed" : "FAILED", r.checks(), r.broken(), r.not_applicable());
   if (!r.passed()) throw CommandExit{1};
 }
 
@@ -226,8 +226,9 @@ void score_command(const ProtocolArgs& a) {
         ScoreContext{ms[i]->name, ms[i]->origin, command, kVersion, utc_now(), wall, a.score, cache.string()},
         rows, v);
     print_score(rows);
-    fmt::print("scorecard: {} {}\nreference cache: {}\n{}\n", (dir / "scorecard.json").string(),
-               (dir / "scorecard.html").string(), cache.string(), v.line);
+    fmt::print("scorecard: {}\n", (dir / "scorecard.json").string());
+    print_page("scorecard", dir);  // the verdict is scorecard.json's: the page never changes the exit code
+    fmt::print("reference cache: {}\n{}\n", cache.string(), v.line);
     exit_code = std::max(exit_code, v.exit_code);
     if (!a.baseline.empty())
       exit_code = std::max(exit_code, print_ratchet(a.baseline, ms[i]->name, a.score, rows));
@@ -245,7 +246,9 @@ void add_protocol_commands(CLI::App& app) {
       "Check an external method against every rule of the protocol (docs/protocol.md); exit 1 if one "
       "is broken");
   c->add_option("NAME", ca->method, "The method (`beamimpact methods`)")->required();
-  c->add_option("--out", ca->out, "Output directory (runs/, scenes/, junit.xml; default conform-NAME)");
+  c->add_option("--out", ca->out,
+                "Output directory (runs/, scenes/, junit.xml, conform.json, its page conform.html; default "
+                "conform-NAME)");
   c->add_option("--timeout", ca->timeout, "s, per run")->capture_default_str()->check(positive_seconds());
   c->add_option("--scenes", ca->scenes,
                 "The conformance scenes to run, comma-separated (default: all): end_to_end, transverse, "
@@ -258,9 +261,9 @@ void add_protocol_commands(CLI::App& app) {
   auto sa = std::make_shared<ProtocolArgs>();
   CLI::App* s = app.add_subcommand(
       "score",
-      "Score a method on the benchmark set under each scene's benchmark card: scorecard.json, "
-      "scorecard.html and a verdict (exit 0 passed, 1 failed or an error grew since --baseline, 2 bad "
-      "input)");
+      "Score a method on the benchmark set under each scene's benchmark card: scorecard.json, its "
+      "page scorecard.html (reports/render.py, when python3 and Jinja2 are there) and a verdict (exit 0 "
+      "passed, 1 failed or an error grew since --baseline, 2 bad input)");
   s->add_option("NAME", sa->methods,
                 "The method (`beamimpact methods`), or several: their runs in one set of jobs, a reference "
                 "they share run once, each scorecard in DIR/NAME")

@@ -68,6 +68,28 @@ TEST_F(Score, ExitsZeroWhenEveryQuantityPassesAndOneWhenOneFails) {
   EXPECT_NE(fail.output.find("finished earlier"), std::string::npos) << fail.output;
 }
 
+TEST_F(Score, MakesItsPageAndWithoutPythonSaysHowLeavingTheExitCode) {
+  // The page is reports/render.py's, from scorecard.json; with no python3 on PATH the command
+  // says so in one line and exits as its verdict says (0 within 4 %, 1 within 1 %: as above).
+  const CliResult made = score(s1_card(tmp_ / "pass", 0.04));
+  EXPECT_EQ(made.code, 0) << made.output;
+  EXPECT_NE(made.output.find("page: " + (tmp_ / "out/scorecard.html").string()), std::string::npos)
+      << made.output;
+  EXPECT_NE(read(tmp_ / "out/scorecard.html").find("score paper: PASSED"), std::string::npos);
+  for (const auto& [tol, code] : {std::pair{0.04, 0}, std::pair{0.01, 1}}) {
+    const CliResult r = run(fmt::format("score paper --cards {} --sets paper --no-ladder --out {} --cache {}",
+                                        s1_card(tmp_ / fmt::format("c{}", code), tol).string(),
+                                        (tmp_ / "out").string(), (tmp_ / "cache").string()),
+                            "env PATH=/nonexistent");
+    EXPECT_EQ(r.code, code) << r.output;
+    EXPECT_NE(r.output.find("page: not made (python3 is not on PATH); make it with: python3 "),
+              std::string::npos)
+        << r.output;
+    EXPECT_FALSE(fs::exists(tmp_ / "out/scorecard.html"))
+        << "the earlier page is left beside a new scorecard.json";
+  }
+}
+
 TEST_F(Score, ARefusedSceneIsNotApplicableAndRunsNoReference) {
   // The example takes no rigid body: it refuses the rod on a rigid wall (exit 2 with its reason),
   // and the scene's exact reference is never run.

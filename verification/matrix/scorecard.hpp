@@ -59,7 +59,7 @@ struct ScoreOptions {
   void validate(const std::string& method) const;
 };
 
-/// @brief The IDA reference of `o`, in words (the scorecard page and the terminal say it).
+/// @brief The IDA reference of `o`, in words (scorecard.json's ida_reference, which its page shows).
 std::string ida_reference(const ScoreOptions& o);
 
 /// @brief The benchmark set for `method`: one item per card of `options.sets`, in set order and
@@ -155,7 +155,8 @@ struct ScoreContext {
 nlohmann::json scorecard_json(const ScoreContext& ctx, const std::vector<ScoreRow>& rows,
                               const ScoreVerdict& verdict);
 
-/// @brief Writes dir/scorecard.json and the self-contained dir/scorecard.html.
+/// @brief Writes dir/scorecard.json (atomically). Its page, dir/scorecard.html, is rendered from it
+/// by reports/render.py (the `score` command runs it: tools/beamimpact/page.hpp).
 void write_scorecard(const std::filesystem::path& dir, const ScoreContext& ctx,
                      const std::vector<ScoreRow>& rows, const ScoreVerdict& verdict);
 

@@ -1,7 +1,4 @@
-// scorecard.json and scorecard.html (scorecard.hpp).
-#include <fmt/format.h>
-#include <fmt/ranges.h>
-
+// scorecard.json (scorecard.hpp); its page is reports/render.py's (tools/beamimpact/page.hpp).
 #include <api/methods_file.hpp>
 #include <solver/util/write_file_atomic.hpp>
 #include <verification/matrix/reports.hpp>
@@ -29,8 +26,6 @@ std::string shown_path(const std::string& p) {
   return p;
 }
 
-std::string text(const std::optional<double>& v) { return v ? fmt::format("{:.3g}", *v) : "-"; }
-
 /// One quantity in scorecard.json.
 nlohmann::json quantity_json(const ScoreQuantity& q) {
   nlohmann::json j = {{"metric", q.metric},
@@ -51,20 +46,6 @@ nlohmann::json quantity_json(const ScoreQuantity& q) {
                    {"limit_uncertainty", number(q.ladder->uncertainty)},
                    {"why_not", q.ladder->why_not}};
   return j;
-}
-
-/// One quantity as a row of the page's table.
-std::string quantity_row(const ScoreRow& r, const ScoreQuantity& q) {
-  const std::string cls = q.status == "pass"                                                          ? "pass"
-                          : q.status == "fail" || q.status == "failed" || q.status == "not converged" ? "fail"
-                          : q.status == "reference uncertain"                                         ? "unc"
-                                                                                                      : "na";
-  return fmt::format(
-      "<tr class=\"{}\"><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>"
-      "<td>{}</td><td>{:.3f}</td><td>{}</td></tr>\n",
-      cls, xml_escape(r.item->run.scene_name()), xml_escape(r.item->reference.settings_label()),
-      xml_escape(q.metric), xml_escape(q.judged), text(q.error), text(q.uncertainty), text(q.tol),
-      xml_escape(q.status), r.outcome.solver_seconds, xml_escape(q.note));
 }
 
 /// One scored scene in scorecard.json.
@@ -98,34 +79,6 @@ nlohmann::json scene_json(const ScoreRow& r, nlohmann::json quantities) {
           {"quantities", std::move(quantities)}};
 }
 
-/// The self-contained page: how it was made, what the columns mean, the table's rows.
-std::string scorecard_page(const ScoreContext& ctx, const ScoreVerdict& v, const std::string& body) {
-  return fmt::format(
-      "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>Scorecard: {0}</title>\n<style>\n"
-      "body{{font-family:sans-serif;margin:2em}} table{{border-collapse:collapse}} "
-      "td,th{{border:1px solid #bbb;padding:3px 8px;text-align:left}} th{{background:#eee}} "
-      ".pass td:nth-child(8){{background:#d8f5d8}} .fail td:nth-child(8){{background:#f8d0d0}} "
-      ".unc td:nth-child(8){{background:#fff3c4}} .na td:nth-child(8){{background:#eee}}\n"
-      "</style></head><body>\n"
-      "<h1>Scorecard: {0}</h1>\n<p>{1}</p>\n<p><strong>{6}</strong></p>\n<p>Command: <code>{2}</code>; "
-      "version {3}; "
-      "made {4} (UTC); wall time {5:.1f} s.</p>\n<p>{9}. Each scene is judged under its benchmark card "
-      "(docs/benchmark-cards.md: one reference and one tolerance per quantity, for every method). judged "
-      "<em>limit</em>: the method ran a resolution ladder and the quantity's Richardson limit is compared "
-      "with the exact value, passing within 1.25 x its uncertainty + tol / 10; <em>single run</em>: the run "
-      "against the reference (exact, or {8}) under the tolerance; error: the norm of <code>beamimpact "
-      "compare</code> (relative unless the metric says otherwise); uncertainty: the limit's, or the "
-      "reference's spread (a verdict it could reverse is <em>reference uncertain</em>); solver s: the "
-      "method's own time (summary.json wall_seconds).</p>\n"
-      "<table>\n<tr><th>scene</th><th>reference</th><th>quantity</th><th>judged</th><th>error</th>"
-      "<th>uncertainty</th><th>tolerance</th><th>status</th><th>solver s</th><th>note</th></tr>\n{7}"
-      "</table>\n</body></html>\n",
-      xml_escape(ctx.method), xml_escape(ctx.origin), xml_escape(ctx.command), xml_escape(ctx.version),
-      xml_escape(ctx.made), ctx.wall_seconds, xml_escape(v.line), body, ida_reference(ctx.options),
-      ctx.options.ladder ? "Ladders on the scenes with an exact answer"
-                         : "Single resolution (--no-ladder): one run a scene");
-}
-
 }  // namespace
 
 nlohmann::json scorecard_json(const ScoreContext& ctx, const std::vector<ScoreRow>& rows,
@@ -143,6 +96,7 @@ nlohmann::json scorecard_json(const ScoreContext& ctx, const std::vector<ScoreRo
           {"made", ctx.made},
           {"sets", ctx.options.sets},
           {"references", ctx.options.references},
+          {"ida_reference", ida_reference(ctx.options)},
           {"ladder", ctx.options.ladder},
           {"rungs", ctx.options.ladder ? ctx.options.rungs : 1},
           {"reference_cache", shown_path(ctx.cache)},
@@ -167,10 +121,6 @@ void write_scorecard(const fs::path& dir, const ScoreContext& ctx, const std::ve
                      const ScoreVerdict& v) {
   fs::create_directories(dir);
   write_file_atomic(dir / "scorecard.json", scorecard_json(ctx, rows, v).dump(1) + "\n");
-  std::string body;
-  for (const ScoreRow& r : rows)
-    for (const ScoreQuantity& q : r.quantities) body += quantity_row(r, q);
-  write_file_atomic(dir / "scorecard.html", scorecard_page(ctx, v, body));
 }
 
 }  // namespace beamimpact::verification

@@ -196,10 +196,10 @@ class ExplicitContactIntegrator {
   // fint_U_, fint_next_: f_int - F^P at U^p, U^{p+1} (the net force of the step's equations)
   Eigen::VectorXd U_prev_, U_, U_next_,  // U^{p-1}, U^p, U^{p+1} (rotated by swaps)
       Vbar_, fint_U_, fint_next_, Ubar_, fc_, work_, work2_;
-  Eigen::VectorXd du_, scratch_, hwork_, c_du_;  ///< the damper's work vectors: empty when undamped
-  mutable Eigen::VectorXd V_, vwork_;            ///< V^p when a contact force acts (formed by form_velocity)
-  std::vector<int> fc_dofs_;                     ///< fused path: the equations where fc_ may be non-zero
-  std::vector<double> vbar_saved_;               ///< fused path: Vbar^p at fc_dofs_ during the sweep
+  Eigen::VectorXd du_, scratch_, hwork_, c_du_, c_z_;  ///< the damper's work vectors: empty when undamped
+  mutable Eigen::VectorXd V_, vwork_;  ///< V^p when a contact force acts (formed by form_velocity)
+  std::vector<int> fc_dofs_;           ///< fused path: the equations where fc_ may be non-zero
+  std::vector<double> vbar_saved_;     ///< fused path: Vbar^p at fc_dofs_ during the sweep
   double dissipated_ = 0.0;
   bool hertz_ = false;         ///< some contact has the Hertz law
   double hertz_energy_ = 0.0;  ///< J, in the Hertz springs (ContactSolver::hertz_energy)

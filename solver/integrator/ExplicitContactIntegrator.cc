@@ -4,6 +4,7 @@
 #include <thread>
 
 #include <solver/model/load_vector.hpp>
+#include <solver/util/available_cores.hpp>
 
 namespace beamimpact::paper {
 namespace {
@@ -71,7 +72,7 @@ bool fused_step(const Model& model, bool damped) { return model.lumped() && !dam
 
 int default_threads(int dofs) {
   if (dofs < kThreadsMinDofs) return 1;
-  return std::max(1u, std::thread::hardware_concurrency());
+  return available_cores().count;
 }
 
 ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const Scene& scene,

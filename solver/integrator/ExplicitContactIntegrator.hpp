@@ -38,8 +38,9 @@ inline constexpr int kMaxThreads = 1024;
 /// @param n the count asked for
 inline bool valid_thread_count(long n) { return n >= 1 && n <= kMaxThreads; }
 
-/// @brief The thread count a run takes unless told: std::thread::hardware_concurrency() (1 when
-/// unknown), and 1 for a model of fewer than kThreadsMinDofs equations.
+/// @brief The thread count a run takes unless told: the cores available (available_cores(): the
+/// hardware threads, fewer under a CPU affinity mask), and 1 for a model of fewer than
+/// kThreadsMinDofs equations.
 /// @param dofs the model's equations
 int default_threads(int dofs);
 

@@ -38,8 +38,9 @@ inline constexpr int kMaxThreads = 1024;
 /// @param n the count asked for
 inline bool valid_thread_count(long n) { return n >= 1 && n <= kMaxThreads; }
 
-/// @brief The thread count a run takes unless told: std::thread::hardware_concurrency() (1 when
-/// unknown), and 1 for a model of fewer than kThreadsMinDofs equations.
+/// @brief The thread count a run takes unless told: the cores available (available_cores(): the
+/// hardware threads, fewer under a CPU affinity mask), and 1 for a model of fewer than
+/// kThreadsMinDofs equations.
 /// @param dofs the model's equations
 int default_threads(int dofs);
 
@@ -196,10 +197,10 @@ class ExplicitContactIntegrator {
   // fint_U_, fint_next_: f_int - F^P at U^p, U^{p+1} (the net force of the step's equations)
   Eigen::VectorXd U_prev_, U_, U_next_,  // U^{p-1}, U^p, U^{p+1} (rotated by swaps)
       Vbar_, fint_U_, fint_next_, Ubar_, fc_, work_, work2_;
-  Eigen::VectorXd du_, scratch_, hwork_, c_du_;  ///< the damper's work vectors: empty when undamped
-  mutable Eigen::VectorXd V_, vwork_;            ///< V^p when a contact force acts (formed by form_velocity)
-  std::vector<int> fc_dofs_;                     ///< fused path: the equations where fc_ may be non-zero
-  std::vector<double> vbar_saved_;               ///< fused path: Vbar^p at fc_dofs_ during the sweep
+  Eigen::VectorXd du_, scratch_, hwork_, c_du_, c_z_;  ///< the damper's work vectors: empty when undamped
+  mutable Eigen::VectorXd V_, vwork_;  ///< V^p when a contact force acts (formed by form_velocity)
+  std::vector<int> fc_dofs_;           ///< fused path: the equations where fc_ may be non-zero
+  std::vector<double> vbar_saved_;     ///< fused path: Vbar^p at fc_dofs_ during the sweep
   double dissipated_ = 0.0;
   bool hertz_ = false;         ///< some contact has the Hertz law
   double hertz_energy_ = 0.0;  ///< J, in the Hertz springs (ContactSolver::hertz_energy)

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <thread>
 
 #include <fmt/format.h>
 
@@ -19,6 +18,7 @@
 #include <solver/schema/output_schema.hpp>
 #include <solver/util/InputError.hpp>
 #include <solver/util/Progress.hpp>
+#include <solver/util/available_cores.hpp>
 
 namespace beamimpact::paper {
 namespace {
@@ -254,10 +254,42 @@ int threads_asked(int run_threads, const Options& o, int dofs, SimulationResult&
   if (o.threads > 0) return o.threads;
   const int asked = default_threads(dofs);
   r.assumed["paper.threads"] =
-      fmt::format("{}: the machine's {} hardware threads, 1 below {} equations (this model: {})", asked,
-                  std::max(1u, std::thread::hardware_concurrency()), kThreadsMinDofs, dofs);
+      fmt::format("{}: the machine's {} available cores ({}), 1 below {} equations (this model: {})", asked,
+                  available_cores().count, available_cores().source, kThreadsMinDofs, dofs);
   return asked;
 }
+
+/// The threads a run takes: those asked for, at most the cores available (a thread beyond them
+/// only waits for a core; the history is the same bits at any count). Writes the choice into
+/// summary.json's settings block, `threads`: asked, cores, used and why; a capped count also
+/// warns (stderr from the command line, summary.json `warnings`).
+class ThreadChoice {
+ public:
+  ThreadChoice(int asked, SimulationResult& r) : asked_(asked), cores_(available_cores()) {
+    if (asked_ <= cores_.count) return;
+    cap_ = fmt::format("{} threads asked for; cores available: {} ({}): capped to {}", asked_, cores_.count,
+                       cores_.source, cores_.count);
+    r.extra["warnings"].push_back(cap_);
+  }
+  /// @brief The count to start the step with.
+  int start() const { return std::min(asked_, cores_.count); }
+  /// @brief Records the count the integrator runs and why it is that one.
+  void record(const ExplicitContactIntegrator& integ, SimulationResult& r) const {
+    std::string why = cap_;
+    if (!integ.threads_note().empty()) why += (why.empty() ? "" : "; ") + integ.threads_note();
+    if (why.empty())
+      why = r.assumed.count("paper.threads") ? "the default (assumed paper.threads)" : "as asked";
+    r.extra["threads"] = integ.threads();
+    if (!integ.threads_note().empty()) r.extra["threads_note"] = integ.threads_note();
+    r.settings["threads"] = {
+        {"asked", asked_}, {"cores", cores_.count}, {"used", integ.threads()}, {"why", why}};
+  }
+
+ private:
+  int asked_;
+  AvailableCores cores_;
+  std::string cap_;
+};
 
 }  // namespace
 
@@ -304,12 +336,10 @@ SimulationResult solve(const Scene& scene_in, const std::filesystem::path& field
   r.steps = N;
   set_merge_rule(options, r.dt, rec);
 
-  ExplicitContactIntegrator integ(model, scene, effects, r.dt, options.surface,
-                                  threads_asked(threads, options, model.size(), r));
+  const ThreadChoice thread_choice(threads_asked(threads, options, model.size(), r), r);
+  ExplicitContactIntegrator integ(model, scene, effects, r.dt, options.surface, thread_choice.start());
   integ.set_closure_slip(options.closure_slip);
-  // The threads used, with the reason when fewer than asked.
-  r.extra["threads"] = integ.threads();
-  if (!integ.threads_note().empty()) r.extra["threads_note"] = integ.threads_note();
+  thread_choice.record(integ, r);  // the threads used, and why when fewer than asked
   rec.set_initial_energy(integ.initial_energy());
   if (effects.loads) rec.set_load_force(net_load_force(model, load_vector(model, scene)));
   std::vector<DeformedSurface> surfaces;  // the real gap of each pair, from the deformed geometry

@@ -76,6 +76,8 @@ struct SimulationResult {
   double momentum_drift_max =
       0.0;  ///< N s, max |p(t) - p(0) - F t|, F the loads' net force (meaningful for free bodies)
   nlohmann::json extra = nlohmann::json::object();  ///< method-specific top-level keys
+  nlohmann::json settings =
+      nlohmann::json::object();  ///< method-specific run settings (summary.json "settings")
 };
 
 }  // namespace beamimpact

@@ -89,6 +89,7 @@ nlohmann::json summary_json(const Scene& scene, const SimulationResult& r) {
                      {"fields", scene.output.fields},
                      {"field_format", to_string(scene.output.field_format)},
                      {"field_precision", to_string(scene.output.field_precision)}}}};
+  settings.update(r.settings);
   json s = {{"scene", scene.name},
             {"scene_file", scene.file},
             {"scene_sha256", scene.sha256},

@@ -1,4 +1,5 @@
 // End-to-end: the `beamimpact` binary's exit codes, messages and outputs for good and bad input.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -14,6 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 using beamimpact::testing::paper_scene;
 using Result = beamimpact::testing::CliResult;
+using beamimpact::testing::cores_of_this_process;
 using beamimpact::testing::fresh_dir;
 using beamimpact::testing::run_cli;
 
@@ -58,10 +60,11 @@ TEST(Cli, ThreadsUsedAndWhyFewerAreInTheSummary) {
   const std::string s2_refined =
       paper_scene("s2_transverse") +
       " --set bodies.A.elements=20 --set bodies.B.elements=40 --set 'time.dt=\"auto\"'";
+  const int two = std::min(2, cores_of_this_process());  // 2 asked: capped to the cores
   for (const Case& c : {Case{"run " + paper_scene("s1_central"), 1, false},
-                        Case{"run " + s2_refined + " --threads 2", 2, false},
-                        Case{"run " + s2_refined + " --set paper.threads=2", 2, false},
-                        Case{"run " + s2_refined + " --set paper.threads=1 --threads 2", 2, false},
+                        Case{"run " + s2_refined + " --threads 2", two, false},
+                        Case{"run " + s2_refined + " --set paper.threads=2", two, false},
+                        Case{"run " + s2_refined + " --set paper.threads=1 --threads 2", two, false},
                         Case{"run " + s2_refined + " --set paper.threads=2 --threads 1", 1, false},
                         Case{"run " + paper_scene("s4_oblique_45") + " --threads 2", 1, true}}) {
     const fs::path out = fresh_dir("threads");
@@ -74,6 +77,41 @@ TEST(Cli, ThreadsUsedAndWhyFewerAreInTheSummary) {
       EXPECT_EQ(j["assumed"]["paper.threads"].get<std::string>().rfind("1: the machine's", 0), 0u) << c.args;
     }
   }
+}
+
+// More threads than cores (64, or the most a run takes on a machine with 64 cores or more):
+// the run takes the cores (std::thread::hardware_concurrency, fewer under the CPU affinity mask),
+// says so in one warning line on stderr and in summary.json's settings.threads (asked, cores,
+// used, why), and its history is the same bytes as on one thread (the split sweep sums every
+// equation in the one thread's order: docs/threads.md).
+TEST(Cli, ThreadsAboveTheCoresAreCappedAndChangeNoBit) {
+  const int cores = cores_of_this_process();
+  const int asked = cores < 64 ? 64 : 1024;
+  const std::string s2_refined =
+      paper_scene("s2_transverse") +
+      " --set bodies.A.elements=20 --set bodies.B.elements=40 --set 'time.dt=\"auto\"' --quiet";
+  const fs::path many = fresh_dir("threads_many"), one = fresh_dir("threads_one");
+  const Result r =
+      run_cli("run " + s2_refined + " --threads " + std::to_string(asked) + " --out " + many.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  ASSERT_EQ(run_cli("run " + s2_refined + " --threads 1 --out " + one.string()).code, 0);
+  const auto j = nlohmann::json::parse(std::ifstream(many / "summary.json"));
+  const auto& t = j["settings"]["threads"];
+  EXPECT_EQ(t["asked"], asked);
+  EXPECT_EQ(t["cores"], cores);
+  EXPECT_EQ(t["used"], cores);  // 60 elements: two a thread at least for up to 30 cores
+  EXPECT_EQ(j["threads"], cores);
+  const std::string why = t["why"].get<std::string>();
+  EXPECT_NE(why.find(std::to_string(asked) + " threads asked for; cores available: " + std::to_string(cores)),
+            std::string::npos)
+      << why;
+  EXPECT_NE(why.find("capped to " + std::to_string(cores)), std::string::npos) << why;
+  const std::string line = "warning: " + why + "\n";
+  EXPECT_NE(r.output.find(line), std::string::npos) << r.output;  // one line on stderr
+  EXPECT_EQ(r.output.find("warning:"), r.output.rfind("warning:")) << r.output;
+  const std::string h = beamimpact::testing::read_file(many / "history.csv");
+  EXPECT_FALSE(h.empty());
+  EXPECT_EQ(h, beamimpact::testing::read_file(one / "history.csv"));
 }
 
 struct Bad {

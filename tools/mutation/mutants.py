@@ -314,6 +314,6 @@ MUTANTS = [
     dict(name="threads_reports_asked", layer="threads", ci=False,
          what="summary.json's threads is the count asked for, not the one used",
          edits=[("solver/paper/solve.cc", 'r.extra["threads"] = integ.threads();',
-                 'r.extra["threads"] = threads_asked(threads, options, model.size(), r);')],
+                 'r.extra["threads"] = asked_;')],
          verify=False, tests=["Cli.ThreadsUsedAndWhyFewerAreInTheSummary"], targets=["cli_test", "beamimpact"]),
 ]

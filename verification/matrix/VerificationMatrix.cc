@@ -200,10 +200,18 @@ class Loader {
     Convergence v;
     const fs::path scene = scene_path(r);
     const JobSpec base = read_spec(r, scene, false, r.raw("mesh") && r.raw("mesh")->as_array());
-    const int given = r.has("dt") + r.has("fraction") + r.has("mesh");
-    if (given != 1) r.fail("dt", "expected exactly one of dt = [...], fraction = [...] or mesh = [...]");
-    const std::string key = r.has("dt") ? "dt" : r.has("fraction") ? "fraction" : "mesh";
-    v.steps = numbers(r, key);
+    const int given = r.has("dt") + r.has("fraction") + r.has("mesh") + r.has("rungs");
+    if (given != 1)
+      r.fail("dt", "expected exactly one of dt = [...], fraction = [...], mesh = [...] or rungs = [...]");
+    const std::string key = r.has("dt")         ? "dt"
+                            : r.has("fraction") ? "fraction"
+                            : r.has("mesh")     ? "mesh"
+                                                : "rungs";
+    v.refined = key;
+    if (key == "rungs")
+      read_rungs(r, prefix, base, v);
+    else
+      v.steps = numbers(r, key);
     if (key == "mesh")
       for (double& s : v.steps) {
         if (!(s >= 1.0) || s != std::floor(s)) r.fail("mesh", "expected whole element multipliers >= 1");
@@ -214,6 +222,7 @@ class Loader {
         r.fail(key, key == "mesh" ? "expected increasing multipliers (coarse to fine)"
                                   : "expected decreasing values (coarse to fine)");
     for (double s : v.steps) {
+      if (key == "rungs") break;  // read_rungs made the runs
       JobSpec spec = base;
       if (key == "dt")
         spec.dt = s;
@@ -234,6 +243,34 @@ class Loader {
       if (g.richardson && (!v.reference || v.runs.size() < 3))
         r.fail("gates", "a richardson gate needs a reference and at least three rungs");
     return v;
+  }
+
+  /// rungs = [{ step, dt, set }, ...] with refined = "name": a ladder of anything, each rung with
+  /// its own step (s) and overrides after the ladder's `set`, and `step`, the value of the refined
+  /// quantity that tends to zero (e.g. a contact spring's compliance 1 / k), whose ratios the
+  /// observed orders use.
+  void read_rungs(TableReader& r, const std::string& prefix, const JobSpec& base, Convergence& v) {
+    v.refined = r.string("refined", "the name of the refined quantity the rungs' step gives (e.g. \"1/k\")");
+    const toml::node* n = r.raw("rungs");
+    const toml::array* a = n ? n->as_array() : nullptr;
+    if (!a || a->size() < 2) r.fail("rungs", "expected an array of at least two { step, dt, set } tables");
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const std::string p = fmt::format("{}.rungs[{}]", prefix, i);
+      const toml::table* t = (*a)[i].as_table();
+      if (!t) throw InputError(file_, p, "expected { step = ..., dt = ..., set = [...] }");
+      TableReader q(*t, file_, p, nullptr);
+      const double step = q.number("step", "the refined quantity's value at this rung, > 0");
+      if (!(step > 0.0)) q.fail("step", "expected the refined quantity's value at this rung, > 0");
+      JobSpec spec = base;
+      if (q.has("dt")) {
+        spec.dt = q.number("dt", "a positive time step (s)");
+        if (!(*spec.dt > 0.0)) q.fail("dt", "expected a positive time step (s)");
+      }
+      for (const std::string& o : q.strings("set")) spec.set.push_back(o);
+      q.finish();
+      v.steps.push_back(step);
+      v.runs.push_back(spec);
+    }
   }
 
   RunCheck read_check(TableReader& r, const std::string& prefix) {
@@ -258,11 +295,8 @@ std::string Case::name() const {
 
 std::string Convergence::name() const {
   const JobSpec& first = runs.front();
-  const bool by_mesh = runs.size() > 1 && runs[0].mesh != runs[1].mesh;
-  std::string s = first.scene_name() + " " + first.method + " " +
-                  (by_mesh    ? "mesh="
-                   : first.dt ? "dt="
-                              : "fraction=");
+  const bool by_mesh = refined == "mesh";
+  std::string s = first.scene_name() + " " + first.method + " " + refined + "=";
   for (std::size_t i = 0; i < steps.size(); ++i)
     s += fmt::format("{}{:g}", i ? "/" : "", by_mesh ? 1.0 / steps[i] : steps[i]);
   if (!by_mesh && !first.mesh.empty()) s += " mesh=" + first.mesh;

@@ -42,7 +42,9 @@ struct Case {
 /// The observed order of each norm is p = log(e_i / e_{i+1}) / log(r), r the refinement ratio.
 struct Convergence {
   std::vector<JobSpec> runs;  ///< coarse to fine
-  std::vector<double> steps;  ///< the refined quantity of each run: dt, fraction, or 1 / mesh multiplier
+  std::vector<double>
+      steps;  ///< the refined quantity of each run: dt, fraction, 1 / mesh multiplier, or a rung's step
+  std::string refined = "dt";  ///< what is refined: "dt", "fraction", "mesh", or the rungs' `refined` name
   std::optional<JobSpec> reference;  ///< when set, errors are against it (e.g. the exact solution)
   std::string tier = "quick";
   bool required = true;

@@ -1,11 +1,14 @@
 #include <tools/beamimpact/testing/cli_run.hpp>
 
+#include <sched.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include <solver/testing/test_scenes.hpp>
 
@@ -34,6 +37,15 @@ std::string shell_words(const std::vector<std::string>& args) {
     words += '\'';
   }
   return words;
+}
+
+int cores_of_this_process() {
+  int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof(set), &set) == 0 && CPU_COUNT(&set) > 0)
+    cores = std::min(cores, CPU_COUNT(&set));
+  return cores;
 }
 
 std::string read_file(const fs::path& file) {

@@ -27,6 +27,11 @@ CliResult run_cli(const std::string& args, const std::string& prefix = "");
 /// @param args the arguments, each one word whatever it holds
 std::string shell_words(const std::vector<std::string>& args);
 
+/// @brief The cores this test process may run on, from the system's own answers (not the
+/// program's): the hardware threads, fewer under a CPU affinity mask (taskset, a cpuset). A run
+/// asked for more threads takes this many.
+int cores_of_this_process();
+
 /// @brief The file's bytes; "" when it cannot be opened (the caller's check then fails).
 /// @param file the file to read
 std::string read_file(const std::filesystem::path& file);

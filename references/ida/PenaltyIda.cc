@@ -75,8 +75,9 @@ struct PenaltyIda::Impl {
   std::vector<ContactEvent> events;
   IdaCounters done;  // counters of finished segments (IDAReInit zeroes IDA's own)
   Messages messages;
-  double released_energy = 0.0;  // J, spring energy (kn g^2/2) left in the penalty at releases
-  Vec load;                      // constant external load F, empty for none
+  double released_energy = 0.0;           // J, spring energy (kn g^2/2) left in the penalty at releases
+  Vec load;                               // constant external load F, empty for none
+  const ElasticForce* elastic = nullptr;  // f_int(U) and its tangent; null: K U
 
   SUNContext ctx = nullptr;
   N_Vector yy = nullptr, yp = nullptr;
@@ -85,8 +86,9 @@ struct PenaltyIda::Impl {
   void* mem = nullptr;
   double t_now = 0.0;
 
-  // Sparse Jacobian work: base triplets ([0 -I; K C]), the cj-scaled ones ([I 0; 0 M]).
-  std::vector<Triplet> base_trip, cj_trip;
+  // Sparse Jacobian work: base triplets ([0 -I; 0 C]), the stiffness's (K, or the elastic
+  // force's tangent at the current U), the cj-scaled ones ([I 0; 0 M]).
+  std::vector<Triplet> base_trip, k_trip, cj_trip;
   std::vector<sunindextype> last_ptr, last_idx;
 
   Impl(const SparseMatrix& M_, const SparseMatrix& K_, const SparseMatrix& C_,
@@ -114,7 +116,7 @@ struct PenaltyIda::Impl {
     for (int k = 0; k < nq; ++k) cj_trip.emplace_back(2 * n + k, 2 * n + k, 1.0);
     for (int k = 0; k < K.outerSize(); ++k)
       for (SparseMatrix::InnerIterator it(K, k); it; ++it)
-        base_trip.emplace_back(n + it.row(), it.col(), it.value());
+        k_trip.emplace_back(n + it.row(), it.col(), it.value());
     for (int k = 0; k < C.outerSize(); ++k)
       for (SparseMatrix::InnerIterator it(C, k); it; ++it)
         base_trip.emplace_back(n + it.row(), n + it.col(), it.value());
@@ -130,6 +132,14 @@ struct PenaltyIda::Impl {
     if (yp) N_VDestroy(yp);
     if (yy) N_VDestroy(yy);
     if (ctx) SUNContext_Free(&ctx);
+  }
+
+  /// The internal force f_int(U): K U, or the elastic force's.
+  Vec internal(const CMap& U) const {
+    if (!elastic) return K * U;
+    Vec f;
+    elastic->apply(U, f);
+    return f;
   }
 
   /// Contact reading for displacement U and velocity V.
@@ -173,7 +183,7 @@ struct PenaltyIda::Impl {
     Vec f;
     contact_force(y, f);
     if (load.size()) f += load;
-    const Vec acc = solve_mass(f - K * U - C * V);
+    const Vec acc = solve_mass(f - internal(U) - C * V);
     double* p = N_VGetArrayPointer(yp);
     MMap(p, n) = V;
     MMap(p + n, n) = acc;
@@ -186,7 +196,7 @@ struct PenaltyIda::Impl {
     contact_force(y, f);
     if (load.size()) f += load;
     MMap(res, n) = Ud - V;
-    MMap(res + n, n) = M * Vd + C * V + K * U - f;
+    MMap(res + n, n) = M * Vd + C * V + internal(U) - f;
     quad_rhs(y, res + 2 * n);
     for (int k = 0; k < nq; ++k) res[2 * n + k] = ydot[2 * n + k] - res[2 * n + k];
   }
@@ -241,7 +251,11 @@ struct PenaltyIda::Impl {
   /// J = dF/dy + cj dF/dy' as a compressed sparse matrix.
   SparseMatrix jacobian(double cj, const double* y) const {
     std::vector<Triplet> trip = base_trip;
-    trip.reserve(base_trip.size() + cj_trip.size() + 64);
+    trip.reserve(base_trip.size() + k_trip.size() + cj_trip.size() + 64);
+    if (elastic)
+      elastic->add_tangent(CMap(y, n), 1.0, n, 0, trip);
+    else
+      trip.insert(trip.end(), k_trip.begin(), k_trip.end());
     for (const Triplet& t : cj_trip) trip.emplace_back(t.row(), t.col(), cj * t.value());
     for (int i = 0; i < nc; ++i) {
       const ContactReading r = read(i, y);
@@ -415,6 +429,8 @@ void PenaltyIda::start(double t0, const Eigen::VectorXd& U0, const Eigen::Vector
   }
   I.t_now = t0;
 }
+
+void PenaltyIda::set_elastic(const ElasticForce* elastic) { impl_->elastic = elastic; }
 
 void PenaltyIda::set_load(const Eigen::VectorXd& F) {
   if (F.size() != 0 && F.size() != impl_->n) throw std::invalid_argument("PenaltyIda::set_load: wrong size");

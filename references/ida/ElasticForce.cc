@@ -29,8 +29,7 @@ Mat6 local_from_global(double beta) {
 
 }  // namespace
 
-ElasticForce::ElasticForce(const Model& model, const std::vector<bool>& rotating) {
-  K_linear_ = model.K();
+ElasticForce::ElasticForce(const Model& model, const std::vector<bool>& rotating) : K_linear_(&model.K()) {
   if (static_cast<int>(rotating.size()) != model.num_bodies())
     throw std::invalid_argument("ElasticForce: one rotating flag per body");
   const auto& list = model.elements();
@@ -57,9 +56,13 @@ ElasticForce::ElasticForce(const Model& model, const std::vector<bool>& rotating
     for (int i = 0; i < 6; ++i)
       for (int j = 0; j < 6; ++j)
         if (el.eq(i) >= 0 && el.eq(j) >= 0) minus.emplace_back(el.eq(i), el.eq(j), -k0(i, j));
-    SparseMatrix D(K_linear_.rows(), K_linear_.cols());
+    if (elements_.empty()) {
+      K_own_ = model.K();
+      K_linear_ = &K_own_;
+    }
+    SparseMatrix D(K_own_.rows(), K_own_.cols());
     D.setFromTriplets(minus.begin(), minus.end());
-    K_linear_ += D;
+    K_own_ += D;
     elements_.push_back(el);
   }
 }
@@ -86,7 +89,7 @@ double ElasticForce::rigid_rotation(int k, const Eigen::Ref<const Eigen::VectorX
 }
 
 void ElasticForce::apply(const Eigen::Ref<const Eigen::VectorXd>& U, Eigen::VectorXd& f) const {
-  f = K_linear_ * U;
+  f = *K_linear_ * U;
   for (const Element& el : elements_) {
     const Frame fr = frame(el, U);
     Vec6 fl = el.k_local * fr.d;
@@ -103,8 +106,8 @@ void ElasticForce::apply(const Eigen::Ref<const Eigen::VectorXd>& U, Eigen::Vect
 
 void ElasticForce::add_tangent(const Eigen::Ref<const Eigen::VectorXd>& U, double scale, int row0, int col0,
                                std::vector<Eigen::Triplet<double>>& out) const {
-  for (int k = 0; k < K_linear_.outerSize(); ++k)
-    for (SparseMatrix::InnerIterator it(K_linear_, k); it; ++it)
+  for (int k = 0; k < K_linear_->outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(*K_linear_, k); it; ++it)
       out.emplace_back(row0 + it.row(), col0 + it.col(), scale * it.value());
   for (const Element& el : elements_) {
     const Frame fr = frame(el, U);
@@ -117,7 +120,7 @@ void ElasticForce::add_tangent(const Eigen::Ref<const Eigen::VectorXd>& U, doubl
 }
 
 double ElasticForce::energy(const Eigen::Ref<const Eigen::VectorXd>& U) const {
-  double w = 0.5 * U.dot(K_linear_ * U);
+  double w = 0.5 * U.dot(*K_linear_ * U);
   for (const Element& el : elements_) {
     const Frame fr = frame(el, U);
     w += 0.5 * fr.d.dot(el.k_local * fr.d);

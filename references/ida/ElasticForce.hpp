@@ -31,6 +31,8 @@ class ElasticForce {
   /// @param model the assembled model (frame layout when some body rotates)
   /// @param rotating one flag per body
   ElasticForce(const Model& model, const std::vector<bool>& rotating);
+  ElasticForce(const ElasticForce&) = delete;
+  ElasticForce& operator=(const ElasticForce&) = delete;
   /// @brief f = f_int(U) (N, N m), f resized to the model's size.
   void apply(const Eigen::Ref<const Eigen::VectorXd>& U, Eigen::VectorXd& f) const;
   /// @brief Adds the tangent df_int/dU at U, scaled by `scale`, as triplets at (row0 + i, col0 + j).
@@ -59,7 +61,8 @@ class ElasticForce {
     Eigen::Matrix<double, 6, 6> T;
   };
   Frame frame(const Element& el, const Eigen::Ref<const Eigen::VectorXd>& U) const;
-  SparseMatrix K_linear_;  ///< K less the corotational elements' reference stiffness
+  const SparseMatrix* K_linear_;  ///< the model's K, or K_own_ when some element is corotational
+  SparseMatrix K_own_;            ///< K less the corotational elements' reference stiffness
   std::vector<Element> elements_;
 };
 

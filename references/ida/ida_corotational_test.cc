@@ -24,6 +24,7 @@
 
 #include <references/ida/solve.hpp>
 #include <solver/paper/solve.hpp>
+#include <solver/record/output_files.hpp>
 #include <solver/scene/scene_io.hpp>
 #include <solver/testing/test_scenes.hpp>
 
@@ -56,6 +57,20 @@ TEST(IdaCorotational, RotatingStrikerIsThePapersCorotationalAnswerNotTheLinearOn
   // mass is 1.2 kg, so 0.005 N s of impulse moves it by 0.004 m/s).
   for (int c = 0; c < 2; ++c)
     EXPECT_NEAR(ida.final_velocity.at("A")[c], paper.final_velocity.at("A")[c], 5e-3) << "component " << c;
+}
+
+// summary.json states the kinematics IDA ran: corotational with lumped mass; with consistent mass
+// (which IDA does not rotate) linear, though the scene asks for corotational.
+TEST(IdaCorotational, SummaryStatesTheKinematicsThatRan) {
+  const std::vector<std::string> brief = {"time.end=0.3"};
+  const Scene lumped = rotation(brief);
+  const SimulationResult a = ida::solve(lumped);
+  EXPECT_EQ(summary_json(lumped, a)["settings"]["model"]["kinematics"], "corotational");
+  EXPECT_EQ(a.assumed.at("ida.kinematics").rfind("corotational", 0), 0u);
+  const Scene consistent = rotation({"time.end=0.3", "model.mass=consistent"});
+  const SimulationResult b = ida::solve(consistent);
+  EXPECT_EQ(summary_json(consistent, b)["settings"]["model"]["kinematics"], "linear");
+  EXPECT_EQ(b.assumed.at("ida.kinematics").rfind("linear", 0), 0u);
 }
 
 }  // namespace

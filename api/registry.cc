@@ -53,7 +53,9 @@ std::deque<Method> built_in() {
   ida.name = "ida";
   ida.summary = "SUNDIALS IDA with penalty contact on the same beam model (references/ida/)";
   ida.options_table = "ida";
-  ida.accepts.search = false;  // a corotational scene runs in global axes (said in `assumed`)
+  // No contact search; a corotational scene runs IDA's own corotational elements (lumped mass;
+  // with consistent mass in global axes, said in `assumed` and settings.model.kinematics).
+  ida.accepts.search = false;
   ida.solve = [](const Scene& scene, const Method::Request&) { return ida::solve(scene); };
   t.push_back(ida);
 #endif

@@ -75,8 +75,9 @@ struct PenaltyIda::Impl {
   std::vector<ContactEvent> events;
   IdaCounters done;  // counters of finished segments (IDAReInit zeroes IDA's own)
   Messages messages;
-  double released_energy = 0.0;  // J, spring energy (kn g^2/2) left in the penalty at releases
-  Vec load;                      // constant external load F, empty for none
+  double released_energy = 0.0;           // J, spring energy (kn g^2/2) left in the penalty at releases
+  Vec load;                               // constant external load F, empty for none
+  const ElasticForce* elastic = nullptr;  // f_int(U) and its tangent; null: K U
 
   SUNContext ctx = nullptr;
   N_Vector yy = nullptr, yp = nullptr;
@@ -85,8 +86,9 @@ struct PenaltyIda::Impl {
   void* mem = nullptr;
   double t_now = 0.0;
 
-  // Sparse Jacobian work: base triplets ([0 -I; K C]), the cj-scaled ones ([I 0; 0 M]).
-  std::vector<Triplet> base_trip, cj_trip;
+  // Sparse Jacobian work: base triplets ([0 -I; K C]), the cj-scaled ones ([I 0; 0 M]); with an
+  // elastic force, K's place takes its tangent at the current U (between id_trip and c_trip).
+  std::vector<Triplet> base_trip, id_trip, c_trip, cj_trip;
   std::vector<sunindextype> last_ptr, last_idx;
 
   Impl(const SparseMatrix& M_, const SparseMatrix& K_, const SparseMatrix& C_,
@@ -107,6 +109,7 @@ struct PenaltyIda::Impl {
     phase.assign(nc, Phase::kOpen);
     for (int i = 0; i < n; ++i) {
       base_trip.emplace_back(i, n + i, -1.0);
+      id_trip.emplace_back(i, n + i, -1.0);
       cj_trip.emplace_back(i, i, 1.0);
     }
     // Quadrature rows F_q = Q' - q(U, V): their coupling to U, V is left out of the Jacobian
@@ -116,8 +119,10 @@ struct PenaltyIda::Impl {
       for (SparseMatrix::InnerIterator it(K, k); it; ++it)
         base_trip.emplace_back(n + it.row(), it.col(), it.value());
     for (int k = 0; k < C.outerSize(); ++k)
-      for (SparseMatrix::InnerIterator it(C, k); it; ++it)
+      for (SparseMatrix::InnerIterator it(C, k); it; ++it) {
         base_trip.emplace_back(n + it.row(), n + it.col(), it.value());
+        c_trip.emplace_back(n + it.row(), n + it.col(), it.value());
+      }
     for (int k = 0; k < M.outerSize(); ++k)
       for (SparseMatrix::InnerIterator it(M, k); it; ++it)
         cj_trip.emplace_back(n + it.row(), n + it.col(), it.value());
@@ -130,6 +135,14 @@ struct PenaltyIda::Impl {
     if (yp) N_VDestroy(yp);
     if (yy) N_VDestroy(yy);
     if (ctx) SUNContext_Free(&ctx);
+  }
+
+  /// The internal force f_int(U): K U, or the elastic force's.
+  Vec internal(const CMap& U) const {
+    if (!elastic) return K * U;
+    Vec f;
+    elastic->apply(U, f);
+    return f;
   }
 
   /// Contact reading for displacement U and velocity V.
@@ -173,7 +186,7 @@ struct PenaltyIda::Impl {
     Vec f;
     contact_force(y, f);
     if (load.size()) f += load;
-    const Vec acc = solve_mass(f - K * U - C * V);
+    const Vec acc = elastic ? solve_mass(f - internal(U) - C * V) : solve_mass(f - K * U - C * V);
     double* p = N_VGetArrayPointer(yp);
     MMap(p, n) = V;
     MMap(p + n, n) = acc;
@@ -186,7 +199,10 @@ struct PenaltyIda::Impl {
     contact_force(y, f);
     if (load.size()) f += load;
     MMap(res, n) = Ud - V;
-    MMap(res + n, n) = M * Vd + C * V + K * U - f;
+    if (elastic)
+      MMap(res + n, n) = M * Vd + C * V + internal(U) - f;
+    else
+      MMap(res + n, n) = M * Vd + C * V + K * U - f;
     quad_rhs(y, res + 2 * n);
     for (int k = 0; k < nq; ++k) res[2 * n + k] = ydot[2 * n + k] - res[2 * n + k];
   }
@@ -240,8 +256,15 @@ struct PenaltyIda::Impl {
 
   /// J = dF/dy + cj dF/dy' as a compressed sparse matrix.
   SparseMatrix jacobian(double cj, const double* y) const {
-    std::vector<Triplet> trip = base_trip;
-    trip.reserve(base_trip.size() + cj_trip.size() + 64);
+    std::vector<Triplet> trip;
+    if (elastic) {
+      trip = id_trip;
+      elastic->add_tangent(CMap(y, n), 1.0, n, 0, trip);
+      trip.insert(trip.end(), c_trip.begin(), c_trip.end());
+    } else {
+      trip = base_trip;
+    }
+    trip.reserve(trip.size() + cj_trip.size() + 64);
     for (const Triplet& t : cj_trip) trip.emplace_back(t.row(), t.col(), cj * t.value());
     for (int i = 0; i < nc; ++i) {
       const ContactReading r = read(i, y);
@@ -415,6 +438,8 @@ void PenaltyIda::start(double t0, const Eigen::VectorXd& U0, const Eigen::Vector
   }
   I.t_now = t0;
 }
+
+void PenaltyIda::set_elastic(const ElasticForce* elastic) { impl_->elastic = elastic; }
 
 void PenaltyIda::set_load(const Eigen::VectorXd& F) {
   if (F.size() != 0 && F.size() != impl_->n) throw std::invalid_argument("PenaltyIda::set_load: wrong size");

@@ -18,6 +18,7 @@
 #include <Eigen/Sparse>
 
 #include <references/ida/ContactKinematics.hpp>
+#include <references/ida/ElasticForce.hpp>
 #include <references/ida/penalty_law.hpp>
 #include <solver/model/Model.hpp>
 
@@ -71,6 +72,9 @@ class PenaltyIda {
   PenaltyIda(const PenaltyIda&) = delete;
   PenaltyIda& operator=(const PenaltyIda&) = delete;
 
+  /// @brief Replaces K U by elastic's f_int(U) (and K's Jacobian by its tangent); call before
+  /// start(). The object must outlive the integrator; null restores K U.
+  void set_elastic(const ElasticForce* elastic);
   /// @brief The constant external load F (one entry per equation, N); call before start().
   void set_load(const Eigen::VectorXd& F);
   /// @brief Sets the initial state (all contacts open: the initial gaps must be positive).

@@ -3,7 +3,7 @@
 // persistent contact). On S1-S4 at the same mesh, paper and IDA must agree on impulse, contact
 // intervals and the contact points' displacement histories within bounds that follow from the
 // paper's first-order event timing, and the difference must shrink as the paper's dt falls.
-// S4 runs both methods with linear kinematics (the IDA reference has no corotation).
+// S4 runs both methods with linear kinematics here (the corotational striker: ida_corotational_test).
 //
 // Built twice: the quick variant (paper dt0, dt0/2, dt0/4, shortened end times) and, with
 // BEAMIMPACT_IDA_FULL, the "full" variant (dt0 ... dt0/16, the scenes' end times).

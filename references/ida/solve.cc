@@ -45,18 +45,34 @@ Vec2 lerp(const Vec2& a, const Vec2& b, double w) {
   return {(1 - w) * a[0] + w * b[0], (1 - w) * a[1] + w * b[1]};
 }
 
-/// The effects of the scene, derived as for every method; the IDA reference keeps global axes,
-/// so it never runs the corotational rebuild (said in `assumed`).
-Effects ida_effects(const Scene& scene, std::map<std::string, std::string>& assumed) {
+/// The effects of the scene, derived as for every method. The bodies that the scene makes
+/// corotational run the IDA reference's own corotational elements (ElasticForce) with lumped
+/// mass, the same in every frame; with consistent mass (a mass that turns with the element) the
+/// IDA reference keeps global axes. Either is said in `assumed` and in r.kinematics.
+Effects ida_effects(const Scene& scene, SimulationResult& r) {
   Effects e = derive_effects(scene);
+  const std::string contact =
+      "the contact keeps the target's reference normal and a sliding interpolated struck point";
+  if (e.corotational && scene.model.mass == MassKind::kLumped) {
+    r.kinematics = "corotational";
+    r.assumed["ida.kinematics"] =
+        "corotational: each element of a rotating body has its rigid rotation taken out and its local linear "
+        "stiffness applied in the rotated frame (ElasticForce); lumped mass; " +
+        contact;
+    return e;
+  }
+  if (scene.model.kinematics == Kinematics::kCorotational)
+    r.assumed["ida.kinematics"] =
+        e.corotational
+            ? "linear: the scene asks for corotational with consistent mass, which the IDA reference "
+              "does not rotate; it keeps global axes, and " +
+                  contact
+            : "linear: no body can rotate (corotational changes nothing); " + contact;
+  else
+    r.assumed["ida.kinematics"] = "linear: " + contact;
+  r.kinematics = "linear";
   e.corotational = false;
   e.rotating.assign(scene.bodies.size(), false);
-  assumed["ida.kinematics"] =
-      scene.model.kinematics == Kinematics::kCorotational
-          ? "linear: the scene asks for corotational, the IDA reference keeps global axes, the target's "
-            "reference normal and a sliding interpolated struck point; large-rotation agreement with the "
-            "paper's corotational run is not expected"
-          : "linear (reference normal, sliding interpolated struck point)";
   return e;
 }
 
@@ -160,8 +176,8 @@ IdaSettings make_settings(const IdaOptions& opt, int n, SimulationResult& r) {
 class Observer {
  public:
   Observer(const Model& model, const PenaltyIda& ida, const PenaltyContacts& contacts,
-           const Eigen::VectorXd& load)
-      : model_(model), ida_(ida), contacts_(contacts), load_(load) {}
+           const Eigen::VectorXd& load, const ElasticForce& elastic)
+      : model_(model), ida_(ida), contacts_(contacts), load_(load), elastic_(elastic) {}
 
   Vec2 momentum(const Eigen::Ref<const Eigen::VectorXd>& V) const {
     Vec2 p{0.0, 0.0};
@@ -198,7 +214,7 @@ class Observer {
       row.contacts.push_back(s);
     }
     row.kinetic = 0.5 * V.dot(model_.M() * V);
-    row.strain = 0.5 * U.dot(model_.K() * U);  // + the penalty springs
+    row.strain = elastic_.energy(U);  // + the penalty springs
     for (int i = 0; i < static_cast<int>(contacts_.laws.size()); ++i)
       row.strain += ida_.contact(i).penalty_energy;
     row.dissipated = ida_.dissipated();
@@ -212,6 +228,7 @@ class Observer {
   const PenaltyIda& ida_;
   const PenaltyContacts& contacts_;
   const Eigen::VectorXd& load_;
+  const ElasticForce& elastic_;
 };
 
 /// Contact i's intervals from the located onset and release events (exact switch times), each
@@ -421,7 +438,7 @@ void summarize_contacts(const PenaltyIda& ida, const PenaltyContacts& contacts,
 SimulationResult solve(const Scene& scene) {
   ResultRecorder rec(scene, "ida", ContactSampling::kAdaptiveSteps);
   SimulationResult& r = rec.result();
-  const Effects effects = ida_effects(scene, r.assumed);
+  const Effects effects = ida_effects(scene, r);
   const Model model(scene, effects.bending);
   const int n = model.size();
 
@@ -441,11 +458,13 @@ SimulationResult solve(const Scene& scene) {
   const IdaSettings settings = make_settings(opt, n, r);
 
   PenaltyIda ida(model.M(), model.K(), C, kinematics, contacts.laws, settings);
+  const ElasticForce elastic(model, effects.rotating);
+  if (elastic.corotational()) ida.set_elastic(&elastic);
   const Eigen::VectorXd load = effects.loads ? load_vector(model, scene) : Eigen::VectorXd();
   ida.set_load(load);
   const Eigen::VectorXd V0 = model.initial_velocity();
   ida.start(0.0, Eigen::VectorXd::Zero(n), V0);
-  const Observer obs(model, ida, contacts, load);
+  const Observer obs(model, ida, contacts, load, elastic);
   rec.set_load_force(net_load_force(model, load));
   rec.track_momentum(obs.momentum(V0), 0.0);
   std::ostringstream rule;

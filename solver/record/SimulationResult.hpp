@@ -69,7 +69,10 @@ struct SimulationResult {
   double wall_seconds = 0.0;
   std::vector<std::string> effects;            ///< e.g. {"axial"} or {"axial", "bending", "friction"}
   std::map<std::string, std::string> assumed;  ///< method-level defaults (merged with the scene's)
-  std::vector<HistoryRow> history;             ///< rows to write, already thinned by output_every
+  /// @brief The kinematics the method ran ("linear" or "corotational"), when it is not the scene's
+  /// (summary.json settings.model.kinematics states it); empty: the scene's.
+  std::string kinematics;
+  std::vector<HistoryRow> history;  ///< rows to write, already thinned by output_every
   std::vector<ContactSummary> contacts;
   std::map<std::string, Vec2> final_velocity;       ///< body name -> centre-of-mass velocity, m/s
   double energy_initial = 0.0, energy_final = 0.0;  ///< J, kinetic + strain

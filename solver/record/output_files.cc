@@ -81,7 +81,7 @@ nlohmann::json summary_json(const Scene& scene, const SimulationResult& r) {
                    {"model",
                     {{"mass", to_string(scene.model.mass)},
                      {"rotary_inertia", to_string(scene.model.rotary_inertia)},
-                     {"kinematics", to_string(scene.model.kinematics)},
+                     {"kinematics", r.kinematics.empty() ? to_string(scene.model.kinematics) : r.kinematics},
                      {"rayleigh_mass", scene.model.rayleigh_mass},
                      {"rayleigh_stiffness", scene.model.rayleigh_stiffness}}},
                    {"output",

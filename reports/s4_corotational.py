@@ -1,0 +1,114 @@
+#!/usr/bin/env python3
+"""@brief S4's corotational striker checked by an independent reference: the impulse difference
+corotational minus linear kinematics, from the paper integrator and from the IDA reference (its own
+corotational elements, references/ida/ElasticForce.hpp), each at its converged settings.
+
+Ladders on the scene's own mesh (the settings of reports/s4_settled.py):
+- paper: the automatic step at fractions 1/2 ... 1/64 of the critical step, corotational (as
+  shipped) and linear;
+- ida: penalty 1e2, 1e3, 1e4, 1e5 EA/le, rtol 1e-10, atol 1e-13, friction regularised at 1e-5 m/s,
+  corotational and linear.
+For each rung the relative difference (I_corotational - I_linear) / I_linear of the total normal
+impulse; each ladder of differences is read in its asymptotic range by s4_settled.ladder_limit
+(step ladder from the fine end, penalty ladder from the soft end). The two methods agree when their
+limits differ by less than the sum of their uncertainties (plus a roundoff floor of 1e-6).
+IDA's penalty ladder is read from its soft end while each rung moves the difference by less than
+the one before: on S4 at 45 and 60 degrees the rungs from 1e4 EA/le on chatter (their impulse moves
+by tenths of a percent under roundoff-level changes), so the limit is the last rung before them.
+
+Usage: s4_corotational.py [--build build] [--out reports/s4] [--runs DIR] [--jobs 2] [--angles 45,60,90]
+Writes OUT/corotational.json. Exit 2 on bad input, 1 when a run fails.
+"""
+import argparse
+import concurrent.futures
+import datetime
+import os
+import sys
+
+from report_files import write_json_atomic
+from s4_settled import IDA_TIGHT, LINEAR, ROOT, fail, ladder_limit, run, scene_path, version
+
+PAPER_FRACTIONS = [1 / 2 ** k for k in range(1, 7)]  # 1/2 ... 1/64 of the critical step
+IDA_PENALTIES = [1e2, 1e3, 1e4, 1e5]                 # EA/le
+ROUNDOFF = 1e-6  # relative: two runs of one model with no rotation (S4-90) differ by 7e-9
+
+
+def ladders(exe, angle, runs, pool):
+    """Every run of one angle, submitted to the pool: {(method, kinematics): [futures]}."""
+    scene = scene_path(angle)
+    d = os.path.join(runs, f"s4_{angle}")
+    jobs = {}
+    for kin, sets in (("corotational", []), ("linear", [LINEAR])):
+        jobs[("paper", kin)] = [pool.submit(run, exe, scene, "paper", f"{d}/paper_{kin}_{f:g}",
+                                            sets + [f"time.fraction={f!r}"]) for f in PAPER_FRACTIONS]
+        jobs[("ida", kin)] = [pool.submit(run, exe, scene, "ida", f"{d}/ida_{kin}_{k:g}",
+                                          sets + [f"ida.kn_factor={k:g}"] + IDA_TIGHT) for k in IDA_PENALTIES]
+    return jobs
+
+
+def compare(values):
+    """Per method the ladders of impulse and of the relative corotational-minus-linear difference,
+    each with its limit; then whether the two methods' limits of the difference agree."""
+    out = {}
+    for method, ratio, fine_end in (("paper", 2.0, True), ("ida", 10.0, False)):
+        corot = [r["impulse_normal"] for r in values[(method, "corotational")]]
+        linear = [r["impulse_normal"] for r in values[(method, "linear")]]
+        rel = [(c - l) / l for c, l in zip(corot, linear)]
+        out[method] = {"impulse_corotational": corot, "impulse_linear": linear,
+                       "impacts_corotational": [r["impacts"] for r in values[(method, "corotational")]],
+                       "wall_seconds_corotational": [r["wall_seconds"] for r in values[(method, "corotational")]],
+                       "relative_difference": rel,
+                       "limit": ladder_limit(rel, ratio, from_fine_end=fine_end)}
+    p, i = out["paper"]["limit"], out["ida"]["limit"]
+    if p["limit"] is not None and i["limit"] is not None:
+        out["paper_minus_ida"] = p["limit"] - i["limit"]
+        out["bound"] = p["uncertainty"] + i["uncertainty"] + ROUNDOFF
+        out["agree"] = abs(out["paper_minus_ida"]) <= out["bound"]
+    else:
+        out["agree"] = None
+    return out
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("--build", default=os.path.join(ROOT, "build"))
+    p.add_argument("--out", default=os.path.join(ROOT, "reports", "s4"))
+    p.add_argument("--runs", default=None, help="run folders (default OUT/runs, not committed)")
+    p.add_argument("--jobs", type=int, default=2)
+    p.add_argument("--angles", default="45,60,90")
+    a = p.parse_args()
+    exe = os.path.join(a.build, "beamimpact")
+    if not os.access(exe, os.X_OK):
+        fail(f"{exe}: no beamimpact program (build it: bash tools/build.sh beamimpact)")
+    if a.jobs < 1:
+        fail(f"--jobs: expected 1 or more, got {a.jobs}")
+    angles = [x.strip() for x in a.angles.split(",")]
+    for x in angles:
+        if x not in ("45", "60", "90"):
+            fail(f"--angles: expected 45, 60 or 90, got '{x}'")
+    runs = a.runs or os.path.join(a.out, "runs")
+    started = datetime.datetime.now(datetime.timezone.utc)
+    with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
+        submitted = {x: ladders(exe, x, runs, pool) for x in angles}
+        values = {x: {k: [f.result() for f in fs] for k, fs in j.items()} for x, j in submitted.items()}
+    doc = {"command": ("/usr/bin/python3 reports/s4_corotational.py " + " ".join(sys.argv[1:])).strip(),
+           "version": version(exe), "made": started.strftime("%Y-%m-%dT%H:%M:%SZ"),
+           "scenes": {x: os.path.relpath(scene_path(x), ROOT) for x in angles},
+           "quantity": "(I_corotational - I_linear) / I_linear, I the total normal impulse (N s)",
+           "ladders": {"paper_fractions": PAPER_FRACTIONS, "ida_penalty_EA_per_le": IDA_PENALTIES,
+                       "ida_settings": IDA_TIGHT},
+           "rule": "agree: |paper limit - ida limit| <= the sum of their uncertainties (s4_settled.ladder_limit)",
+           "angles": {x: compare(values[x]) for x in angles}}
+    write_json_atomic(os.path.join(a.out, "corotational.json"), doc)
+    for x in angles:
+        c = doc["angles"][x]
+        line = []
+        for m in ("paper", "ida"):
+            lim = c[m]["limit"]
+            line.append(f"{m} {lim['limit']:+.4%} +- {lim['uncertainty']:.2%}" if lim["limit"] is not None
+                        else f"{m} (no limit)")
+        print(f"S4-{x} corotational - linear impulse: " + ", ".join(line) + f"; agree: {c['agree']}")
+
+
+if __name__ == "__main__":
+    main()

@@ -98,6 +98,7 @@ def data_files():
                                                        "verification/cards.toml"])]
     for ref in sorted(p.parent.name for p in (ROOT / "references").glob("*/run.py")):
         out += _files(f"references/{ref}", "*.py")
+    out += _files("references/common", "*.py")  # what the Python references share (contact intervals)
     out += [("share/beamimpact/examples/external_solver", ["examples/external_solver/penalty_central.py"])]
     return out
 

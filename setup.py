@@ -100,6 +100,7 @@ def data_files():
                                                        "verification/cards.toml"])]
     for ref in sorted(p.parent.name for p in (ROOT / "references").glob("*/run.py")):
         out += _files(f"references/{ref}", "*.py")
+    out += _files("references/common", "*.py")  # what the Python references share (contact intervals)
     out += [("share/beamimpact/examples/external_solver", ["examples/external_solver/penalty_central.py"])]
     # The page generator that score and conform run (reports/page_files.txt, as cmake --install ships it).
     pages = [line.strip() for line in (ROOT / "reports/page_files.txt").read_text().splitlines()

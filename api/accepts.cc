@@ -97,9 +97,16 @@ void check_accepts(const Method& m, const Scene& scene, const std::string& mesh)
   for (std::size_t i = 0; i < scene.contacts.size(); ++i) {
     const Contact& c = scene.contacts[i];
     const std::string key = "contacts[" + std::to_string(i) + "]";
-    if (!a.friction && c.friction > 0.0 && scene.effects.friction.value_or(true))
-      refuse(m, scene, key + ".friction", "friction (it does not model friction)", "friction = 0",
-             "friction");
+    if (!a.friction && c.friction > 0.0 && scene.effects.friction.value_or(true)) {
+      const bool rigid_pair = scene.bodies[static_cast<std::size_t>(c.striker)].rigid &&
+                              scene.bodies[static_cast<std::size_t>(c.target)].rigid;
+      if (!a.rigid_friction)
+        refuse(m, scene, key + ".friction", "friction (it does not model friction)", "friction = 0",
+               "friction");
+      if (!rigid_pair)
+        refuse(m, scene, key + ".friction", "friction where a body deforms (only between rigid bodies)",
+               "friction = 0, or both bodies rigid", "friction");
+    }
     if (!a.search && c.search)
       refuse(m, scene, key + ".node", "a contact search (node = \"all\")",
              "one declared node: \"start\", \"end\" or a node index", "search");

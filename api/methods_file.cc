@@ -100,27 +100,16 @@ std::vector<std::string> read_command(TableReader& r, const std::string& key, co
 
 Method::Accepts read_accepts(TableReader& top) {
   Method::Accepts a;
-  // Every key left out is false: one list of (key, field), so that no key can land in another's field.
-  const std::pair<const char*, bool Method::Accepts::*> keys[] = {
-      {"dt", &Method::Accepts::dt},
-      {"mesh_factor", &Method::Accepts::mesh_factor},
-      {"friction", &Method::Accepts::friction},
-      {"rotation", &Method::Accepts::rotation},
-      {"rigid", &Method::Accepts::rigid},
-      {"search", &Method::Accepts::search},
-      {"several_contacts", &Method::Accepts::several_contacts},
-      {"timoshenko", &Method::Accepts::timoshenko},
-      {"hertz", &Method::Accepts::hertz},
-      {"bending", &Method::Accepts::bending},
-      {"node_to_surface", &Method::Accepts::node_to_surface},
-      {"loads", &Method::Accepts::loads},
-  };
+  // Every key left out is false.
+  const std::vector<AcceptsKey>& keys = accepts_keys();
   for (const auto& [key, field] : keys) a.*field = false;
   const toml::node* n = top.raw("accepts");
   if (!n) return a;
   if (!n->as_table()) top.fail("accepts", "expected a table { dt = true, friction = false, ... }");
   TableReader r(*n->as_table(), top.file(), top.path("accepts"), nullptr);
   for (const auto& [key, field] : keys) a.*field = r.boolean_or(key, false);
+  // Friction anywhere includes friction between rigid bodies, unless the file says otherwise.
+  a.rigid_friction = r.boolean_or("rigid_friction", a.friction);
   r.finish();
   return a;
 }

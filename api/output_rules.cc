@@ -226,8 +226,9 @@ std::string interval_problem(const std::string& label, const std::string& col,
       return fmt::format(
           "{}.intervals[{}] = [{:.9g}, {:.9g}] s in summary.json, [{:.9g}, {:.9g}] s in "
           "history.csv ({} > 0); expected the start within one row spacing ({:.3g} s), the end "
-          "within one row spacing plus the merge gap of 3.5 row spacings ({:.3g} s)",
-          label, i, iv[i][0], iv[i][1], rows[first].start, rows[last].end, col, h, gap);
+          "within one row spacing plus the merge gap of {} row spacings ({:.3g} s)",
+          label, i, iv[i][0], iv[i][1], rows[first].start, rows[last].end, col, h,
+          merge_gap_of(kMergeSteps, 1.0), gap);
     if (J.empty()) continue;
     const std::size_t lo = rows[first].first > 0 ? rows[first].first - 1 : 0;
     const std::size_t hi = std::min(rows[last].last + 1, t.size() - 1);
@@ -275,11 +276,11 @@ void check_contact(Verdicts& check, const fs::path& dir, const Json& c, const Hi
     return;
   std::vector<std::array<double, 2>> iv;
   std::vector<double> J;
-  // The rows merge phases closer than 3.5 row spacings (ContactIntervals' rule). A row can show a
-  // phase one spacing longer at each end than the steps did (a row's R stands for the step after
+  // The rows merge phases closer than the default merge gap of a row spacing (ContactIntervals.hpp). A row
+  // can show a phase one spacing longer at each end than the steps did (a row's R stands for the step after
   // its time: docs/protocol.md), so two phases the method's own rule kept apart can merge in the
   // rows: the summary's intervals are merged with two row spacings more before they are compared.
-  const double gap = 3.5 * h_max;
+  const double gap = default_merge_gap(h_max);
   if (const std::string why = summary_intervals(c, gap + 2.0 * h_max, iv, J); !why.empty()) {
     check("consistency", sum, false, label + ".intervals: " + why);
     return;

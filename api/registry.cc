@@ -7,58 +7,22 @@
 
 #include <api/child_process.hpp>
 #include <api/methods_file.hpp>
-#include <solver/paper/solve.hpp>
+#include <solver/paper/method.hpp>
 #include <solver/util/InputError.hpp>
-#ifdef BEAMIMPACT_HAVE_exact
-#include <references/exact/solve.hpp>
-#endif
-#ifdef BEAMIMPACT_HAVE_ida
-#include <references/ida/solve.hpp>
-#endif
 
 namespace beamimpact {
+
+/// Appends the entry of every reference registered with beamimpact_method() (each written in its
+/// own folder, references/NAME/method.cc), in folder order: defined in the file api/CMakeLists.txt
+/// generates from that list.
+void add_reference_methods(std::deque<Method>& t);
+
 namespace {
 
 /// The in-process methods of this build, paper first.
 std::deque<Method> built_in() {
-  std::deque<Method> t;
-  Method paper;
-  paper.name = "paper";
-  paper.summary = "Pu & Chi (2011) explicit dynamic-contact integrator (solver/)";
-  paper.options_table = "paper";
-  paper.solve = [](const Scene& scene, const Method::Request& q) {
-    return paper::solve(scene, q.fields_dir, q.threads);
-  };
-  paper.writes_fields = true;
-  t.push_back(paper);
-#ifdef BEAMIMPACT_HAVE_exact
-  Method exact;
-  exact.name = "exact";
-  exact.summary =
-      "exact and semi-analytic solutions: d'Alembert rods, rod or Hertz ball on a simply supported beam, "
-      "rigid rod "
-      "(references/exact/)";
-  exact.options_table = "exact";
-  exact.accepts.mesh_factor = false;  // an exact solution has no mesh
-  exact.accepts.rotation = false;
-  exact.accepts.search = false;
-  exact.accepts.several_contacts = false;
-  exact.accepts.timoshenko = true;  // a rod on a Timoshenko beam only (its recogniser refuses the rest)
-  exact.accepts.hertz = true;       // a rigid striker on a beam only (its recogniser refuses the rest)
-  exact.solve = [](const Scene& scene, const Method::Request&) { return exact::solve(scene); };
-  t.push_back(exact);
-#endif
-#ifdef BEAMIMPACT_HAVE_ida
-  Method ida;
-  ida.name = "ida";
-  ida.summary = "SUNDIALS IDA with penalty contact on the same beam model (references/ida/)";
-  ida.options_table = "ida";
-  // No contact search; a corotational scene runs IDA's own corotational elements (lumped mass;
-  // with consistent mass in global axes, said in `assumed` and settings.model.kinematics).
-  ida.accepts.search = false;
-  ida.solve = [](const Scene& scene, const Method::Request&) { return ida::solve(scene); };
-  t.push_back(ida);
-#endif
+  std::deque<Method> t{paper::method()};
+  add_reference_methods(t);
   for (Method& m : t) m.origin = "built-in";
   return t;
 }
@@ -116,6 +80,14 @@ const Method& method(std::string_view name, const std::string& file, const std::
   throw InputError(file, key,
                    "expected a method name (" + method_names() + "), got '" + std::string(name) + "'");
 }
+
+int thread_limit() {
+  int most = 1;
+  for (const Method& m : methods()) most = std::max(most, m.max_threads);
+  return most;
+}
+
+const Method& default_method() { return methods().front(); }
 
 std::string unavailable(const Method& m) {
   if (m.in_process() || m.check.empty()) return "";

@@ -5,7 +5,6 @@
 #include <api/accepts.hpp>
 #include <api/external_method.hpp>
 #include <api/registry.hpp>
-#include <solver/integrator/ExplicitContactIntegrator.hpp>
 #include <solver/record/FieldWriter.hpp>
 #include <solver/record/output_files.hpp>
 #include <solver/scene/run_cost.hpp>
@@ -40,9 +39,9 @@ void remove_fields(const std::filesystem::path& out) {
 
 /// Every run passes here (its directory locked): the method's acceptance, then the in-process
 /// solver (given the run's thread count, 0 when not asked) or the program.
-SimulationResult run_method(const Scene& scene, const Method& m,
-                            const std::optional<std::filesystem::path>& out, const std::string& mesh,
-                            const std::optional<int>& threads) {
+SimulationResult run_method(const Scene& scene, const Method& m, const RunOptions& o,
+                            const std::string& mesh) {
+  const std::optional<std::filesystem::path>& out = o.out;
   if (out) remove_run_outputs(*out);
   check_accepts(m, scene, mesh);
   if (!m.in_process()) {
@@ -56,11 +55,11 @@ SimulationResult run_method(const Scene& scene, const Method& m,
   }
   // Before anything is allocated: refuse a run far beyond the ordinary (the estimate is printed).
   const RunCost cost = check_run_cost(scene, planned_dt(scene));
-  // The run's memory from a heap that keeps it for the next run and faults it in by huge pages
-  // (the estimate is generous: what it reserves beyond the run's needs stays untouched).
-  reserve_heap(cost.bytes);
+  // Asked for: the run's memory from a heap that keeps it for the next run and faults it in by
+  // huge pages (the estimate is generous: what it reserves beyond the run's needs stays untouched).
+  if (o.tune_heap) reserve_heap(cost.bytes);
   Method::Request request;
-  request.threads = threads.value_or(0);
+  request.threads = o.threads.value_or(0);
   if (scene.output.fields) {
     if (!m.writes_fields)
       throw InputError(scene.file, "output.fields",
@@ -83,12 +82,12 @@ SimulationResult run_method(const Scene& scene, const Method& m,
   return r;
 }
 
-/// Refuses a thread count outside 1..kMaxThreads, naming --threads.
+/// Refuses a thread count outside 1..thread_limit() (the registry's), naming --threads.
 void check_threads(const std::optional<int>& threads, const std::string& file) {
-  if (threads && !paper::valid_thread_count(*threads))
+  if (threads && (*threads < 1 || *threads > thread_limit()))
     throw InputError(
         file, "--threads",
-        fmt::format("expected a whole number of threads 1..{}, got {}", paper::kMaxThreads, *threads));
+        fmt::format("expected a whole number of threads 1..{}, got {}", thread_limit(), *threads));
 }
 
 }  // namespace
@@ -100,7 +99,7 @@ SimulationResult run(const Scene& scene, std::string_view method_name, const Run
   check_threads(options.threads, scene.file);
   const OutputLock lock(options.out.value_or(std::filesystem::path()));
   const Method& m = method(method_name, scene.file, "--method");
-  return run_method(scene, m, options.out, "", options.threads);
+  return run_method(scene, m, options, "");
 }
 
 SimulationResult run(const std::filesystem::path& scene_file, std::string_view method_name,
@@ -123,9 +122,9 @@ SimulationResult run(const std::filesystem::path& scene_file, std::string_view m
     const Scene file = load_scene(scene_file);
     for (std::size_t i = 0; i < file.bodies.size(); ++i)
       set.push_back(fmt::format("bodies[{}].elements={}", i, file.bodies[i].elements * f));
-    return run_method(load_scene(scene_file, set), m, options.out, "", options.threads);
+    return run_method(load_scene(scene_file, set), m, options, "");
   }
-  return run_method(load_scene(scene_file, set), m, options.out, options.mesh, options.threads);
+  return run_method(load_scene(scene_file, set), m, options, options.mesh);
 }
 
 }  // namespace beamimpact

@@ -4,7 +4,7 @@
 /// write its run directory. What `beamimpact run` does, for programs that link beamimpact.
 ///
 /// @code
-///   #include <api/run.hpp>
+///   #include <beamimpact/api/run.hpp>   // installed (inside the repository: <api/run.hpp>)
 ///   const beamimpact::SimulationResult r = beamimpact::run("s1_central.toml", "paper");
 ///   std::printf("impulse %g N s\n", r.contacts[0].impulse_normal);
 /// @endcode
@@ -36,6 +36,12 @@ struct RunOptions {
   /// machine's hardware threads, 1 for a model below kThreadsMinDofs equations. The results
   /// are the same bits at any count; summary.json says how many were used ("threads").
   std::optional<int> threads = std::nullopt;
+  /// @brief The heap policy (solver/util/heap_policy.hpp), process-wide: true keeps freed blocks in
+  /// the process for the next run (glibc mallopt) and grows the heap by the run's estimated memory
+  /// in huge pages before an in-process method's set-up. False (the default): the library leaves
+  /// the process's allocator as it is. `beamimpact` turns it on for its runs; a program that
+  /// embeds the library (the Python module) decides for itself. An external method ignores it.
+  bool tune_heap = false;
 };
 
 /// @brief Runs a scene file with a method of the registry (in-process, or an external program

@@ -68,7 +68,9 @@ double timed_run(const std::string& text, const std::filesystem::path& out,
   ::sync();
   const Clock::time_point t0 = Clock::now();
   const Scene scene = load_scene_text(text, "output_benchmark.toml");
-  SimulationResult res = run(scene, "paper", RunOptions{{}, out});
+  RunOptions options{{}, out};
+  options.tune_heap = true;  // as `beamimpact run`
+  SimulationResult res = run(scene, "paper", options);
   const double t = std::chrono::duration<double>(Clock::now() - t0).count();
   if (last) *last = std::move(res);
   return t;

@@ -60,10 +60,13 @@ std::vector<std::string> overrides(long elements, double end) {
   return set;
 }
 
-/// Seconds of one whole run of the loaded scene (beamimpact::run, no output directory).
+/// Seconds of one whole run of the loaded scene (beamimpact::run, no output directory), with
+/// the heap policy `beamimpact run` turns on (RunOptions::tune_heap).
 double timed_run(const Scene& scene, SimulationResult* result = nullptr) {
+  RunOptions options;
+  options.tune_heap = true;
   const Clock::time_point t0 = Clock::now();
-  SimulationResult r = run(scene, "paper");
+  SimulationResult r = run(scene, "paper", options);
   const double t = seconds_since(t0);
   if (result) *result = std::move(r);
   return t;

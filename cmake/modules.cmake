@@ -27,7 +27,7 @@ endforeach()
 add_library(beamimpact_headers INTERFACE)
 target_include_directories(beamimpact_headers INTERFACE
   $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}> $<BUILD_INTERFACE:${BEAMIMPACT_INCLUDE_DIR}>
-  $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/beamimpact> $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
 # beamimpact_library(NAME SOURCES ... [PUBLIC libs...] [PRIVATE libs...]): a library of the
 # public API, exported as beamimpact::NAME (without the beamimpact_ prefix) and installed.
 function(beamimpact_library name)

@@ -1,5 +1,6 @@
-# cmake --install: the libraries, the public headers under include/beamimpact/ at their repository paths, the
-# `beamimpact` program, the shipped scenes and matrix, the FEniCSx script, the page generator, and a CMake package
+# cmake --install: the libraries, the public headers under include/beamimpact/ at their repository paths
+# (included as <beamimpact/api/run.hpp>), the `beamimpact` program, the shipped scenes and matrix, the
+# FEniCSx script, the page generator, and a CMake package
 # so that another project writes find_package(beamimpact) and links beamimpact::beamimpact.
 include(CMakePackageConfigHelpers)
 
@@ -36,9 +37,16 @@ while(_todo)
     endif()
   endforeach()
 endwhile()
+# Installed, each header's project includes read <beamimpact/FOLDER/...>: the one spelling a
+# consumer writes (include/ is the package's only include directory).
 foreach(_header IN LISTS _public)
   get_filename_component(_dir ${_header} DIRECTORY)
-  install(FILES ${PROJECT_SOURCE_DIR}/${_header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/beamimpact/${_dir})
+  file(READ ${PROJECT_SOURCE_DIR}/${_header} _text)
+  string(REGEX REPLACE "#include <((api|solver|references|verification)/[^>]+)>" "#include <beamimpact/\\1>"
+    _text "${_text}")
+  file(WRITE ${PROJECT_BINARY_DIR}/installed-headers/${_header} "${_text}")
+  install(FILES ${PROJECT_BINARY_DIR}/installed-headers/${_header}
+    DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/beamimpact/${_dir})
 endforeach()
 install(FILES ${BEAMIMPACT_INCLUDE_DIR}/beamimpact/version.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/beamimpact)
 # Data: scenes, matrix and methods file (share/beamimpact/verification), the FEniCSx reference script.
@@ -53,6 +61,9 @@ foreach(_run IN LISTS _python_references)
   install(DIRECTORY ${_folder} DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/references
     FILES_MATCHING PATTERN "*.py" PATTERN "tests" EXCLUDE PATTERN "__pycache__" EXCLUDE)
 endforeach()
+# What they share (the contact-interval rule), beside them.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/references/common DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/references
+  FILES_MATCHING PATTERN "*.py" PATTERN "__pycache__" EXCLUDE)
 install(FILES ${PROJECT_SOURCE_DIR}/examples/external_solver/penalty_central.py
   DESTINATION ${CMAKE_INSTALL_DATADIR}/beamimpact/examples/external_solver)
 # The page generator (reports/page_files.txt, as setup.py ships it): score and conform make their

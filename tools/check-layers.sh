@@ -4,7 +4,9 @@
 # see higher ones) and never one the row forbids ("!paper": the references never see the paper's
 # code); every include of a module names a file that exists at that path; every namespace a
 # module's file opens is the module's (or nested in it). Tests (*_test.cc) may compare methods
-# and are exempt from the layer rules, not from the path and namespace rules.
+# and are exempt from the layer rules, not from the path and namespace rules. A module's file spells
+# a project include one way only: <FOLDER/...> from the repository root (no "quoted" include, no
+# <beamimpact/...> but the generated <beamimpact/version.hpp>: that prefix is the installed layout's).
 # Usage: tools/check-layers.sh [ROOT]   Exit 1 with one line per violation.
 set -euo pipefail
 root=${1:-$(cd "$(dirname "$0")/.." && pwd)}
@@ -52,6 +54,10 @@ for module in "${modules[@]}"; do
       echo "$file: module '$module' must not include '$used' (forbidden in cmake/modules.txt)"; bad=1
     fi
   done < <(grep -HE '#include <(solver|references|api|verification)/' "${folder[$module]}"/*.cc "${folder[$module]}"/*.hpp 2>/dev/null || true)
+  while IFS= read -r hit; do
+    echo "${hit%%:*}: $(sed -E 's|^[^:]*:[0-9]+:||' <<<"$hit") does not name a module folder from the repository root (#include <FOLDER/...>)"; bad=1
+  done < <(grep -HnE '^[[:space:]]*#include ("|<beamimpact/)' "${folder[$module]}"/*.cc "${folder[$module]}"/*.hpp 2>/dev/null \
+             | grep -v '#include <beamimpact/version.hpp>' || true)
   while IFS= read -r hit; do
     file=${hit%%:*}
     ns=$(sed -E 's|^[^:]*:namespace ([A-Za-z_:]+).*|\1|' <<<"$hit")

@@ -19,6 +19,9 @@ mapfile -t installed < <(cd "$inc" && find . -name '*.hpp' -printf '%P\n' | sort
 missing=0
 for h in "${installed[@]}"; do
   while read -r dep; do
+    if [[ -f $root/$dep ]]; then  # one spelling for a consumer: <beamimpact/FOLDER/...>
+      echo "install test: $h includes <$dep>; expected <beamimpact/$dep>"; missing=1
+    fi
     if { [[ -f $root/$dep ]] && [[ ! -f $inc/$dep ]]; } ||
       { [[ $dep == beamimpact/* ]] && [[ ! -f $prefix/include/$dep ]]; }; then
       echo "install test: $h includes <$dep>, which is not installed"; missing=1
@@ -28,6 +31,10 @@ for h in "${installed[@]}"; do
     solver/testing/* | *_test* | *test_* | *_impl* | */detail/*) echo "install test: internal header $h installed"; missing=1 ;;
   esac
 done
+# The package's only include directory is include/: a bare <api/run.hpp> does not resolve.
+if grep -q 'include/beamimpact"\|include/beamimpact;' "$prefix"/lib*/cmake/beamimpact/beamimpactTargets.cmake; then
+  echo "install test: include/beamimpact is an include directory of the package; expected include/ only"; missing=1
+fi
 ((missing == 0)) || exit 1
 echo "install test: ${#installed[@]} headers installed, each one's project includes installed too"
 cmake -S "$root/examples/consumer" -B "$build/consumer" -DCMAKE_PREFIX_PATH="$prefix" \

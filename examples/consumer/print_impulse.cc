@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <exception>
 
-#include <api/run.hpp>
+#include <beamimpact/api/run.hpp>
 
 int main(int argc, char** argv) {
   if (argc < 2) {

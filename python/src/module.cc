@@ -14,7 +14,6 @@
 #include <api/run.hpp>
 #include <api/shipped_scenes.hpp>
 #include <beamimpact/version.hpp>
-#include <solver/integrator/ExplicitContactIntegrator.hpp>
 #include <solver/record/ContactStats.hpp>
 #include <solver/record/output_files.hpp>
 #include <solver/scene/scene_io.hpp>
@@ -229,7 +228,7 @@ PYBIND11_MODULE(_core, m) {
       },
       py::arg("json_text"), py::arg("label"), py::arg("overrides") = std::vector<std::string>{},
       "Loads a scene given as JSON text of the scene's tables (Scene.from_dict)");
-  m.attr("max_threads") = paper::kMaxThreads;  // the largest `threads` a run takes
+  m.attr("max_threads") = thread_limit();  // the largest `threads` a run takes (the registry's)
   m.def("run", &run_scene, py::arg("scene"), py::arg("method"), py::arg("out") = py::none(),
         py::arg("progress") = py::none(), py::arg("threads") = py::none(),
         "Runs a scene with a registry method; returns (summary JSON, column names, rows array)");
@@ -265,6 +264,9 @@ PYBIND11_MODULE(_core, m) {
         py::arg("jobs"), py::arg("exe"), py::arg("fresh") = false,
         "The verify command as a library call (runs started with exe); writes its reports to out and "
         "returns norms.json's dict");
+  m.attr("merge_steps") = kMergeSteps;  // the default merge gap's open steps (ContactIntervals.hpp)
+  m.def("default_merge_gap", &default_merge_gap, py::arg("step"),
+        "s, the default merge gap of samples step s apart (solver/record/ContactIntervals.hpp)");
   m.def("contact_stats", &contact_stats, py::arg("t"), py::arg("R"), py::arg("tau"), py::arg("dt"),
         py::arg("states"), py::arg("merge_gap"),
         "A contact's statistics from its samples (t, R, tau, dt; state names) by the C++ rule every "

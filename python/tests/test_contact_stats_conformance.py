@@ -1,5 +1,7 @@
-"""FEniCSx's contact statistics (references/fenicsx/output.py, pure Python: the reference shares
-no code with the C++ methods) against the C++ rule every other method's summary uses
+"""The Python references' contact-interval rule (references/common/contact_intervals.py: FEniCSx's,
+Siconos's and GetFEM's statistics are built on it; GetFEM uses FEniCSx's output module) and
+FEniCSx's contact statistics (references/fenicsx/output.py, pure Python: the references share no
+code with the C++ methods) against the C++ rule every other method's summary uses
 (solver/record/ContactStats with ContactIntervals' merge rule, through beamimpact._core): the
 same samples give the same intervals, impulses, peaks and stick/slip counts, bit for bit (both
 sum the same IEEE products in the same order). Run from ctest (PYTHONPATH=build/python,
@@ -11,6 +13,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(os.environ["BEAMIMPACT_SOURCE"]) / "references" / "fenicsx"))
 from output import ContactStats  # noqa: E402  (FEniCSx's module needs no dolfinx)
+import contact_intervals  # noqa: E402  (on the path FEniCSx's output module puts it)
 
 from beamimpact import _core  # noqa: E402
 
@@ -88,7 +91,7 @@ contact = {"striker": "A", "target": "B", "kind": "end_to_end", "friction": 0.3}
 out = []
 for samples, merge_gap in json.load(sys.stdin):
     s = siconos.ContactStats(1.0)
-    s.merge_gap = merge_gap
+    s.phases.merge_gap = merge_gap
     e = example.Stats(merge_gap)
     for t, R, tau, dt, state in samples:
         s.add(t, R, tau, dt, codes[state])
@@ -116,3 +119,47 @@ def test_outside_solvers_statistics_follow_the_rule():
         assert {k: siconos[k] for k in KEYS} == cpp_stats(samples, merge_gap), f"siconos, case {case}"
         frictionless = [(t, R, 0.0, dt, "frictionless" if R > 0 else "open") for t, R, _, dt, _ in samples]
         assert {k: example[k] for k in KEYS} == cpp_stats(frictionless, merge_gap), f"example, case {case}"
+
+
+def test_the_shared_default_merge_gap_is_the_cpp_one():
+    # Fewer than 3 open samples merge, whatever the step: (3 + 0.5) steps in both languages.
+    assert contact_intervals.MERGE_STEPS == _core.merge_steps == 3
+    for step in (1e-6, 0.01, 0.37, 2.0):
+        assert contact_intervals.merge_gap(step) == _core.default_merge_gap(step) == 3.5 * step
+
+
+def test_two_and_three_open_samples_at_the_default_gap():
+    # Steps of 0.01 s (round-off in the times): two open samples between contacts merge, three do
+    # not, for the shared module's default gap as for the C++ one.
+    for open_steps, intervals in ((2, 1), (3, 2)):
+        R = [0.0, 1.0, 1.0] + [0.0] * open_steps + [1.0, 0.0]
+        samples = [(0.01 * i, r, 0.0, 0.01, "frictionless" if r else "open") for i, r in enumerate(R)]
+        assert len(python_stats(samples, contact_intervals.merge_gap(0.01))["intervals"]) == intervals
+        assert len(cpp_stats(samples, _core.default_merge_gap(0.01))["intervals"]) == intervals
+
+
+SHARED = r"""
+import importlib.util, sys
+def load(name, path):
+    spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+siconos = load("siconos_output", sys.argv[1])
+s = siconos.ContactStats(0.01)
+print(type(s.phases).__module__, s.phases.merge_gap)
+"""
+
+
+def test_every_python_reference_builds_on_the_shared_module():
+    # FEniCSx's statistics (and GetFEM's, which are FEniCSx's) and Siconos's hold the shared rule's
+    # intervals; Siconos's default gap is the suite's (its run.py passes the step).
+    import subprocess
+    assert type(ContactStats(1.0, "").phases) is contact_intervals.ContactIntervals
+    src = Path(os.environ["BEAMIMPACT_SOURCE"])
+    p = subprocess.run([sys.executable, "-c", SHARED, str(src / "references/siconos/output.py")],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    module, gap = p.stdout.split()
+    assert module == "contact_intervals"
+    assert float(gap) == _core.default_merge_gap(0.01)

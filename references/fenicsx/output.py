@@ -2,13 +2,18 @@
 (intervals, impulses, peaks) computed the way solver/record/ContactStats.hpp describes them:
 a sample is "in contact" when R > 0, each run of contact samples is a phase, and a phase that
 begins less than the merge gap after the last interval's end joins it (the rule of
-solver/record/ContactIntervals.hpp; python/tests/test_contact_stats_conformance.py checks that
-both give the same statistics)."""
+solver/record/ContactIntervals.hpp, in Python references/common/contact_intervals.py;
+python/tests/test_contact_stats_conformance.py checks that both give the same statistics)."""
 
 import glob
 import json
 import math
 import os
+import sys
+
+# The suite's contact-interval rule, shared by the Python references (references/common).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from contact_intervals import ContactIntervals, merge_gap, merge_rule  # noqa: E402,F401
 
 CONTACT_COLUMNS = ["R", "tau", "gap", "ua_x", "ua_y", "va_x", "va_y",
                    "ub_x", "ub_y", "vb_x", "vb_y", "state"]
@@ -30,8 +35,9 @@ class ContactStats:
     """Accumulates one contact's per-step samples into the summary's contact entry."""
 
     def __init__(self, merge_gap, rule):
-        self.merge_gap, self.rule = merge_gap, rule
-        self.intervals = []            # [start, end, peak_after_closure, closure_R]
+        self.rule = rule
+        self.phases = ContactIntervals(merge_gap)
+        self.intervals = self.phases.intervals  # [start, end, peak_after_closure, closure_R]
         self.in_contact = False
         self.impulse_n = self.impulse_t = self.peak = 0.0
         self.stick = self.slip = 0
@@ -46,14 +52,13 @@ class ContactStats:
         self.stick += state == "stick"
         self.slip += state == "slip"
         if not self.in_contact:
-            # A (re-)closure begins a phase: a new interval unless it begins less than merge_gap
-            # after the last interval's end. Its force is not a peak after closure.
-            if not (self.intervals and t - self.intervals[-1][1] < self.merge_gap):
-                self.intervals.append([t, t, 0.0, R])
+            # A (re-)closure begins a phase (a new interval, or the last one's chatter). Its force
+            # is not a peak after closure.
+            self.phases.begin(t, 0.0, R)
             self.in_contact = True
         else:
             self.intervals[-1][2] = max(self.intervals[-1][2], R)
-        self.intervals[-1][1] = t
+            self.phases.extend(t)
 
     def summary(self):
         return {

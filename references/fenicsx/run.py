@@ -21,7 +21,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
 from options import PRESETS, resolve_options  # noqa: E402
-from output import CONTACT_COLUMNS, ContactStats, history_columns, remove_stale, write_run  # noqa: E402
+from output import CONTACT_COLUMNS, ContactStats, history_columns, merge_gap, merge_rule, remove_stale, write_run  # noqa: E402
 from scene import SceneError, load_scene     # noqa: E402
 
 try:
@@ -117,10 +117,10 @@ def main(argv):
         if comm.rank == 0:
             print(f"error: {e}", file=sys.stderr)
         return 2
-    merge_gap = 3 * (scene.dt if scene.dt else st["dt"] * st["out_every"])
-    rule = (f"gaps shorter than {merge_gap:.6g} s (3 scene steps) are merged" if scene.dt else
-            f"gaps shorter than {merge_gap:.6g} s (3 output intervals) are merged")
-    stats = [ContactStats(merge_gap, rule) for _ in contacts]
+    # The suite's default merge gap (references/common/contact_intervals.py) of the samples' spacing:
+    # the scene's step, else the output rows' (the statistics see one sample a row).
+    spacing = scene.dt if scene.dt else st["dt"] * st["out_every"]
+    stats = [ContactStats(merge_gap(spacing), merge_rule(spacing)) for _ in contacts]
     fields = None
     if args.fields or scene.fields:
         from fields import FieldOutput

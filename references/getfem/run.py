@@ -24,7 +24,6 @@ sys.path.insert(0, HERE)
 from scene_input import Refused, load, refine  # noqa: E402
 
 METHOD = "getfem"
-MERGE_STEPS = 3  # the suite's chatter rule: phases fewer than 3 open steps apart are one interval
 
 
 def _fenicsx_output():
@@ -111,10 +110,8 @@ def main(argv):
     try:
         start, cpu = time.perf_counter(), time.process_time()
 
-        def make_stats(dt):
-            rule = (f"contact phases separated by fewer than {MERGE_STEPS} open steps ({MERGE_STEPS * dt:.6g} s) "
-                    "are merged; an interval runs from its first to its last step with R > 0")
-            return out.ContactStats((MERGE_STEPS + 0.5) * dt, rule)
+        def make_stats(dt):  # the suite's default merge gap (references/common/contact_intervals.py)
+            return out.ContactStats(out.merge_gap(dt), out.merge_rule(dt))
 
         rows, summary = simulate(scene, opts, make_stats)
         summary["wall_seconds"] = time.perf_counter() - start

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <solver/record/ContactIntervals.hpp>
 #include <solver/scene/TableReader.hpp>
 
 namespace beamimpact::ida {
@@ -61,7 +62,8 @@ IdaOptions read_ida_options(const Scene& scene, double dt, double v_scale,
   o.max_step = r.number_or("max_step", 0.0, "a maximum step (s), 0 for none");
   if (o.max_step < 0.0) r.fail("max_step", "expected a number >= 0");
   // The paper's runs merge phases separated by fewer than 3 open steps: the same in seconds.
-  o.merge_gap = r.number_or("merge_gap", 3.5 * dt, "a time (s) below which two contact phases are merged");
+  o.merge_gap =
+      r.number_or("merge_gap", default_merge_gap(dt), "a time (s) below which two contact phases are merged");
   if (o.merge_gap < 0.0) r.fail("merge_gap", "expected a number >= 0");
   r.finish();
   return o;

@@ -2,18 +2,23 @@
 the contact columns of each contact (suffix _k from the second), then the model's columns; the
 contact statistics by the suite's rule (solver/record/ContactIntervals.hpp): a step is in
 contact when R > 0, each run of contact steps is a phase, and a phase that begins less than the
-merge gap (3.5 steps) after the last interval's end joins it; a re-closure is a closure."""
+merge gap after the last interval's end joins it (references/common/contact_intervals.py: fewer
+than 3 open steps); a re-closure is a closure."""
 
 import json
 import math
 import os
+import sys
 
 import numpy as np
+
+# The suite's contact-interval rule, shared by the Python references (references/common).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from contact_intervals import ContactIntervals, merge_gap, merge_rule  # noqa: E402,F401
 
 CONTACT_COLUMNS = ["R", "tau", "gap", "ua_x", "ua_y", "va_x", "va_y", "ub_x", "ub_y", "vb_x", "vb_y", "state"]
 MODEL_COLUMNS = ["kinetic", "strain", "dissipated", "load_work", "px", "py"]  # load_work: F . (u - u0), J
 OPEN, STICK, SLIP, CLOSED = 0, 1, 2, 3  # column `state`
-MERGE_STEPS = 3
 
 
 def history_columns(n_contacts):
@@ -27,10 +32,9 @@ class ContactStats:
     """One contact's intervals, impulses, peaks and stick/slip counts."""
 
     def __init__(self, dt):
-        self.merge_gap = (MERGE_STEPS + 0.5) * dt
-        self.rule = (f"contact phases separated by fewer than {MERGE_STEPS} open steps ({MERGE_STEPS * dt:.6g} s) "
-                     "are merged; an interval runs from its first to its last step with R > 0")
-        self.intervals = []  # [start, end, peak after the closure step, closure R]
+        self.rule = merge_rule(dt)
+        self.phases = ContactIntervals(merge_gap(dt))
+        self.intervals = self.phases.intervals  # [start, end, peak after the closure step, closure R]
         self.on = False
         self.impulse_n = self.impulse_t = self.peak = 0.0
         self.stick = self.slip = 0
@@ -46,12 +50,11 @@ class ContactStats:
         self.stick += state == STICK
         self.slip += state == SLIP
         if not self.on:  # a (re-)closure begins a phase; its force is not a peak after closure
-            if not (self.intervals and t - self.intervals[-1][1] < self.merge_gap):
-                self.intervals.append([t, t, 0.0, R])
+            self.phases.begin(t, 0.0, R)
             self.on = True
         else:
             self.intervals[-1][2] = max(self.intervals[-1][2], R)
-        self.intervals[-1][1] = t
+            self.phases.extend(t)
 
     def track(self, t, gap, slide):
         if gap < self.gap_min:

@@ -79,7 +79,7 @@ void set_merge_rule(const Options& o, double dt, ResultRecorder& rec) {
     return;
   }
   rec.set_merge_rule(
-      (static_cast<double>(o.merge_steps) + 0.5) * dt,
+      merge_gap_of(o.merge_steps, dt),
       fmt::format("contact phases separated by fewer than {} open steps ({:.6g} s) are merged; "
                   "an interval runs from its first to its last step with R > 0",
                   o.merge_steps, static_cast<double>(o.merge_steps) * dt));

@@ -8,13 +8,15 @@
 
 #include <solver/contact/ContactPair.hpp>
 #include <solver/contact/ContactSolver.hpp>
+#include <solver/record/ContactIntervals.hpp>
 #include <solver/record/SimulationResult.hpp>
 
 namespace beamimpact::paper {
 
 /// @brief The scene's [paper] table, read and validated in one place.
 struct Options {
-  long merge_steps = 3;    ///< contact phases separated by fewer open steps than this are one interval
+  long merge_steps =
+      kMergeSteps;         ///< contact phases separated by fewer open steps than this are one interval
   double merge_gap = 0.0;  ///< s; when > 0, phases closer than this are merged instead (dt-independent)
   SurfaceInterpolation surface = SurfaceInterpolation::kLinear;  ///< "linear" (paper) or "hermite"
   ClosureSlip closure_slip = ClosureSlip::kWholeStep;            ///< "step" (paper) or "from_closure"

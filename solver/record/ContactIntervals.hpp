@@ -11,6 +11,23 @@
 
 namespace beamimpact {
 
+/// @brief The default merge gap in open steps: contact phases separated by fewer open samples
+/// than this are one interval (chatter), for every method (the paper's [paper] merge_steps, IDA's
+/// [ida] merge_gap, `compare`'s --merge; the Python references' references/common/contact_intervals.py).
+inline constexpr long kMergeSteps = 3;
+
+/// @brief s, the merge gap of samples `step` s apart that merges fewer than `open_steps` open
+/// samples: (open_steps + 0.5) steps. Two phases n open samples apart are (n + 1) steps apart, so
+/// the half step keeps round-off in the sample times from deciding the count.
+/// @param open_steps the open samples that still separate two intervals; @param step s
+inline double merge_gap_of(long open_steps, double step) {
+  return (static_cast<double>(open_steps) + 0.5) * step;
+}
+
+/// @brief s, the default merge gap of samples `step` s apart: merge_gap_of(kMergeSteps, step).
+/// @param step s, the time step or the spacing of the rows
+inline double default_merge_gap(double step) { return merge_gap_of(kMergeSteps, step); }
+
 /// @brief Contact intervals [start, end] (s), built phase by phase in time order.
 ///
 /// A phase is a run of contact: begin(t) at its first instant (a step's sample, an onset event,

@@ -16,10 +16,10 @@ bool glibc_heap();
 
 /// @brief Keeps freed blocks in the process (glibc mallopt: blocks up to 32 MB come from the heap,
 /// the heap is not trimmed below 2 GB of free top, and grows 64 MB at a time). Called by
-/// beamimpact::run before an in-process method's set-up; idempotent and thread-safe. A process
-/// that runs a large model holds that run's memory (its peak, up to the 2 GB) after it for the
-/// next; set BEAMIMPACT_RELEASE_MEMORY=1 in the environment to keep glibc's defaults. Without
-/// glibc's allocator (another C library, a sanitizer's) it does nothing.
+/// beamimpact::run before an in-process method's set-up when RunOptions::tune_heap asks for it; idempotent
+/// and thread-safe. A process that runs a large model holds that run's memory (its peak, up to the 2 GB)
+/// after it for the next; set BEAMIMPACT_RELEASE_MEMORY=1 in the environment to keep glibc's defaults.
+/// Without glibc's allocator (another C library, a sanitizer's) it does nothing.
 void keep_freed_memory();
 
 /// @brief Makes room for a run that will touch about `bytes` of new memory: grows the heap by that

@@ -1,5 +1,7 @@
 #include "command_methods.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include <api/registry.hpp>
@@ -13,21 +15,12 @@ namespace {
 /// The accepted capabilities as short words ("dt mesh-factor friction ..."), "-" for none.
 std::string accepted(const Method::Accepts& a) {
   std::string s;
-  auto add = [&](bool on, const char* word) {
-    if (on) s += (s.empty() ? "" : " ") + std::string(word);
-  };
-  add(a.dt, "dt");
-  add(a.mesh_factor, "mesh-factor");
-  add(a.friction, "friction");
-  add(a.rotation, "rotation");
-  add(a.rigid, "rigid");
-  add(a.search, "search");
-  add(a.several_contacts, "several-contacts");
-  add(a.timoshenko, "timoshenko");
-  add(a.hertz, "hertz");
-  add(a.bending, "bending");
-  add(a.node_to_surface, "node-to-surface");
-  add(a.loads, "loads");
+  for (const AcceptsKey& k : accepts_keys())
+    if (a.*k.field) {
+      std::string word = k.key;
+      std::replace(word.begin(), word.end(), '_', '-');
+      s += (s.empty() ? "" : " ") + word;
+    }
   return s.empty() ? "-" : s;
 }
 

@@ -177,7 +177,7 @@ void score_command(const ProtocolArgs& a) {
   std::vector<const Method*> ms;
   for (const std::string& name : a.methods) {
     ms.push_back(&runnable(name, "score"));
-    a.score.validate(name);
+    a.score.validate(*ms.back());
     if (std::count(a.methods.begin(), a.methods.end(), name) > 1)
       throw InputError("command line", "NAME", "'" + name + "' is named twice");
   }

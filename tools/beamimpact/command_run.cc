@@ -9,7 +9,6 @@
 
 #include <api/registry.hpp>
 #include <api/run.hpp>
-#include <solver/integrator/ExplicitContactIntegrator.hpp>
 #include <solver/record/FieldWriter.hpp>
 #include <solver/util/Progress.hpp>
 
@@ -57,24 +56,25 @@ void simulate(const RunArgs& a) {
   RunOptions o{sets, a.out, std::nullopt, a.mesh};
   if (a.dt != 0.0) o.dt = a.dt;
   if (a.threads != 0) o.threads = a.threads;
+  o.tune_heap = true;  // this process runs one scene: the heap policy pays (docs/performance.md)
   const SimulationResult r = beamimpact::run(a.scene, a.method, o);
   if (!a.quiet) print_result(r, a.out);
   if (const auto w = r.extra.find("warnings"); w != r.extra.end())  // also when quiet: on stderr
     for (const auto& text : *w) fmt::print(stderr, "warning: {}\n", text.get<std::string>());
 }
 
-/// --threads: a whole number 1..1024, checked before conversion so that every bad value gets the
-/// same message naming the option (exit 2).
+/// --threads: a whole number 1..thread_limit() (the registry's), checked before conversion so
+/// that every bad value gets the same message naming the option (exit 2).
 CLI::Validator threads_validator() {
   return CLI::Validator(
       [](std::string& v) -> std::string {
         char* end = nullptr;
         const long n = std::strtol(v.c_str(), &end, 10);
-        if (v.empty() || *end != '\0' || !paper::valid_thread_count(n))
-          return fmt::format("expected a whole number of threads 1..{}, got '{}'", paper::kMaxThreads, v);
+        if (v.empty() || *end != '\0' || n < 1 || n > thread_limit())
+          return fmt::format("expected a whole number of threads 1..{}, got '{}'", thread_limit(), v);
         return {};
       },
-      fmt::format("1..{}", paper::kMaxThreads));
+      fmt::format("1..{}", thread_limit()));
 }
 
 }  // namespace
@@ -99,8 +99,9 @@ void add_command_run(CLI::App& app) {
                   "Mesh: an element multiplier (1..64) for the beam methods, or an external method's preset");
   add_threads_option(
       sub, args->threads,
-      "Threads of the paper integrator's step (1..1024; as --set paper.threads=N); default: the "
-      "machine's, 1 for small models. The results are the same bits at any count");
+      fmt::format("Threads of the paper integrator's step (1..{}; as --set paper.threads=N); default: the "
+                  "machine's, 1 for small models. The results are the same bits at any count",
+                  thread_limit()));
   add_methods_option(sub);
   sub->add_option("--set", args->sets, "Override a scene key, e.g. --set time.dt=0.005 (repeatable)");
   sub->add_flag("--quiet", args->quiet, "Print nothing on success (no progress either)");

@@ -326,7 +326,7 @@ Comparison compare_runs(const StoredRun& a, const StoredRun& b, const CompareOpt
   const double fine = std::min(ha, hb), coarse = std::max(ha, hb);
   cmp.grid_step = options.grid_step != 0.0 ? options.grid_step : fine;
   cmp.window = options.window != 0.0 ? options.window : 10.0 * coarse;
-  cmp.merge_gap = options.merge_gap != 0.0 ? options.merge_gap : 3.5 * coarse;
+  cmp.merge_gap = options.merge_gap != 0.0 ? options.merge_gap : default_merge_gap(coarse);
   const double span_b = b.t().back() - b.t().front();
   if (cmp.t1 - cmp.t0 < 0.99 * span_b) {
     cmp.notes.push_back(

@@ -9,9 +9,10 @@ namespace beamimpact::verification {
 
 /// @brief Settings of a comparison; zero means "derive from the histories" (written in the output).
 struct CompareOptions {
-  double grid_step = 0.0;   ///< s; default: the finer of the two output steps
-  double window = 0.0;      ///< s; default: 10 x the coarser output step
-  double merge_gap = 0.0;   ///< s; default: 3.5 x the coarser output step (up to 2 open samples)
+  double grid_step = 0.0;  ///< s; default: the finer of the two output steps
+  double window = 0.0;     ///< s; default: 10 x the coarser output step
+  double merge_gap =
+      0.0;  ///< s; default: default_merge_gap() of the coarser output step (ContactIntervals.hpp)
   double threshold = 1e-6;  ///< R > threshold x max R of the reference counts as contact
   /// @brief Read the run (a) from its history.csv only: its impulse is the last value of its
   /// `impulse` column, else the trapezoid integral of R over its rows; its contact intervals are

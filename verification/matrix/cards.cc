@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <api/registry.hpp>
 #include <solver/scene/TableReader.hpp>
 #include <solver/util/InputError.hpp>
 #include <verification/compare/compare_runs.hpp>
@@ -13,6 +14,15 @@ namespace beamimpact::verification {
 namespace {
 
 namespace fs = std::filesystem;
+
+/// The registry's reference methods, best first ("exact, ida").
+std::string reference_names() {
+  std::string names;
+  for (const ReferenceRank r : {ReferenceRank::kExact, ReferenceRank::kConverged})
+    for (const Method& m : methods())
+      if (m.as_reference.rank == r) names += (names.empty() ? "" : ", ") + m.name;
+  return names;
+}
 
 /// One { metric, tol, why } of a card.
 Gate read_quantity(const toml::node& n, const std::string& file, const std::string& key) {
@@ -43,12 +53,16 @@ BenchmarkCard read_card(TableReader& r, const std::string& key, const fs::path& 
     r.fail("set", "expected paper, hard or exact, got '" + c.set + "'");
   const toml::node* ref = r.raw("reference");
   if (!ref || !ref->as_table())
-    r.fail("reference", "expected { method = \"exact\" } or { method = \"ida\" }");
+    r.fail("reference", "expected { method = NAME } of a reference method (" + reference_names() + ")");
   TableReader rr(*ref->as_table(), r.file(), key + ".reference", nullptr);
   c.reference =
-      JobSpec{c.scene, rr.string("method", "exact or ida"), std::nullopt, "", rr.strings("set"), {}};
-  if (c.reference.method != "exact" && c.reference.method != "ida")
-    rr.fail("method", "expected exact or ida, got '" + c.reference.method + "'");
+      JobSpec{c.scene,           rr.string("method", "a reference method (" + reference_names() + ")"),
+              std::nullopt,      "",
+              rr.strings("set"), {}};
+  const Method* m = find_method(c.reference.method);
+  if (!m || m->as_reference.rank == ReferenceRank::kNone)
+    rr.fail("method", "expected a reference method (ranked in the registry: " + reference_names() +
+                          "), got '" + c.reference.method + "'");
   rr.finish();
   c.source = r.string("source", "the matrix row the tolerances come from, \"\" when derived");
   if (r.has("note")) c.note = r.string("note", "why a quantity of the scene is not on the card");

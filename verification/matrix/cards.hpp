@@ -17,7 +17,7 @@ namespace beamimpact::verification {
 struct BenchmarkCard {
   std::filesystem::path scene;   ///< absolute, normalised
   std::string set;               ///< "paper", "hard" or "exact"
-  JobSpec reference;             ///< method "exact", or "ida" with the card's settings
+  JobSpec reference;             ///< a reference method (exact, or ida with the card's settings)
   std::string source;            ///< the matrix row the tolerances come from ("" derived)
   std::string note;              ///< why a quantity of the scene is not on the card ("" none)
   std::vector<Gate> quantities;  ///< each with tol and why
@@ -28,7 +28,8 @@ const std::vector<std::string>& card_sets();
 
 /// @brief Reads a cards file. Scene paths are relative to `root`. Throws InputError (file, key,
 /// what was expected) for bad TOML, unknown keys, a missing scene file, a scene carded twice, an
-/// unknown set or metric, a reference other than exact or ida, a quantity without tol or why.
+/// unknown set or metric, a reference that is no reference method of the registry (Method::as_reference), a
+/// quantity without tol or why.
 /// @param file the cards file (verification/cards.toml)
 /// @param root the repository root (the folder holding verification/scenes)
 std::vector<BenchmarkCard> load_cards(const std::filesystem::path& file, const std::filesystem::path& root);

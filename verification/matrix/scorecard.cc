@@ -21,32 +21,40 @@ bool sets_key(const JobSpec& ref, const std::string& key) {
                      [&](const std::string& s) { return s.rfind(key + "=", 0) == 0; });
 }
 
-/// IDA converged beyond its defaults, keeping the reference's own settings: time tolerances 100
-/// times tighter (rtol 1e-10, atol 1e-13), the friction regularisation at 1e-5 m/s (the matrix's
-/// converged value; no effect on a frictionless contact) and, with `stiffen`, a penalty 10 times
-/// stiffer (1e4 EA/le), so that IDA's step and penetration errors fall below the defaults' by
-/// about those factors. Without `stiffen` it is the reference's check: the same run at the
-/// card's penalty.
-JobSpec converged_ida(JobSpec ref, bool stiffen) {
-  const bool own_penalty = sets_key(ref, "ida.kn") || sets_key(ref, "ida.kn_factor");
-  for (const auto& [key, value] : {std::pair{"ida.rtol", "1e-10"}, std::pair{"ida.atol", "1e-13"},
-                                   std::pair{"ida.friction_velocity", "1e-5"}})
-    if (!sets_key(ref, key)) ref.set.push_back(std::string(key) + "=" + value);
-  if (stiffen && !own_penalty) ref.set.push_back("ida.kn_factor=1e4");
+/// A card's reference converged beyond its defaults by its registry entry's settings
+/// (Method::as_reference), keeping the card's own: each converged setting unless the card sets its
+/// key, and with `stiffen` the stiffer settings unless the card sets its own stiffness. Without
+/// `stiffen` it is the reference's check: the same run at the card's stiffness.
+JobSpec converged_reference(JobSpec ref, const AsReference& facts, bool stiffen) {
+  const bool own_stiffness = std::any_of(facts.stiffness_keys.begin(), facts.stiffness_keys.end(),
+                                         [&](const std::string& k) { return sets_key(ref, k); });
+  for (const std::string& setting : facts.converged)
+    if (!sets_key(ref, setting.substr(0, setting.find('=')))) ref.set.push_back(setting);
+  if (stiffen && !own_stiffness)
+    for (const std::string& setting : facts.stiffer) ref.set.push_back(setting);
   return ref;
+}
+
+/// The registry entry of a card's reference (cards.cc checked that it is a reference).
+const Method& reference_method(const BenchmarkCard& c) {
+  return method(c.reference.method, c.scene.string(), "reference.method");
 }
 
 }  // namespace
 
 std::string ida_reference(const ScoreOptions& o) {
-  return o.references == "converged"
-             ? "IDA converged beyond its defaults: rtol 1e-10, atol 1e-13, friction regularised at 1e-5 "
-               "m/s, penalty 1e4 EA/le, with the card's own settings; its spread against the same run at "
-               "the card's penalty is its uncertainty"
-             : "IDA at the card's settings (not converged further: --references matrix)";
+  std::string words;
+  for (const Method& m : methods())
+    if (m.as_reference.rank == ReferenceRank::kConverged)
+      words += (words.empty() ? "" : "; ") + (o.references == "converged"
+                                                  ? m.as_reference.converged_words
+                                                  : m.name +
+                                                        " at the card's settings (not converged further: "
+                                                        "--references matrix)");
+  return words;
 }
 
-void ScoreOptions::validate(const std::string& method) const {
+void ScoreOptions::validate(const Method& method) const {
   const auto& all = card_sets();
   if (sets.empty()) throw InputError("command line", "--sets", "expected one or more of paper, hard, exact");
   for (std::size_t i = 0; i < sets.size(); ++i) {
@@ -58,17 +66,18 @@ void ScoreOptions::validate(const std::string& method) const {
   if (references != "converged" && references != "matrix")
     throw InputError("command line", "--references",
                      "expected converged or matrix, got '" + references + "'");
-  if (references == "matrix" && method == "ida")
-    throw InputError(
-        "command line", "--references",
-        "IDA's own scorecard needs converged references (with matrix ones IDA would score its own runs)");
+  if (references == "matrix" && method.as_reference.rank == ReferenceRank::kConverged)
+    throw InputError("command line", "--references",
+                     "the scorecard of '" + method.name +
+                         "', a converged reference, needs converged references (with matrix ones it would "
+                         "score its own runs)");
   if (rungs < 3 || rungs > 6)
     throw InputError("command line", "--rungs", fmt::format("expected 3 to 6 rungs, got {}", rungs));
 }
 
 std::vector<ScoreItem> score_items(const std::vector<BenchmarkCard>& cards, const Method& method,
                                    const ScoreOptions& options) {
-  options.validate(method.name);
+  options.validate(method);
   const bool converge = options.references == "converged";
   std::vector<ScoreItem> items;
   const auto picked = [&](const JobSpec& run) {
@@ -82,12 +91,13 @@ std::vector<ScoreItem> score_items(const std::vector<BenchmarkCard>& cards, cons
       it.run = JobSpec{c.scene, method.name, std::nullopt, "", {}, {}};
       it.reference_kind = c.reference.method;
       it.reference = c.reference;
-      if (c.reference.method == "ida" && converge) {
-        it.reference = converged_ida(c.reference, true);
-        if (converged_ida(c.reference, false).key() != it.reference.key())
-          it.reference_check = converged_ida(c.reference, false);
+      const AsReference& facts = reference_method(c).as_reference;
+      if (facts.rank == ReferenceRank::kConverged && converge) {
+        it.reference = converged_reference(c.reference, facts, true);
+        if (converged_reference(c.reference, facts, false).key() != it.reference.key())
+          it.reference_check = converged_reference(c.reference, facts, false);
       }
-      if (c.reference.method == "exact" && options.ladder)
+      if (facts.rank == ReferenceRank::kExact && options.ladder)
         it.ladder = plan_ladder(it.run, method, options.rungs);
       it.gates = c.quantities;
       it.source = c.source;

@@ -32,7 +32,7 @@ struct ScoreItem {
   /// The reference's uncertainty check: a converged IDA reference at the card's own penalty; none
   /// for an exact reference or with matrix references.
   std::optional<JobSpec> reference_check;
-  std::string reference_kind;  ///< "exact" or "ida" (its settings in reference.set)
+  std::string reference_kind;  ///< the reference's method, "exact" or "ida" (its settings in reference.set)
   std::vector<Gate> gates;     ///< the card's quantities (tol and why)
   std::string source;          ///< the matrix row the card's tolerances come from ("" derived)
   std::string set;             ///< the card's scene set
@@ -43,10 +43,10 @@ struct ScoreOptions {
   /// Scene sets, in this order: "paper" (verification/scenes/paper), "hard"
   /// (verification/scenes/hard), "exact" (the other scenes with an exact answer).
   std::vector<std::string> sets = {"paper", "hard", "exact"};
-  /// "converged": an IDA reference is converged beyond the card's settings (rtol 1e-10, atol
-  /// 1e-13, kn_factor 1e4, friction_velocity 1e-5 m/s) and checked against itself at the card's
-  /// penalty; "matrix": the card's IDA settings as written (quicker, less strict; refused for
-  /// IDA's own scorecard, which would score itself).
+  /// "converged": a converged reference (IDA) is converged beyond the card's settings by its
+  /// registry entry's settings (Method::as_reference) and checked against itself at the card's
+  /// stiffness; "matrix": the card's settings as written (quicker, less strict; refused for the
+  /// scorecard of a converged reference, which would score itself).
   std::string references = "converged";
   bool ladder = true;  ///< false (--no-ladder): one run a scene, its error judged under the card
   int rungs = 3;       ///< runs of a ladder (>= 3)
@@ -55,11 +55,13 @@ struct ScoreOptions {
   std::vector<std::string> scenes;
 
   /// @brief Throws InputError naming the option and the values allowed.
-  /// @param method the scored method ("ida" may not take matrix references)
-  void validate(const std::string& method) const;
+  /// @param method the scored method (a converged reference, ReferenceRank::kConverged, may not
+  /// take matrix references: it would score its own runs)
+  void validate(const Method& method) const;
 };
 
-/// @brief The IDA reference of `o`, in words (scorecard.json's ida_reference, which its page shows).
+/// @brief The converged references of `o` (the registry's methods of ReferenceRank::kConverged),
+/// in words (scorecard.json's ida_reference, which its page shows; the terminal says it too).
 std::string ida_reference(const ScoreOptions& o);
 
 /// @brief The benchmark set for `method`: one item per card of `options.sets`, in set order and

@@ -142,6 +142,68 @@ std::string card_error(const std::string& text) {
   return "accepted";
 }
 
+// The reference of every card and its settings are those the committed scorecards were made with
+// (docs/protocol.md: IDA converged to rtol 1e-10, atol 1e-13, friction regularised at 1e-5 m/s,
+// penalty 1e4 EA/le, checked at the card's penalty; an exact reference as it is, with a ladder),
+// now read from the registry's entries (Method::as_reference) instead of rules on names. The
+// order of the settings is part of the reference's key, hence of the reference cache.
+TEST(Scorecard, TheReferenceChoiceAndSettingsAreThoseOfTheCommittedScorecards) {
+  const std::vector<std::string> converged = {"ida.rtol=1e-10", "ida.atol=1e-13",
+                                              "ida.friction_velocity=1e-5"};
+  std::vector<std::string> stiffened = converged;
+  stiffened.push_back("ida.kn_factor=1e4");
+  const auto cards = shipped_cards();
+  const auto items = score_items(cards, *find_method("paper"));
+  ASSERT_EQ(items.size(), cards.size());
+  std::size_t ida = 0, exact = 0;
+  for (const ScoreItem& it : items) {
+    EXPECT_EQ(it.reference_kind, it.reference.method) << it.run.label();
+    if (it.reference.method == "ida") {
+      ++ida;
+      EXPECT_EQ(it.reference.set, stiffened) << it.run.label();
+      ASSERT_TRUE(it.reference_check) << it.run.label();
+      EXPECT_EQ(it.reference_check->set, converged) << it.run.label();
+      EXPECT_TRUE(it.ladder.rungs.empty()) << it.run.label();
+    } else {
+      ++exact;
+      EXPECT_EQ(it.reference.method, "exact") << it.run.label();
+      EXPECT_TRUE(it.reference.set.empty()) << it.run.label();
+      EXPECT_FALSE(it.reference_check) << it.run.label();
+      EXPECT_FALSE(it.ladder.rungs.empty()) << it.run.label();  // the paper takes dt and mesh: a ladder
+    }
+  }
+  EXPECT_EQ(ida, 15u);    // the cards naming ida (verification/cards.toml)
+  EXPECT_EQ(exact, 11u);  // and exact
+  // A card's own settings stay: its own tolerance, its own penalty (then no stiffer run and no check).
+  BenchmarkCard own = cards.front();
+  own.set = "paper";
+  own.reference.method = "ida";
+  own.reference.set = {"ida.rtol=1e-6", "ida.kn=1e5"};
+  const auto mine = score_items({own}, *find_method("paper"));
+  ASSERT_EQ(mine.size(), 1u);
+  EXPECT_EQ(mine[0].reference.set, (std::vector<std::string>{"ida.rtol=1e-6", "ida.kn=1e5", "ida.atol=1e-13",
+                                                             "ida.friction_velocity=1e-5"}));
+  EXPECT_FALSE(mine[0].reference_check);
+  // With matrix references the card's settings as written.
+  ScoreOptions matrix;
+  matrix.references = "matrix";
+  for (const ScoreItem& it : score_items(cards, *find_method("paper"), matrix)) {
+    EXPECT_TRUE(it.reference.set.empty()) << it.run.label();
+    EXPECT_FALSE(it.reference_check) << it.run.label();
+  }
+}
+
+TEST(Scorecard, ACardsReferenceIsARankedReferenceMethod) {
+  const std::string card =
+      "[[card]]\nscene = \"verification/scenes/paper/s1_central.toml\"\nset = \"paper\"\nsource = \"\"\n"
+      "quantities = [{ metric = \"impulse\", tol = 0.04, why = \"derived: a bound\" }]\n";
+  EXPECT_EQ(card_error(card + "reference = { method = \"exact\" }\n"), "accepted");
+  EXPECT_EQ(card_error(card + "reference = { method = \"ida\" }\n"), "accepted");
+  // The paper's integrator has no reference rank; "nothing" is no method.
+  EXPECT_EQ(card_error(card + "reference = { method = \"paper\" }\n"), "card[0].reference.method");
+  EXPECT_EQ(card_error(card + "reference = { method = \"nothing\" }\n"), "card[0].reference.method");
+}
+
 TEST(Scorecard, ABadCardIsInputErrorNamingTheKey) {
   const std::string head =
       "[[card]]\nscene = \"verification/scenes/paper/s1_central.toml\"\nset = \"paper\"\n"

@@ -308,7 +308,8 @@ double resolved_peak(const ImpulseTrace& trace, const std::vector<double>& onset
     return t1 > t0 ? j0 + (j1 - j0) * (t - t0) / (t1 - t0) : j1;
   };
   double best = 0.0;
-  for (const auto& [s, js] : trace) {
+  for (const auto& point : trace) {  // not a structured binding: a lambda below captures s
+    const double s = point[0], js = point[1];
     const double e = s + W;
     if (e > trace.back()[0]) break;
     const bool meets_closure =

@@ -19,14 +19,13 @@ by tenths of a percent under roundoff-level changes), so the limit is the last r
 Usage: s4_corotational.py [--build build] [--out reports/s4] [--runs DIR] [--jobs 2] [--angles 45,60,90]
 Writes OUT/corotational.json. Exit 2 on bad input, 1 when a run fails.
 """
-import argparse
 import concurrent.futures
 import datetime
 import os
 import sys
 
 from report_files import write_json_atomic
-from s4_settled import IDA_TIGHT, LINEAR, ROOT, fail, ladder_limit, run, scene_path, version
+from s4_settled import IDA_TIGHT, LINEAR, ROOT, fail, ladder_limit, options, run, scene_path, version
 
 PAPER_FRACTIONS = [1 / 2 ** k for k in range(1, 7)]  # 1/2 ... 1/64 of the critical step
 IDA_PENALTIES = [1e2, 1e3, 1e4, 1e5]                 # EA/le
@@ -70,23 +69,7 @@ def compare(values):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    p.add_argument("--build", default=os.path.join(ROOT, "build"))
-    p.add_argument("--out", default=os.path.join(ROOT, "reports", "s4"))
-    p.add_argument("--runs", default=None, help="run folders (default OUT/runs, not committed)")
-    p.add_argument("--jobs", type=int, default=2)
-    p.add_argument("--angles", default="45,60,90")
-    a = p.parse_args()
-    exe = os.path.join(a.build, "beamimpact")
-    if not os.access(exe, os.X_OK):
-        fail(f"{exe}: no beamimpact program (build it: bash tools/build.sh beamimpact)")
-    if a.jobs < 1:
-        fail(f"--jobs: expected 1 or more, got {a.jobs}")
-    angles = [x.strip() for x in a.angles.split(",")]
-    for x in angles:
-        if x not in ("45", "60", "90"):
-            fail(f"--angles: expected 45, 60 or 90, got '{x}'")
-    runs = a.runs or os.path.join(a.out, "runs")
+    a, exe, angles, runs = options(__doc__)
     started = datetime.datetime.now(datetime.timezone.utc)
     with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
         submitted = {x: ladders(exe, x, runs, pool) for x in angles}

@@ -220,8 +220,10 @@ def version(exe):
     return r.stdout.strip().split()[-1] if r.returncode == 0 and r.stdout.strip() else "unknown"
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+def options(doc):
+    """@brief The S4 scripts' command line (--build, --out, --runs, --jobs, --angles), checked:
+    (arguments, the beamimpact program, the angles, the runs folder). @param doc the script's docstring"""
+    p = argparse.ArgumentParser(description=doc.split("\n\n")[0])
     p.add_argument("--build", default=os.path.join(ROOT, "build"))
     p.add_argument("--out", default=os.path.join(ROOT, "reports", "s4"))
     p.add_argument("--runs", default=None, help="run folders (default OUT/runs, not committed)")
@@ -238,6 +240,11 @@ def main():
         if x not in ("45", "60", "90"):
             fail(f"--angles: expected 45, 60 or 90, got '{x}'")
     runs = a.runs or os.path.join(a.out, "runs")
+    return a, exe, angles, runs
+
+
+def main():
+    a, exe, angles, runs = options(__doc__)
     started = datetime.datetime.now(datetime.timezone.utc)
     with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
         submitted = {x: ladders(exe, x, runs, pool) for x in angles}

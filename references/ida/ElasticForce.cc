@@ -12,21 +12,6 @@ namespace {
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 using Vec6 = Eigen::Matrix<double, 6, 1>;
 
-/// Local-from-global rotation of a two-node frame element whose axis is at angle beta: each node's
-/// (x, y) turned by -beta, its rotation unchanged.
-Mat6 local_from_global(double beta) {
-  const double c = std::cos(beta), s = std::sin(beta);
-  Mat6 T = Mat6::Zero();
-  for (int k = 0; k < 6; k += 3) {
-    T(k, k) = c;
-    T(k, k + 1) = s;
-    T(k + 1, k) = -s;
-    T(k + 1, k + 1) = c;
-    T(k + 2, k + 2) = 1.0;
-  }
-  return T;
-}
-
 }  // namespace
 
 ElasticForce::ElasticForce(const Model& model, const std::vector<bool>& rotating) : K_linear_(&model.K()) {
@@ -80,7 +65,7 @@ ElasticForce::Frame ElasticForce::frame(const Element& el, const Eigen::Ref<cons
   f.beta = el.beta0 + f.alpha;
   f.d << 0.0, 0.0, x(2) - f.alpha, l - el.length, 0.0, x(5) - f.alpha;
   f.length = l;
-  f.T = local_from_global(f.beta);
+  f.T = frame_rotation(std::cos(f.beta), std::sin(f.beta));  // the element matrices' own rotation
   return f;
 }
 

@@ -5,6 +5,7 @@
 #include <api/methods_file.hpp>
 #include <api/registry.hpp>
 
+#include <algorithm>
 #include <fstream>
 
 #include <gtest/gtest.h>
@@ -208,6 +209,7 @@ TEST_F(MethodsFile, EachAcceptsKeyLandsInItsOwnField) {
       {"dt", &Method::Accepts::dt},
       {"mesh_factor", &Method::Accepts::mesh_factor},
       {"friction", &Method::Accepts::friction},
+      {"rigid_friction", &Method::Accepts::rigid_friction},
       {"rotation", &Method::Accepts::rotation},
       {"rigid", &Method::Accepts::rigid},
       {"search", &Method::Accepts::search},
@@ -218,6 +220,12 @@ TEST_F(MethodsFile, EachAcceptsKeyLandsInItsOwnField) {
       {"node_to_surface", &Method::Accepts::node_to_surface},
       {"loads", &Method::Accepts::loads},
   };
+  // This list is written out here, not read from accepts_keys(), so that a key the code maps to
+  // the wrong field shows; it must name every key the code knows, or a new key goes untested.
+  ASSERT_EQ(keys.size(), accepts_keys().size());
+  for (const AcceptsKey& k : accepts_keys())
+    EXPECT_TRUE(std::any_of(keys.begin(), keys.end(), [&](const auto& t) { return t.first == k.key; }))
+        << k.key << " is read by the code and missing from this test";
   const std::size_t n = keys.size();
   std::vector<std::vector<bool>> patterns;
   for (std::size_t i = 0; i < n; ++i) {

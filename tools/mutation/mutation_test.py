@@ -8,7 +8,8 @@ the test command, built from its `targets`). The unmutated tree must pass all of
 
 Usage: tools/mutation-test.sh [--all] [--only NAME[,NAME]] [--out DIR] [--scratch DIR] [--jobs N] [--check]
   default: the fast CI subset (mutants marked ci); --all: every mutant; --check: only check that
-  every mutant's text occurs exactly once in the source (no build; ctest mutants_apply).
+  every mutant's text occurs exactly once in the source and every test it names exists (no build;
+  ctest mutants_apply).
 Writes OUT/mutation.json: [{"mutant", "layer", "what", "killed_by": [gate ids "case:metric",
 "test:Suite.Name", "ctest:NAME"], ...}] and OUT/mutation.md (a table per layer); exits 1 when a mutant survives (no gate fails), 2 on a usage or build error of
 the unmutated tree. The worktree is never modified: the copy lives in SCRATCH/tree (default
@@ -71,12 +72,25 @@ def apply_edits(tree: Path, edits):
     return saved
 
 
+def declared_tests(listed, cmake_text):
+    """The test names the source declares: Suite.Name of every TEST, TEST_F and TEST_P in a
+    *_test.cc (gtest's names, as ctest lists them), and every word of the CMakeLists.txt files
+    (the names of tests added there by hand)."""
+    names = set(re.findall(r"[\w.:/-]+", cmake_text))
+    for f in listed:
+        if f.endswith("_test.cc") and (ROOT / f).is_file():
+            for m in re.finditer(r"^\s*TEST(?:_F|_P)?\(\s*(\w+)\s*,\s*(\w+)\s*\)", (ROOT / f).read_text(), re.M):
+                names.add(f"{m.group(1)}.{m.group(2)}")
+    return names
+
+
 def check_applicable():
     """Every mutant's old text must occur exactly once in the source, or the mutant tests nothing;
     every mutant has a layer and something that judges it."""
     bad = []
     listed = sh(["git", "-C", str(ROOT), "ls-files", "--cached", "--others", "--exclude-standard"]).stdout.split("\n")
     cmake_text = "".join((ROOT / f).read_text() for f in listed if f.endswith("CMakeLists.txt") and (ROOT / f).is_file())
+    test_names = declared_tests(listed, cmake_text)
     for m in MUTANTS:
         for rel, old, _ in m["edits"]:
             n = (ROOT / rel).read_text().count(old)
@@ -85,6 +99,9 @@ def check_applicable():
         for t in m.get("targets", []):
             if not re.search(rf"\b{re.escape(t)}\b", cmake_text):
                 bad.append(f"{m['name']}: no CMakeLists.txt names the target {t}")
+        for t in m.get("tests", []):
+            if not any(re.fullmatch(t, n) for n in test_names):
+                bad.append(f"{m['name']}: no test is named {t!r} (a renamed or removed test judges nothing)")
         if not m.get("layer"):
             bad.append(f"{m['name']}: no layer")
         if not m.get("verify", True) and not m.get("tests"):

@@ -204,6 +204,25 @@ def test_scorecard_page_shows_a_ladders_rungs_order_and_limit(tmp_path):
     assert order[:5] == ["impulse", "2", "4.0004", "0.0002", "4"]
 
 
+def test_scorecard_page_says_the_statuses_in_the_words_the_scorecard_gives(tmp_path):
+    # scorecard.json's "statuses" (verification/matrix/quantity_status.cc describe()): a quantity
+    # outside its tolerance reads "fail (outside tolerance)", a run that did not finish "run failed",
+    # never "fail" beside "failed"; the JSON words themselves stay as they are.
+    with open(os.path.join(SCORECARD, "scorecard.json")) as f:
+        card = json.load(f)
+    card["statuses"] = {"pass": "pass", "fail": "fail (outside tolerance)", "failed": "run failed"}
+    card["scenes"][0]["quantities"][0]["status"] = "failed"
+    text, t = render_fixture(tmp_path, "scorecard", card)
+    rows = t.tables["scorecard"][1:]
+    shown = {(r[0], r[2]): r[8] for r in rows}
+    assert shown[("s2_transverse", "peak_R")] == "fail (outside tolerance)"
+    assert shown[("s1_central", "impulse")] == "run failed"
+    assert t.tables["first"][1][2] in ("fail (outside tolerance)", "run failed")
+    legend = text.split('<p class="legend">')[1].split("</p>")[0]
+    assert "fail (outside tolerance), run failed, not converged" in legend
+    assert '<section id="other">' not in text  # "statuses" is a field the page knows
+
+
 def test_scorecard_page_lists_fields_it_does_not_know(tmp_path):
     with open(os.path.join(SCORECARD, "scorecard.json")) as f:
         card = json.load(f)

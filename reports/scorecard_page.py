@@ -9,7 +9,8 @@ import os
 from figure_sets import InputProblem
 
 TOP = ("method", "origin", "command", "version", "made", "sets", "references", "ladder", "rungs", "reference_cache",
-       "wall_seconds", "verdict", "verdict_line", "exit_code", "counts", "scenes", "rules", "units", "ida_reference")
+       "wall_seconds", "verdict", "verdict_line", "exit_code", "counts", "statuses", "scenes", "rules", "units",
+       "ida_reference")
 SCENE = ("scene", "file", "set", "run", "reference", "reference_kind", "reference_check", "tolerances_from", "ladder",
          "status", "message", "solver_seconds", "process_seconds", "steps", "dt", "quantities")
 QUANTITY = ("metric", "error", "tol", "uncertainty", "reference_spread", "status", "judged", "exact", "allowed", "note",
@@ -109,16 +110,32 @@ def figures(manifest, folder):
     return {**manifest, "figures": figs}
 
 
+def shown(status, words):
+    """@brief A status as the page says it: the reader's words scorecard.json gives for it
+    ("statuses": "fail (outside tolerance)", "run failed", ...), else the word itself."""
+    return words.get(status, status) if isinstance(words, dict) else status
+
+
+def legend(words):
+    """@brief The legend's statuses by colour class, in the reader's words."""
+    groups = {"pass": [], "fail": [], "unc": [], "na": []}
+    for status in ("pass", "fail", "failed", "not converged", "reference uncertain", "skipped", "not applicable"):
+        groups[STATUS_CLASS.get(status, "na")].append(shown(status, words))
+    groups["na"].append("not judged")
+    return [(cls, ", ".join(names)) for cls, names in groups.items()]
+
+
 def context(card, manifest=None, folder="."):
     """@brief Everything the scorecard template reads. @param card the parsed scorecard.json
     @param manifest the parsed figures.json beside it, or None @param folder the scorecard's folder"""
     for k in ("method", "command", "version", "scenes"):
         if k not in card:
             raise InputProblem(f"scorecard.json: key '{k}' missing (expected a `beamimpact score` result)")
-    rows = []
+    rows, words = [], card.get("statuses")
     for s in card["scenes"]:
         for q in s.get("quantities", []) or [{}]:
-            rows.append({"scene": s, "q": q, "cls": STATUS_CLASS.get(q.get("status", s.get("status")), "na"),
+            status = q.get("status", s.get("status", ""))
+            rows.append({"scene": s, "q": q, "cls": STATUS_CLASS.get(status, "na"), "status": shown(status, words),
                          "margin": margin(q) if q else None,
                          "extra": extra(s, SCENE) + extra(q, QUANTITY) + extra(q.get("ladder"), QUANTITY_LADDER)})
     counts = card.get("counts") or {}
@@ -133,4 +150,5 @@ def context(card, manifest=None, folder="."):
             "tightest": tightest(rows), "ladders": ladders(card["scenes"]),
             "rules": list((card.get("rules") or {}).items()), "units": list((card.get("units") or {}).items()),
             "ida": card.get("ida_reference") or IDA_REFERENCE.get(card.get("references"), "IDA"),
-            "figures": figures(manifest, folder), "extra": extra(card, TOP)}
+            "figures": figures(manifest, folder), "extra": extra(card, TOP), "legend": legend(words),
+            "shown": lambda status: shown(status, words)}

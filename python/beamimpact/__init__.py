@@ -1,5 +1,6 @@
-"""beamimpact from Python: scenes, runs through the method registry, run directories and the
-compare command's norms, over the C++ library (beamimpact._core).
+"""beamimpact from Python: scenes, runs through the method registry, run directories, the
+compare command's norms, and the verify, score and conform commands, over the C++ library
+(beamimpact._core).
 
     import beamimpact
     scene = beamimpact.load_scene("s1_central")   # a shipped scene by name, or any scene file
@@ -29,7 +30,7 @@ from ._core import InputError
 from .fields import read_fields
 
 __all__ = ["InputError", "Scene", "Run", "load_scene", "run", "read_run", "read_fields", "compare",
-           "norm", "sweep", "verify", "methods", "scenes", "data_root"]
+           "norm", "sweep", "verify", "score", "conform", "load_methods", "methods", "scenes", "data_root"]
 __version__ = _core.__version__
 
 #: A scene given as a loaded Scene or as the path of its TOML file.
@@ -261,11 +262,74 @@ def verify(matrix: Union[str, os.PathLike] = "verification/matrix.toml", out: Un
     taken as it is, as the command does (docs/resuming.md); `fresh=True` runs everything again
     (`--fresh`). A relative `matrix` that does not exist here is the shipped one (data_root()),
     so the default works from any folder."""
+    return _core.verify(str(_core.resolve_data_file(os.fspath(matrix))), str(out), tier, only, jobs,
+                        _exe("verify", exe), fresh)
+
+
+def _exe(command: str, exe: Optional[Union[str, os.PathLike]]) -> str:
+    """The beamimpact program a command's runs start: `exe`, else $BEAMIMPACT_EXE, else the program
+    installed with this package, else `beamimpact` on PATH."""
     exe = exe or os.environ.get("BEAMIMPACT_EXE") or _program() or shutil.which("beamimpact")
     if not exe:
-        raise FileNotFoundError("verify: no beamimpact program found beside this package nor on PATH "
+        raise FileNotFoundError(f"{command}: no beamimpact program found beside this package nor on PATH "
                                 "(pass exe= or set BEAMIMPACT_EXE)")
-    return _core.verify(str(_core.resolve_data_file(os.fspath(matrix))), str(out), tier, only, jobs, str(exe), fresh)
+    return str(exe)
+
+
+def load_methods(*files: Union[str, os.PathLike]) -> None:
+    """Adds the external methods declared in methods files to the registry, as `--methods FILE`
+    does (docs/protocol.md); a file already read is not read again. Bad files raise InputError."""
+    for f in files:
+        _core.load_methods_file(os.fspath(f))
+
+
+def score(method: Union[str, Sequence[str]], out: Optional[Union[str, os.PathLike]] = None, *,
+          sets: Sequence[str] = ("paper", "hard", "exact"), scenes: Sequence[str] = (),
+          references: str = "converged", ladder: bool = True, rungs: int = 3,
+          cards: Optional[Union[str, os.PathLike]] = None, cache: Optional[Union[str, os.PathLike]] = None,
+          baseline: Optional[Union[str, os.PathLike]] = None, jobs: int = 1, timeout: float = 900.0,
+          methods: Sequence[Union[str, os.PathLike]] = (), exe: Optional[Union[str, os.PathLike]] = None) -> dict:
+    """`beamimpact score` as a call (the same library function, docs/protocol.md): scores `method`
+    (a name, or several) on the benchmark set under each scene's card and writes each scorecard.json
+    (under `out`, default score-NAME; NAME/ for each of several methods). The options are the
+    command's: `sets`, `scenes` (by name; default every scene of the sets), `references`
+    ("converged" or "matrix"), `ladder` (False: --no-ladder), `rungs`, `cards` (default the shipped
+    verification/cards.toml), `cache` (the reference cache; default as the command's), `baseline`
+    (an earlier scorecard.json: the ratchet), `jobs`, `timeout` (s per run); `methods`: methods
+    files to read first (load_methods). Each run is a process of the `beamimpact` program `exe`
+    (found as verify() finds it). No page is rendered (reports/render.py scorecard DIR makes it).
+
+    Returns {"passed": bool, "exit_code": the command's (0, 1, or 128 + a signal), "command",
+    "cache" and "paths" (the scorecard.json files written; pathlib.Path), "scorecards": {name:
+    scorecard.json's dict (its "verdict", "counts", "scenes" with every quantity's "status"), with
+    "ratchet": {"grown", "improved"} or None}}. Bad options raise InputError, as the command exits 2."""
+    load_methods(*methods)
+    o = _core.ScoreOptions()
+    o.methods = [method] if isinstance(method, str) else list(method)
+    o.out = os.fspath(out) if out is not None else ""
+    o.sets, o.scenes, o.references, o.ladder, o.rungs = list(sets), list(scenes), references, ladder, rungs
+    o.cards = os.fspath(cards) if cards is not None else ""
+    o.cache = os.fspath(cache) if cache is not None else ""
+    o.baseline = os.fspath(baseline) if baseline is not None else ""
+    o.jobs, o.timeout = jobs, float(timeout)
+    return _core.score(o, _exe("score", exe))
+
+
+def conform(method: str, out: Optional[Union[str, os.PathLike]] = None, *, scenes: Sequence[str] = (),
+            timeout: float = 600.0, methods: Sequence[Union[str, os.PathLike]] = ()) -> dict:
+    """`beamimpact conform` as a call (the same library function, docs/protocol.md): runs the
+    external method `method` on the conformance scenes (`scenes`, default all; the malformed one
+    always) into `out` (default conform-NAME), checks every rule of the protocol and writes
+    junit.xml and conform.json there. `methods`: methods files to read first (load_methods);
+    `timeout`: s per run. Returns conform.json's dict ("verdict": "passed" or "failed", "counts",
+    every rule's "results") with "passed" (bool) and "paths" (the files written). An unknown or
+    built-in method, or bad options, raise InputError, as the command exits 2."""
+    load_methods(*methods)
+    o = _core.ConformOptions()
+    o.method = method
+    o.out = os.fspath(out) if out is not None else ""
+    o.scenes, o.timeout = list(scenes), float(timeout)
+    return _core.conform(o)
 
 
 def _program() -> Optional[str]:

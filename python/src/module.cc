@@ -21,6 +21,8 @@
 #include <solver/util/InputError.hpp>
 #include <solver/util/Progress.hpp>
 #include <verification/compare/compare_runs.hpp>
+#include <verification/matrix/conform.hpp>
+#include <verification/matrix/score.hpp>
 #include <verification/matrix/sweep.hpp>
 #include <verification/matrix/verify.hpp>
 
@@ -169,6 +171,51 @@ py::object verify(const std::filesystem::path& matrix, const std::filesystem::pa
   return to_python(verification::norms_json(r->context, r->items));
 }
 
+/// The score command (verification::score) with the GIL released; writes each scorecard.json and
+/// returns the verdict, the exit code, the command, the cache, the files written and each method's
+/// scorecard (scorecard.json's dict, with its ratchet against the baseline when one was given).
+py::dict score(const verification::ScoreOptions& o, const std::filesystem::path& exe) {
+  verification::ScoreResult r;
+  std::vector<std::filesystem::path> written;
+  {
+    py::gil_scoped_release release;
+    r = verification::score(o, exe);
+    written = verification::write_score_reports(o, r);
+  }
+  py::dict cards;
+  for (const verification::MethodScore& m : r.methods) {
+    nlohmann::json j = verification::scorecard_json(verification::score_context(o, r, m), m.rows, m.verdict);
+    j["ratchet"] = m.ratchet ? nlohmann::json{{"grown", m.ratchet->grown}, {"improved", m.ratchet->improved}}
+                             : nlohmann::json();
+    cards[py::str(m.method)] = to_python(j);
+  }
+  py::dict d;
+  d["passed"] = r.passed();
+  d["exit_code"] = r.exit_code();
+  d["command"] = r.command;
+  d["cache"] = r.cache;
+  d["paths"] = written;
+  d["scorecards"] = cards;
+  return d;
+}
+
+/// The conform command (verification::conform) with the GIL released; writes junit.xml and
+/// conform.json and returns conform.json's dict with "passed" and the files written ("paths").
+py::object conform(const verification::ConformOptions& o) {
+  verification::ConformResult r;
+  std::vector<std::filesystem::path> written;
+  {
+    py::gil_scoped_release release;
+    r = verification::conform(o);
+    written = verification::write_conform_reports(o, r);
+  }
+  nlohmann::json j = verification::conform_json(o, r);
+  j["passed"] = r.passed();
+  py::dict d = to_python(j);
+  d["paths"] = written;
+  return d;
+}
+
 /// One contact's statistics from its samples by ContactStats (the rule of every C++ method).
 py::dict contact_stats(const std::vector<double>& t, const std::vector<double>& R,
                        const std::vector<double>& tau, const std::vector<double>& dt,
@@ -191,6 +238,36 @@ py::dict contact_stats(const std::vector<double>& t, const std::vector<double>& 
   d["stick_steps"] = c.stick_steps;
   d["slip_steps"] = c.slip_steps;
   return d;
+}
+
+/// The score and conform commands (score(), conform()), their options, and methods files.
+void add_protocol(py::module_& m) {
+  py::class_<verification::ScoreOptions>(m, "ScoreOptions", "verification::ScoreOptions (score.hpp)")
+      .def(py::init<>())
+      .def_readwrite("methods", &verification::ScoreOptions::methods)
+      .def_readwrite("out", &verification::ScoreOptions::out)
+      .def_readwrite("cards", &verification::ScoreOptions::cards)
+      .def_readwrite("cache", &verification::ScoreOptions::cache)
+      .def_readwrite("baseline", &verification::ScoreOptions::baseline)
+      .def_readwrite("jobs", &verification::ScoreOptions::jobs)
+      .def_readwrite("timeout", &verification::ScoreOptions::timeout)
+      .def_readwrite("sets", &verification::ScoreOptions::sets)
+      .def_readwrite("scenes", &verification::ScoreOptions::scenes)
+      .def_readwrite("references", &verification::ScoreOptions::references)
+      .def_readwrite("ladder", &verification::ScoreOptions::ladder)
+      .def_readwrite("rungs", &verification::ScoreOptions::rungs);
+  m.def("score", &score, py::arg("options"), py::arg("exe"),
+        "The score command as a library call (runs started with exe); writes each scorecard.json");
+  py::class_<verification::ConformOptions>(m, "ConformOptions", "verification::ConformOptions (conform.hpp)")
+      .def(py::init<>())
+      .def_readwrite("method", &verification::ConformOptions::method)
+      .def_readwrite("out", &verification::ConformOptions::out)
+      .def_readwrite("timeout", &verification::ConformOptions::timeout)
+      .def_readwrite("scenes", &verification::ConformOptions::scenes);
+  m.def("conform", &conform, py::arg("options"),
+        "The conform command as a library call; writes junit.xml and conform.json, returns its dict");
+  m.def("load_methods_file", &load_methods_file, py::arg("file"),
+        "Adds a methods file's external methods to the registry (as --methods FILE)");
 }
 
 }  // namespace
@@ -264,6 +341,7 @@ PYBIND11_MODULE(_core, m) {
         py::arg("jobs"), py::arg("exe"), py::arg("fresh") = false,
         "The verify command as a library call (runs started with exe); writes its reports to out and "
         "returns norms.json's dict");
+  add_protocol(m);
   m.attr("merge_steps") = kMergeSteps;  // the default merge gap's open steps (ContactIntervals.hpp)
   m.def("default_merge_gap", &default_merge_gap, py::arg("step"),
         "s, the default merge gap of samples step s apart (solver/record/ContactIntervals.hpp)");

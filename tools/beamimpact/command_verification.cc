@@ -120,7 +120,7 @@ void sweep(SweepOptions o) {
         fmt::print("  {} {}", n, x && x->value ? fmt::format("{:.3e}", *x->value) : "n/a");
       }
     } else {
-      fmt::print("  {}: {}", status_name(p.outcome.status), p.outcome.message);
+      fmt::print("  {}: {}", to_string(p.outcome.status), p.outcome.message);
     }
     fmt::print("\n");
   }

@@ -1,6 +1,7 @@
 #include <verification/matrix/conform.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -18,6 +19,7 @@
 #include <solver/schema/output_schema.hpp>
 #include <solver/util/InputError.hpp>
 #include <solver/util/write_file_atomic.hpp>
+#include <verification/matrix/protocol_inputs.hpp>
 #include <verification/matrix/reports.hpp>
 
 namespace beamimpact::verification {
@@ -44,12 +46,6 @@ std::string read_text(const fs::path& f) {
 /// code of each from what the method declares it accepts (the check api::run makes).
 std::vector<ConformScene> conformance_set(const Method& m, const fs::path& root, const fs::path& dir,
                                           const std::vector<std::string>& only) {
-  for (const std::string& name : only)
-    if (std::find(conform_scene_names().begin(), conform_scene_names().end(), name) ==
-        conform_scene_names().end())
-      throw InputError("command line", "--scenes",
-                       fmt::format("expected names of conformance scenes ({}), got '{}'",
-                                   fmt::join(conform_scene_names(), ", "), name));
   fs::create_directories(dir);
   const fs::path scenes = root / "verification/scenes";
   std::vector<ConformScene> set = {
@@ -224,10 +220,11 @@ const std::vector<std::pair<std::string, std::string>>& protocol_rules() {
   return r;
 }
 
-std::vector<RuleResult> conform(const Method& m, const fs::path& data_root, const fs::path& out,
-                                double timeout, const std::vector<std::string>& scenes) {
-  if (m.in_process())
-    throw InputError(m.origin, "conform", "'" + m.name + "' is built in; conform checks an external program");
+namespace {
+
+/// Every rule on the runs of the external method `m` on the conformance set (out/runs, out/scenes).
+std::vector<RuleResult> check_rules(const Method& m, const fs::path& data_root, const fs::path& out,
+                                    double timeout, const std::vector<std::string>& scenes) {
   std::vector<RuleResult> results;
   Checker check(results);
   const std::vector<ConformScene> set = conformance_set(m, data_root, out / "scenes", scenes);
@@ -261,6 +258,34 @@ std::vector<RuleResult> conform(const Method& m, const fs::path& data_root, cons
           "conform needs at least one scene the method models");
   }
   return results;
+}
+
+}  // namespace
+
+void ConformOptions::validate() const {
+  const Method& m = runnable_method(method, "conform");
+  if (m.in_process())
+    throw InputError(m.origin, "conform", "'" + m.name + "' is built in; conform checks an external program");
+  if (!(timeout > 0.0) || !std::isfinite(timeout))
+    throw InputError("command line", "--timeout", fmt::format("expected seconds > 0, got {}", timeout));
+  for (const std::string& name : scenes)
+    if (std::find(conform_scene_names().begin(), conform_scene_names().end(), name) ==
+        conform_scene_names().end())
+      throw InputError("command line", "--scenes",
+                       fmt::format("expected names of conformance scenes ({}), got '{}'",
+                                   fmt::join(conform_scene_names(), ", "), name));
+}
+
+fs::path ConformOptions::out_dir() const { return out.empty() ? fs::path("conform-" + method) : out; }
+
+ConformResult conform(const ConformOptions& o) {
+  o.validate();
+  const Method& m = runnable_method(o.method, "conform");
+  const fs::path root = shipped_data("conform");
+  const std::string command =
+      fmt::format("beamimpact conform {} --out {} --timeout {}{}", m.name, o.out_dir().string(), o.timeout,
+                  o.scenes.empty() ? "" : fmt::format(" --scenes {}", fmt::join(o.scenes, ",")));
+  return ConformResult{m.name, m.origin, command, check_rules(m, root, o.out_dir(), o.timeout, o.scenes)};
 }
 
 void write_conform_junit(const fs::path& file, const std::string& method,
@@ -298,9 +323,7 @@ int ConformResult::not_applicable() const {
 
 int ConformResult::checks() const { return static_cast<int>(results.size()) - not_applicable(); }
 
-void write_conform_reports(const fs::path& dir, const ConformResult& r, const std::string& command,
-                           double timeout_seconds) {
-  write_conform_junit(dir / "junit.xml", r.method, r.results);
+nlohmann::json conform_json(const ConformOptions& o, const ConformResult& r) {
   nlohmann::json rules = nlohmann::json::array(), results = nlohmann::json::array();
   for (const auto& [rule, says] : protocol_rules()) rules.push_back({{"rule", rule}, {"definition", says}});
   for (const RuleResult& x : r.results)
@@ -310,18 +333,24 @@ void write_conform_reports(const fs::path& dir, const ConformResult& r, const st
                        {"passed", x.passed},
                        {"not_applicable", x.skipped},
                        {"message", x.message}});
-  const nlohmann::json j = {
+  return {
       {"method", r.method},
       {"origin", r.origin},
-      {"command", command},
+      {"command", r.command},
       {"version", kVersion},
       {"made", utc_now()},
-      {"timeout_seconds", timeout_seconds},
+      {"timeout_seconds", o.timeout},
       {"verdict", r.passed() ? "passed" : "failed"},
       {"rules", rules},
       {"results", results},
       {"counts", {{"checks", r.checks()}, {"broken", r.broken()}, {"not_applicable", r.not_applicable()}}}};
-  write_file_atomic(dir / "conform.json", j.dump(1) + "\n");
+}
+
+std::vector<fs::path> write_conform_reports(const ConformOptions& o, const ConformResult& r) {
+  const fs::path dir = o.out_dir();
+  write_conform_junit(dir / "junit.xml", r.method, r.results);
+  write_file_atomic(dir / "conform.json", conform_json(o, r).dump(1) + "\n");
+  return {dir / "junit.xml", dir / "conform.json"};
 }
 
 }  // namespace beamimpact::verification

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include <api/registry.hpp>
 
 namespace beamimpact::verification {
@@ -33,16 +35,23 @@ const std::vector<std::string>& conform_scene_names();
 /// result twice.
 const std::vector<std::pair<std::string, std::string>>& protocol_rules();
 
-/// @brief Runs the external method `m` on the conformance set and checks every rule.
-/// @param m an external method; @param data_root the folder holding verification/scenes/
-/// A scene the program refuses with exit 2 and one line of reason is not applicable (a
-/// RuleResult with skipped = true), whatever the method declares; only a broken rule fails.
-/// @param out the output directory (runs/, scenes/); @param timeout_seconds per run
-/// @param scenes the conformance scenes to run (conform_scene_names(); empty: all); the malformed
-/// scene is always run. Throws InputError for an unknown name.
-std::vector<RuleResult> conform(const Method& m, const std::filesystem::path& data_root,
-                                const std::filesystem::path& out, double timeout_seconds,
-                                const std::vector<std::string>& scenes = {});
+/// @brief What `beamimpact conform` checks, and where: the options of the command and of the
+/// Python module's conform().
+struct ConformOptions {
+  std::string method;         ///< the external method checked (`beamimpact methods`)
+  std::filesystem::path out;  ///< runs/, scenes/, junit.xml, conform.json; "": conform-NAME (out_dir())
+  double timeout = 600.0;     ///< s, per run (> 0)
+  /// The conformance scenes to run (conform_scene_names(); empty: all); the malformed scene is
+  /// always run.
+  std::vector<std::string> scenes;
+
+  /// @brief Throws InputError naming the option and what was expected: a method that is unknown,
+  /// built in or cannot run here, a timeout that is no number of seconds > 0, a scene name that is
+  /// not a conformance scene's.
+  void validate() const;
+  /// @brief `out`, or conform-NAME when it is empty.
+  std::filesystem::path out_dir() const;
+};
 
 /// @brief JUnit XML of a conformance check: one test case per rule and run, a failure naming the
 /// rule and the file.
@@ -52,8 +61,9 @@ void write_conform_junit(const std::filesystem::path& file, const std::string& m
 /// @brief What a conformance check found, and its one verdict: passed when no rule is broken (a
 /// scene refused with exit 2 and a reason is not applicable, not a check).
 struct ConformResult {
-  std::string method;  ///< the method checked
-  std::string origin;  ///< the methods file that declared it
+  std::string method;   ///< the method checked
+  std::string origin;   ///< the methods file that declared it
+  std::string command;  ///< the command line that makes this check again
   std::vector<RuleResult> results;
   /// @brief Checks that broke a rule.
   int broken() const;
@@ -65,11 +75,18 @@ struct ConformResult {
   bool passed() const { return broken() == 0; }
 };
 
-/// @brief Writes dir/junit.xml and dir/conform.json (the rules, every result, the counts and how
-/// it was made: the data of the page `reports/render.py conform DIR` renders).
-/// @param dir the conform output folder; @param r the result; @param command the command line
-/// @param timeout_seconds the time limit per run it was made with
-void write_conform_reports(const std::filesystem::path& dir, const ConformResult& r,
-                           const std::string& command, double timeout_seconds);
+/// @brief Runs the external method o.method on the conformance set into o.out_dir() (runs/,
+/// scenes/) and checks every rule on what it wrote and how it exited. A scene the program refuses
+/// with exit 2 and one line of reason is not applicable (a RuleResult with skipped = true),
+/// whatever the method declares; only a broken rule fails. Throws InputError for bad options
+/// (validate()), an unknown or built-in method, or one whose program cannot run here.
+ConformResult conform(const ConformOptions& o);
+
+/// @brief conform.json's document: the rules, every result, the counts, the verdict and how it was
+/// made (the data of the page `reports/render.py conform DIR` renders).
+nlohmann::json conform_json(const ConformOptions& o, const ConformResult& r);
+
+/// @brief Writes o.out_dir()/junit.xml and conform.json (conform_json). Returns the two files.
+std::vector<std::filesystem::path> write_conform_reports(const ConformOptions& o, const ConformResult& r);
 
 }  // namespace beamimpact::verification

@@ -13,6 +13,7 @@
 #include <api/child_process.hpp>
 #include <api/external_method.hpp>
 #include <api/registry.hpp>
+#include <solver/util/InputError.hpp>
 #include <verification/matrix/finished_runs.hpp>
 #include <verification/matrix/interruption.hpp>
 
@@ -90,7 +91,7 @@ JobOutcome execute_job(const JobSpec& spec, const std::filesystem::path& dir, co
 }
 
 nlohmann::json outcome_json(const JobOutcome& o) {
-  return {{"status", static_cast<int>(o.status)},
+  return {{"status", to_string(o.status)},
           {"message", o.message},
           {"process_seconds", o.process_seconds},
           {"solver_seconds", o.solver_seconds},
@@ -100,12 +101,14 @@ nlohmann::json outcome_json(const JobOutcome& o) {
 }
 
 JobOutcome outcome_from_json(const JobSpec& spec, const std::filesystem::path& dir, const nlohmann::json& j) {
-  const int status = j.at("status").get<int>();
-  if (status < 0 || status > static_cast<int>(JobOutcome::Status::kNotApplicable))
-    throw std::runtime_error("unknown run status " + std::to_string(status));
+  const nlohmann::json& word = j.at("status");
+  const JobOutcome::Status status =
+      word.is_string() ? parse_run_status(word.get<std::string>(), dir.string(), "status")
+                       : parse_run_status(to_string(static_cast<JobOutcome::Status>(word.get<int>())),
+                                          dir.string(), "status");
   JobOutcome o{spec,
                dir,
-               static_cast<JobOutcome::Status>(status),
+               status,
                j.at("message").get<std::string>(),
                j.at("process_seconds").get<double>(),
                j.at("solver_seconds").get<double>(),
@@ -135,12 +138,12 @@ std::vector<JobSpec> schedule_order(const std::vector<JobSpec>& specs) {
 }
 
 std::string progress_line(std::size_t done, std::size_t total, const JobOutcome& o) {
-  return fmt::format("[{}/{}] {}: {}{} ({:.2f} s{})\n", done, total, o.spec.label(), status_name(o.status),
+  return fmt::format("[{}/{}] {}: {}{} ({:.2f} s{})\n", done, total, o.spec.label(), to_string(o.status),
                      o.message.empty() ? "" : ": " + o.message, o.process_seconds,
                      o.resumed ? ", finished earlier" : "");
 }
 
-const char* status_name(JobOutcome::Status s) {
+const char* to_string(JobOutcome::Status s) {
   switch (s) {
     case JobOutcome::Status::kOk: return "ok";
     case JobOutcome::Status::kFailed: return "failed";
@@ -148,6 +151,15 @@ const char* status_name(JobOutcome::Status s) {
     case JobOutcome::Status::kNotApplicable: return "not applicable";
   }
   return "?";
+}
+
+JobOutcome::Status parse_run_status(std::string_view text, const std::string& file, const std::string& key) {
+  for (auto s : {JobOutcome::Status::kOk, JobOutcome::Status::kFailed, JobOutcome::Status::kSkipped,
+                 JobOutcome::Status::kNotApplicable})
+    if (text == to_string(s)) return s;
+  throw InputError(
+      file, key,
+      fmt::format("expected a run status ('ok', 'failed', 'skipped', 'not applicable'), got '{}'", text));
 }
 
 std::map<std::string, JobOutcome> execute_jobs(const std::vector<JobSpec>& specs,

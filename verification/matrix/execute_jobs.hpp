@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -41,8 +42,14 @@ struct JobOutcome {
 /// @brief The outcome's run: JobOutcome::run, or read from its directory when the outcome has none.
 std::shared_ptr<const StoredRun> stored_run(const JobOutcome& o);
 
-/// @brief Name of a status: "ok", "failed", "skipped", "not applicable".
-const char* status_name(JobOutcome::Status s);
+/// @brief A run outcome's word (scorecard.json, sweep.json, the progress lines, a finished run's
+/// record): "ok", "failed", "skipped", "not applicable".
+const char* to_string(JobOutcome::Status s);
+
+/// @brief The run outcome whose word (to_string) is `text`. Throws InputError(file, key, the
+/// words allowed) for any other text.
+/// @param text the word; @param file the file it was read from; @param key its key there
+JobOutcome::Status parse_run_status(std::string_view text, const std::string& file, const std::string& key);
 
 /// @brief Runs every spec (keys must be unique) into out_dir/<key>/ with `jobs` workers; a run
 /// is ok when its process exits 0 and left a summary.json. Returns outcomes by key.
@@ -68,10 +75,11 @@ JobOutcome execute_job(const JobSpec& spec, const std::filesystem::path& dir, co
                        const std::string& why_not, double timeout_seconds);
 
 /// @brief An outcome as JSON, without its spec, directory and run (between MPI ranks, in a
-/// finished run's record): status, message, process_seconds, solver_seconds, steps, dt.
+/// finished run's record): status (its word), message, process_seconds, solver_seconds, steps, dt.
 nlohmann::json outcome_json(const JobOutcome& o);
 
-/// @brief The inverse of outcome_json(); the run is not read (stored_run() reads it).
+/// @brief The inverse of outcome_json() (a status given as its number, as records written before
+/// the word was, is read too); the run is not read (stored_run() reads it).
 JobOutcome outcome_from_json(const JobSpec& spec, const std::filesystem::path& dir, const nlohmann::json& j);
 
 /// @brief The progress line of a finished run ("[3/10] s1_central paper dt=0.01: ok (0.21 s)").

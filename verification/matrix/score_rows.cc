@@ -50,7 +50,7 @@ double per_difference(const Norm& n) {
 /// A quantity judged on a single comparison (one run, or a ladder's finest rung).
 ScoreQuantity single(const Gate& g, const Comparison& cmp, const std::optional<Comparison>& spread,
                      const std::string& spread_note, const char* judged) {
-  ScoreQuantity q{g.metric, std::nullopt, g.tol,        std::nullopt, "fail",
+  ScoreQuantity q{g.metric, std::nullopt, g.tol,        std::nullopt, QuantityStatus::kFail,
                   "",       judged,       std::nullopt, std::nullopt, std::nullopt};
   const Norm* s = spread ? spread->find(g.metric) : nullptr;
   q.uncertainty = s ? s->value : spread ? std::nullopt : std::optional<double>(0.0);
@@ -67,9 +67,9 @@ ScoreQuantity single(const Gate& g, const Comparison& cmp, const std::optional<C
   q.status = verdict(*r.value, *g.tol, q.uncertainty.value_or(INFINITY), error_scale(*n));
   const std::string spread_text =
       spread && q.uncertainty ? fmt::format("the reference's spread {:.3g}", *q.uncertainty) : "";
-  if (q.status == "pass")
+  if (q.status == QuantityStatus::kPass)
     q.note = g.why + tail;
-  else if (q.status == "fail")
+  else if (q.status == QuantityStatus::kFail)
     q.note = fmt::format("{} = {:.4g} exceeds {:g}", g.metric, *r.value, *g.tol) +
              (spread_text.empty() ? "" : " by more than " + spread_text) + tail;
   else
@@ -90,9 +90,16 @@ ScoreQuantity on_ladder(const Gate& g, const std::vector<Comparison>& cmps) {
   const Norm& fine = *cmps.back().find(g.metric);
   const double k = per_difference(fine);  // the error's unit per unit of the quantity
   // Rungs within tol / 10 of each other agree: refinement no longer changes what is judged.
-  ScoreQuantity q{g.metric,        std::nullopt, g.tol,   std::nullopt,
-                  "not converged", "",           "limit", ladder_limit(values, 0.1 * *g.tol / k),
-                  fine.b,          std::nullopt};
+  ScoreQuantity q{g.metric,
+                  std::nullopt,
+                  g.tol,
+                  std::nullopt,
+                  QuantityStatus::kNotConverged,
+                  "",
+                  "limit",
+                  ladder_limit(values, 0.1 * *g.tol / k),
+                  fine.b,
+                  std::nullopt};
   const LadderResult& L = *q.ladder;
   if (!L.limit) {
     q.note = fmt::format("not converged: {} (rung values {:.6g})", L.why_not, fmt::join(values, ", "));
@@ -102,9 +109,9 @@ ScoreQuantity on_ladder(const Gate& g, const std::vector<Comparison>& cmps) {
   q.uncertainty = *L.uncertainty * k;
   q.allowed = kRichardsonFactor * *q.uncertainty + 0.1 * *g.tol;
   const double slack = tolerance_slack(*q.allowed, *q.error, error_scale(fine));
-  q.status = *q.error <= *q.allowed + slack ? "pass" : "fail";
+  q.status = *q.error <= *q.allowed + slack ? QuantityStatus::kPass : QuantityStatus::kFail;
   const std::string order = L.order ? fmt::format("order {:.3g}", *L.order) : "rungs agree";
-  if (q.status == "pass")
+  if (q.status == QuantityStatus::kPass)
     q.note = fmt::format("limit {:.6g} ({}) within {:.3g} of exact {:.6g}; tolerance: {}", *L.limit, order,
                          *q.allowed, *fine.b, g.why);
   else
@@ -124,7 +131,7 @@ std::optional<Comparison> reference_spread(const ScoreItem& it, const JobOutcome
   const JobOutcome check = outcome_of(runs, *it.reference_check, "not run");
   const std::string label = "reference check " + it.reference_check->settings_label();
   if (check.status != Status::kOk) {
-    note = label + " " + status_name(check.status) + " (spread unknown): " + check.message;
+    note = label + " " + to_string(check.status) + " (spread unknown): " + check.message;
     return Comparison{};
   }
   try {
@@ -135,8 +142,18 @@ std::optional<Comparison> reference_spread(const ScoreItem& it, const JobOutcome
   }
 }
 
+/// The status of a quantity whose scored run did not finish: failed, skipped (the method or its
+/// program is not here) or not applicable (the method refused the scene).
+QuantityStatus not_finished(Status run) {
+  switch (run) {
+    case Status::kSkipped: return QuantityStatus::kSkipped;
+    case Status::kNotApplicable: return QuantityStatus::kNotApplicable;
+    default: return QuantityStatus::kFailed;
+  }
+}
+
 /// Every quantity of a row not judged: the status and its reason.
-void not_judged(ScoreRow& row, const std::string& status, const std::string& why) {
+void not_judged(ScoreRow& row, QuantityStatus status, const std::string& why) {
   for (const Gate& g : row.item->gates)
     row.quantities.push_back(ScoreQuantity{g.metric, std::nullopt, g.tol, std::nullopt, status, why, "",
                                            std::nullopt, std::nullopt, std::nullopt});
@@ -155,7 +172,7 @@ void judge(ScoreRow& row, const JobOutcome& ref, const std::map<std::string, Job
     const auto reference = stored_run(ref);
     for (const JobOutcome& o : row.rungs) cmps.push_back(compare_runs(*stored_run(o), *reference, options));
   } catch (const std::exception& e) {
-    not_judged(row, "failed", e.what());
+    not_judged(row, QuantityStatus::kFailed, e.what());
     return;
   }
   std::string spread_note;
@@ -181,15 +198,15 @@ std::vector<ScoreRow> score_rows(const std::vector<ScoreItem>& items,
     const auto bad = std::find_if(row.rungs.begin(), row.rungs.end(),
                                   [](const JobOutcome& o) { return o.status != Status::kOk; });
     if (row.outcome.status != Status::kOk) {
-      not_judged(row, status_name(row.outcome.status), row.outcome.message);
+      not_judged(row, not_finished(row.outcome.status), row.outcome.message);
     } else if (bad != row.rungs.end()) {
       not_judged(
-          row, "failed",
-          "ladder rung " + bad->spec.settings_label() + " " + status_name(bad->status) + ": " + bad->message);
+          row, QuantityStatus::kFailed,
+          "ladder rung " + bad->spec.settings_label() + " " + to_string(bad->status) + ": " + bad->message);
     } else if (const JobOutcome ref = outcome_of(runs, it.reference, "not run"); ref.status != Status::kOk) {
       not_judged(
-          row, "skipped",
-          "reference " + it.reference.settings_label() + " " + status_name(ref.status) + ": " + ref.message);
+          row, QuantityStatus::kSkipped,
+          "reference " + it.reference.settings_label() + " " + to_string(ref.status) + ": " + ref.message);
     } else {
       judge(row, ref, runs);
     }

@@ -18,12 +18,12 @@ ScoreVerdict score_verdict(const std::string& name, const std::vector<ScoreRow>&
     for (const ScoreQuantity& q : r.quantities) {
       ++v.counts[q.status];
       ++quantities;
-      ok += q.status == "pass" || q.status == "not applicable";
+      ok += passes(q.status);
     }
   v.exit_code = ok == quantities ? 0 : 1;
   std::string tally;
   for (const auto& [status, n] : v.counts)
-    tally += fmt::format("{}{} {}", tally.empty() ? "" : ", ", n, status);
+    tally += fmt::format("{}{} {}", tally.empty() ? "" : ", ", n, describe(status));
   if (v.exit_code == 0)
     v.line = fmt::format("score {}: PASSED (every one of {} quantities: {})", name, quantities, tally);
   else

@@ -117,12 +117,12 @@ double tolerance_slack(double tol, double error, double scale) {
   return 4.0 * DBL_EPSILON * std::max({std::abs(tol), std::abs(error), std::abs(scale)});
 }
 
-std::string verdict(double error, double tol, std::optional<double> spread, double scale) {
-  if (!std::isfinite(error)) return "fail";
+QuantityStatus verdict(double error, double tol, std::optional<double> spread, double scale) {
+  if (!std::isfinite(error)) return QuantityStatus::kFail;
   const double s = spread.value_or(0.0), slack = tolerance_slack(tol, error, scale);
-  if (error + s <= tol + slack) return "pass";
-  if (error - s > tol + slack) return "fail";
-  return "reference uncertain";
+  if (error + s <= tol + slack) return QuantityStatus::kPass;
+  if (error - s > tol + slack) return QuantityStatus::kFail;
+  return QuantityStatus::kReferenceUncertain;
 }
 
 }  // namespace beamimpact::verification

@@ -21,6 +21,7 @@
 #include <verification/matrix/cards.hpp>
 #include <verification/matrix/evaluate.hpp>
 #include <verification/matrix/ladder.hpp>
+#include <verification/matrix/quantity_status.hpp>
 
 namespace beamimpact::verification {
 
@@ -38,8 +39,24 @@ struct ScoreItem {
   std::string set;             ///< the card's scene set
 };
 
-/// @brief What `beamimpact score` scores, and how.
+/// @brief What `beamimpact score` scores, and how: the options of the command, of
+/// verification::score (score.hpp) and of the Python module's score().
 struct ScoreOptions {
+  /// The scored methods (`beamimpact methods`): one, or several run in one set of jobs, each
+  /// scorecard in out/NAME.
+  std::vector<std::string> methods;
+  /// Output directory (runs/, scorecard.json, or NAME/ for each of several methods); "" is
+  /// score-NAME (score-NAME1-NAME2 for several): out_dir().
+  std::filesystem::path out;
+  /// The benchmark cards (docs/benchmark-cards.md); "" is verification/cards.toml of the data root.
+  std::filesystem::path cards;
+  /// Folder of cached reference runs; "": cache_dir()'s default.
+  std::filesystem::path cache;
+  /// An earlier scorecard.json of the same method, sets and ladder setting ("" none): an error
+  /// grown beyond its uncertainty since fails the verdict (the accuracy ratchet).
+  std::filesystem::path baseline;
+  int jobs = 1;            ///< runs in parallel (>= 1)
+  double timeout = 900.0;  ///< s per run (> 0)
   /// Scene sets, in this order: "paper" (verification/scenes/paper), "hard"
   /// (verification/scenes/hard), "exact" (the other scenes with an exact answer).
   std::vector<std::string> sets = {"paper", "hard", "exact"};
@@ -54,10 +71,18 @@ struct ScoreOptions {
   /// A name no card of the sets holds is bad input.
   std::vector<std::string> scenes;
 
-  /// @brief Throws InputError naming the option and the values allowed.
+  /// @brief Throws InputError naming the option and the values allowed: every option, each method
+  /// runnable here and named once, and each method with these settings (validate(method)).
+  void validate() const;
+  /// @brief Throws InputError naming the option and the values allowed (sets, references, rungs).
   /// @param method the scored method (a converged reference, ReferenceRank::kConverged, may not
   /// take matrix references: it would score its own runs)
   void validate(const Method& method) const;
+  /// @brief `out`, or score-NAME1-NAME2 when it is empty.
+  std::filesystem::path out_dir() const;
+  /// @brief `cache` (made absolute), else $BEAMIMPACT_REFERENCE_CACHE, else
+  /// $XDG_CACHE_HOME/beamimpact/references, else ~/.cache/beamimpact/references.
+  std::filesystem::path cache_dir() const;
 };
 
 /// @brief The converged references of `o` (the registry's methods of ReferenceRank::kConverged),
@@ -81,9 +106,8 @@ struct ScoreQuantity {
   /// The error's own uncertainty, same unit: the limit's (ladder.hpp) or the reference's spread
   /// (|reference - reference_check|); none when unknown, 0 against an exact reference.
   std::optional<double> uncertainty;
-  std::string status;  ///< "pass" | "fail" | "not converged" | "reference uncertain" | "not applicable" |
-                       ///< "failed" | "skipped"
-  std::string note;    ///< the tolerance's reason, or why the verdict is what it is
+  QuantityStatus status = QuantityStatus::kFail;  ///< scorecard.json's word: to_string(status)
+  std::string note;  ///< the tolerance's reason, or why the verdict is what it is
   /// "limit" (the ladder's extrapolation), "finest rung" (a quantity with no scalar value on a
   /// ladder: the finest run's error), "single run" (no ladder); "" when not judged.
   std::string judged;
@@ -105,14 +129,14 @@ struct ScoreRow {
 /// of 2.55 s carries round-off of 4.4e-16 s), so that round-off never decides a verdict.
 double tolerance_slack(double tol, double error, double scale);
 
-/// @brief The verdict on one quantity under a tolerance, given its uncertainty: "pass" if
-/// error + spread <= tol and "fail" if error - spread > tol, each with tolerance_slack; else
-/// "reference uncertain" (the reference cannot decide at this tolerance).
+/// @brief The verdict on one quantity under a tolerance, given its uncertainty: pass if
+/// error + spread <= tol and fail if error - spread > tol, each with tolerance_slack; else
+/// reference uncertain (the reference cannot decide at this tolerance).
 /// @param error the run's error against the reference
 /// @param tol the tolerance (same norm)
 /// @param spread the reference's uncertainty (same norm); none: the reference is taken as exact
 /// @param scale the largest value the error was computed from (0: the error and tol only)
-std::string verdict(double error, double tol, std::optional<double> spread, double scale = 0.0);
+QuantityStatus verdict(double error, double tol, std::optional<double> spread, double scale = 0.0);
 
 /// @brief Compares each finished run (and ladder) with its reference (compare_runs, run first).
 /// `runs` holds the outcomes by JobSpec::key(); a reference absent from it was not run (the
@@ -120,13 +144,14 @@ std::string verdict(double error, double tol, std::optional<double> spread, doub
 std::vector<ScoreRow> score_rows(const std::vector<ScoreItem>& items,
                                  const std::map<std::string, JobOutcome>& runs);
 
-/// @brief The overall verdict of a scorecard: exit code 0 when every quantity passed (a scene
-/// the method refused counts as not applicable, said in the line), 1 when any did not (fail, not
-/// converged, failed, or undecided: reference uncertain, skipped).
+/// @brief The overall verdict of a scorecard: exit code 0 when every quantity passes (passes():
+/// a scene the method refused counts as not applicable, said in the line), 1 when any does not
+/// (fail, not converged, failed, or undecided: reference uncertain, skipped).
 struct ScoreVerdict {
   int exit_code = 0;
-  std::string line;                   ///< "score NAME: PASSED ..." or "score NAME: FAILED ..."
-  std::map<std::string, int> counts;  ///< quantities by status
+  std::string
+      line;  ///< "score NAME: PASSED ..." or "score NAME: FAILED ...", statuses as describe() says them
+  std::map<QuantityStatus, int> counts;  ///< quantities by status
 };
 
 /// @brief The overall verdict of rows for method `name`.

@@ -32,7 +32,7 @@ nlohmann::json quantity_json(const ScoreQuantity& q) {
                       {"error", number(q.error)},
                       {"tol", number(q.tol)},
                       {"uncertainty", number(q.uncertainty)},
-                      {"status", q.status},
+                      {"status", to_string(q.status)},
                       {"judged", q.judged},
                       {"exact", number(q.exact)},
                       {"allowed", number(q.allowed)},
@@ -55,7 +55,7 @@ nlohmann::json scene_json(const ScoreRow& r, nlohmann::json quantities) {
   for (const JobOutcome& o : r.rungs)
     if (!it.ladder.rungs.empty())
       rungs.push_back({{"run", o.spec.settings_label()},
-                       {"status", status_name(o.status)},
+                       {"status", to_string(o.status)},
                        {"dt", o.dt},
                        {"steps", o.steps},
                        {"solver_seconds", o.solver_seconds},
@@ -70,13 +70,27 @@ nlohmann::json scene_json(const ScoreRow& r, nlohmann::json quantities) {
            it.reference_check ? nlohmann::json(it.reference_check->settings_label()) : nlohmann::json()},
           {"tolerances_from", it.source},
           {"ladder", {{"kind", it.ladder.kind}, {"why", it.ladder.why}, {"rungs", rungs}}},
-          {"status", status_name(r.outcome.status)},
+          {"status", to_string(r.outcome.status)},
           {"message", r.outcome.message},
           {"solver_seconds", r.outcome.solver_seconds},
           {"process_seconds", r.outcome.process_seconds},
           {"steps", r.outcome.steps},
           {"dt", r.outcome.dt},
           {"quantities", std::move(quantities)}};
+}
+
+/// The quantities by status, under their scorecard.json words.
+nlohmann::json counts_json(const std::map<QuantityStatus, int>& counts) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [status, n] : counts) j[to_string(status)] = n;
+  return j;
+}
+
+/// Each status's scorecard.json word with the words a reader is shown (the page's table).
+nlohmann::json status_words() {
+  nlohmann::json j = nlohmann::json::object();
+  for (QuantityStatus s : quantity_statuses()) j[to_string(s)] = describe(s);
+  return j;
 }
 
 }  // namespace
@@ -104,7 +118,8 @@ nlohmann::json scorecard_json(const ScoreContext& ctx, const std::vector<ScoreRo
           {"verdict", v.exit_code == 0 ? "passed" : "failed"},
           {"verdict_line", v.line},
           {"exit_code", v.exit_code},
-          {"counts", v.counts},
+          {"counts", counts_json(v.counts)},
+          {"statuses", status_words()},
           {"scenes", scenes},
           {"rules",
            {{"limit", "pass when |limit - exact| <= 1.25 x uncertainty + tol / 10 (4-ulp slack)"},

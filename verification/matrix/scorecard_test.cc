@@ -224,13 +224,14 @@ TEST(Scorecard, ABadCardIsInputErrorNamingTheKey) {
 TEST(Scorecard, ToleranceComparisonsCarryFourUlpsOfSlack) {
   // A contact_end of 2.55 s against an exact 2.5 s: |a - b| carries round-off of a few ulps of
   // 2.55 (4.4e-16 each), so 0.05 + 2.7e-16 is 0.05 to the precision the error has.
-  EXPECT_EQ(verdict(0.05 + 2.7e-16, 0.05, std::nullopt, 2.55), "pass");
-  EXPECT_EQ(verdict(0.05 + 1e-12, 0.05, std::nullopt, 2.55), "fail");  // beyond round-off: a real miss
-  EXPECT_EQ(verdict(0.05, 0.08, 0.02), "pass");                        // 0.07 <= 0.08
-  EXPECT_EQ(verdict(0.07, 0.08, 0.02), "reference uncertain");         // 0.09 > 0.08 >= 0.05
-  EXPECT_EQ(verdict(0.13, 0.08, 0.01), "fail");                        // 0.12 > 0.08
-  EXPECT_EQ(verdict(std::nan(""), 0.08, 0.01), "fail");                // no number is not a pass
-  EXPECT_EQ(verdict(1.0, 0.0, std::nullopt), "fail");                  // a count off by one
+  EXPECT_EQ(verdict(0.05 + 2.7e-16, 0.05, std::nullopt, 2.55), QuantityStatus::kPass);
+  EXPECT_EQ(verdict(0.05 + 1e-12, 0.05, std::nullopt, 2.55),
+            QuantityStatus::kFail);                                           // beyond round-off: a real miss
+  EXPECT_EQ(verdict(0.05, 0.08, 0.02), QuantityStatus::kPass);                // 0.07 <= 0.08
+  EXPECT_EQ(verdict(0.07, 0.08, 0.02), QuantityStatus::kReferenceUncertain);  // 0.09 > 0.08 >= 0.05
+  EXPECT_EQ(verdict(0.13, 0.08, 0.01), QuantityStatus::kFail);                // 0.12 > 0.08
+  EXPECT_EQ(verdict(std::nan(""), 0.08, 0.01), QuantityStatus::kFail);        // no number is not a pass
+  EXPECT_EQ(verdict(1.0, 0.0, std::nullopt), QuantityStatus::kFail);          // a count off by one
 }
 
 /// A run in memory: one contact whose force is `force` N from t = 0.2 to 0.6 s (impulse 0.4 x force).
@@ -276,7 +277,7 @@ TEST(Scorecard, TheRunIsComparedWithItsReferenceNotTheOtherWayRound) {
   ASSERT_TRUE(row.quantities.front().error);
   EXPECT_NEAR(*row.quantities.front().error, 0.25, 1e-12);
   EXPECT_EQ(row.quantities.front().judged, "single run");
-  EXPECT_EQ(row.quantities.front().status, "pass");
+  EXPECT_EQ(row.quantities.front().status, QuantityStatus::kPass);
 }
 
 TEST(Scorecard, ABiasCannotHideInTheDiscretisationError) {
@@ -289,7 +290,7 @@ TEST(Scorecard, ABiasCannotHideInTheDiscretisationError) {
   std::vector<ScoreItem> honest_item, biased_item, slight_item;
   const ScoreQuantity honest = score_memory(rungs(1.0), 0.04, honest_item).quantities.front();
   EXPECT_EQ(honest.judged, "limit");
-  EXPECT_EQ(honest.status, "pass") << honest.note;
+  EXPECT_EQ(honest.status, QuantityStatus::kPass) << honest.note;
   ASSERT_TRUE(honest.ladder && honest.ladder->order);
   EXPECT_NEAR(*honest.ladder->order, 1.0, 1e-6);  // e ~ h: order 1
   EXPECT_NEAR(*honest.error, 0.0, 1e-9);
@@ -297,21 +298,21 @@ TEST(Scorecard, ABiasCannotHideInTheDiscretisationError) {
   // is 3 % off with an uncertainty near 0: fail.
   const ScoreQuantity biased = score_memory(rungs(1.03), 0.04, biased_item).quantities.front();
   EXPECT_NEAR(std::abs(1.03 * 0.97 - 1.0), 0.0009, 1e-12);
-  EXPECT_EQ(biased.status, "fail") << biased.note;
+  EXPECT_EQ(biased.status, QuantityStatus::kFail) << biased.note;
   EXPECT_NEAR(*biased.error, 0.03, 1e-9);
   // Force x 1.01: 1 % off, beyond 1.25 U + tol / 10 = 0.4 %: fail.
-  EXPECT_EQ(score_memory(rungs(1.01), 0.04, slight_item).quantities.front().status, "fail");
+  EXPECT_EQ(score_memory(rungs(1.01), 0.04, slight_item).quantities.front().status, QuantityStatus::kFail);
 }
 
 TEST(Scorecard, AMethodThatDoesNotConvergeGetsThatVerdict) {
   // Differences that grow (order < 0): no asymptotic range, no limit.
   std::vector<ScoreItem> a, b;
   const ScoreQuantity q = score_memory({0.99, 0.98, 0.95}, 0.04, a).quantities.front();
-  EXPECT_EQ(q.status, "not converged") << q.note;
+  EXPECT_EQ(q.status, QuantityStatus::kNotConverged) << q.note;
   // Order 0.4 (differences shrinking by 2^0.4 a rung): below 0.5, not converged.
   const double d = 0.01, s = std::pow(2.0, -0.4);
   EXPECT_EQ(score_memory({1 - d - d * s, 1 - d * s, 1.0}, 0.04, b).quantities.front().status,
-            "not converged");
+            QuantityStatus::kNotConverged);
   // The Richardson arithmetic is the matrix's: its limit and order for these rungs.
   const LadderResult r = ladder_limit({0.97, 0.985, 0.9925});
   const auto matrix = richardson_limit(0.97, 0.985, 0.9925, 2.0);
@@ -329,7 +330,7 @@ TEST(Scorecard, ARefusedSceneIsNotApplicableWithNoReferenceRun) {
                JobOutcome{it.run, {}, Status::kNotApplicable, "no friction", 0, 0, 0, 0, nullptr});
   const std::vector<ScoreItem> held = {it};
   const auto rows = score_rows(held, runs);
-  EXPECT_EQ(rows.front().quantities.front().status, "not applicable");
+  EXPECT_EQ(rows.front().quantities.front().status, QuantityStatus::kNotApplicable);
   const ScoreVerdict v = score_verdict("m", rows);
   EXPECT_EQ(v.exit_code, 0) << v.line;  // a refusal is not a failure, and the line says how many
   EXPECT_NE(v.line.find("1 not applicable"), std::string::npos) << v.line;
@@ -343,6 +344,69 @@ TEST(Scorecard, TheVerdictFailsOnAnyQuantityThatDidNotPass) {
   const ScoreVerdict v = score_verdict("m", fail);
   EXPECT_EQ(v.exit_code, 1);
   EXPECT_EQ(v.line.rfind("score m: FAILED", 0), 0u) << v.line;
+}
+
+TEST(Scorecard, EachStatusHasOneWordInTheJsonAndTheReaderTellsFailFromFailed) {
+  // The words of scorecard.json are a public format (docs/protocol.md, "Quantity statuses"): the
+  // seven words as the format writes them, each read back to its status.
+  const std::vector<std::string> words = {"pass",   "fail",    "not converged", "reference uncertain",
+                                          "failed", "skipped", "not applicable"};
+  ASSERT_EQ(quantity_statuses().size(), words.size());
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    EXPECT_EQ(to_string(quantity_statuses()[i]), words[i]);
+    EXPECT_EQ(parse_quantity_status(words[i], "f", "k"), quantity_statuses()[i]) << words[i];
+  }
+  try {
+    parse_quantity_status("passed", "scorecard.json", "scenes[0].quantities[0].status");
+    ADD_FAILURE() << "an unknown status word accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "scenes[0].quantities[0].status");
+    EXPECT_NE(std::string(e.what()).find("'not applicable'"), std::string::npos) << e.what();
+  }
+  // A reader is not shown "fail" beside "failed": a judged miss and a run that did not finish.
+  EXPECT_EQ(std::string(describe(QuantityStatus::kFail)), "fail (outside tolerance)");
+  EXPECT_EQ(std::string(describe(QuantityStatus::kFailed)), "run failed");
+  // The verdict passes on pass and not applicable only.
+  for (QuantityStatus q : quantity_statuses())
+    EXPECT_EQ(passes(q), q == QuantityStatus::kPass || q == QuantityStatus::kNotApplicable) << to_string(q);
+  // A run outcome: its words, read back; a finished run's record of an earlier version (the
+  // status as a number) is read too.
+  for (const char* w : {"ok", "failed", "skipped", "not applicable"})
+    EXPECT_EQ(to_string(parse_run_status(w, "f", "status")), std::string(w));
+  EXPECT_THROW(parse_run_status("fine", "f", "status"), InputError);
+  JobOutcome o;
+  o.status = Status::kNotApplicable;
+  nlohmann::json j = outcome_json(o);
+  EXPECT_EQ(j["status"], "not applicable");
+  EXPECT_EQ(outcome_from_json(o.spec, "d", j).status, Status::kNotApplicable);
+  j["status"] = 3;  // kNotApplicable's number in records written before the word
+  EXPECT_EQ(outcome_from_json(o.spec, "d", j).status, Status::kNotApplicable);
+}
+
+TEST(Scorecard, TheConsoleLineAndTheJsonSayTheStatusesTheirWay) {
+  // A run that failed and a quantity outside its tolerance: the verdict line (console and page)
+  // says "run failed" and "fail (outside tolerance)"; scorecard.json keeps "failed" and "fail".
+  ScoreItem it;
+  it.run = JobSpec{kRoot / "verification/scenes/paper/s1_central.toml", "m", std::nullopt, "", {}, {}};
+  it.reference = JobSpec{it.run.scene, "exact", std::nullopt, "", {}, {}};
+  it.gates = {Gate{"impulse", 0.04, std::nullopt, "derived: a test bound", std::nullopt}};
+  std::map<std::string, JobOutcome> runs;
+  runs.emplace(it.run.key(), JobOutcome{it.run, {}, Status::kFailed, "exit 3", 0, 0, 0, 0, nullptr});
+  const std::vector<ScoreItem> held = {it};
+  std::vector<ScoreItem> b;
+  std::vector<ScoreRow> rows = score_rows(held, runs);
+  rows.push_back(score_memory({1.05}, 0.04, b));  // 5 % off under 4 %: fail
+  ASSERT_EQ(rows[0].quantities.front().status, QuantityStatus::kFailed);
+  const ScoreVerdict v = score_verdict("m", rows);
+  EXPECT_NE(v.line.find("1 fail (outside tolerance), 1 run failed"), std::string::npos) << v.line;
+  ScoreContext ctx;
+  ctx.method = "m";
+  const nlohmann::json j = scorecard_json(ctx, rows, v);
+  EXPECT_EQ(j["scenes"][0]["quantities"][0]["status"], "failed");
+  EXPECT_EQ(j["scenes"][1]["quantities"][0]["status"], "fail");
+  EXPECT_EQ(j["counts"], (nlohmann::json{{"fail", 1}, {"failed", 1}}));
+  EXPECT_EQ(j["statuses"]["failed"], "run failed");
+  EXPECT_EQ(j["statuses"]["fail"], "fail (outside tolerance)");
 }
 
 /// Writes the scorecard of `rows` as a baseline and returns its path.

@@ -134,7 +134,7 @@ std::optional<SweepResult> execute_sweep(const SweepOptions& o, Launcher launche
       throw InputError(o.scene.string(), "--reference",
                        "the reference run " + ref->label() + " was refused: " + ro.message);
     if (ro.status != JobOutcome::Status::kOk)
-      throw std::runtime_error("reference run " + ref->label() + " " + status_name(ro.status) + ": " +
+      throw std::runtime_error("reference run " + ref->label() + " " + to_string(ro.status) + ": " +
                                ro.message);
     r.reference_dir = ro.dir;
   }
@@ -205,7 +205,7 @@ void write_sweep(const SweepOptions& o, const SweepResult& r) {
     const Comparison* c = p.comparison ? &*p.comparison : nullptr;
     std::vector<std::string> csv_row{dt,
                                      s.mesh,
-                                     status_name(p.outcome.status),
+                                     to_string(p.outcome.status),
                                      fmt::format("{}", p.outcome.steps),
                                      fmt::format("{:.6g}", p.outcome.solver_seconds),
                                      fmt::format("{:.6g}", p.outcome.process_seconds)};
@@ -215,16 +215,15 @@ void write_sweep(const SweepOptions& o, const SweepResult& r) {
     for (const auto& n : names) {
       csv_row.push_back(cell(c, n));
       // A run without a comparison says why once, in its first norm's cell: "not applicable: reason".
-      md_row.push_back(c ? cell(c, n)
-                       : n == names[0]
-                           ? fmt::format("{}: {}", status_name(p.outcome.status), p.outcome.message)
-                           : "-");
+      md_row.push_back(c               ? cell(c, n)
+                       : n == names[0] ? fmt::format("{}: {}", to_string(p.outcome.status), p.outcome.message)
+                                       : "-");
     }
     csv.add(csv_row);
     md.add(md_row);
     nlohmann::json e{{"dt", dt},
                      {"mesh", s.mesh},
-                     {"status", status_name(p.outcome.status)},
+                     {"status", to_string(p.outcome.status)},
                      {"message", p.outcome.message},
                      {"steps", p.outcome.steps},
                      {"solver_seconds", p.outcome.solver_seconds},

@@ -2,6 +2,7 @@
 // triangular contact pulse whose integral is known in closed form, written the way a fixed-step
 // method writes it, passes; each broken copy fails the one rule it breaks.
 #include <api/output_rules.hpp>
+#include <api/run.hpp>
 
 #include <cmath>
 #include <fstream>
@@ -179,6 +180,30 @@ TEST_F(OutputRules, EachOtherRuleIsNamedWhenBrokenAlone) {
   const auto b = broken();
   ASSERT_EQ(b.size(), 1u);
   EXPECT_NE(b[0].find("outputs: expected history.csv and summary.json"), std::string::npos) << b[0];
+}
+
+// The IDA reference's own run directory keeps every rule, consistency included: its rows are
+// the means of its impulse quadrature over each output step (references/ida/step_mean_rows.hpp),
+// so the rows' trapezoid integral is the summary's impulse. The rows hold a row every step, so
+// the rule's tolerance is the spread of the time conventions on them, rounding where the pulse
+// starts and ends open: S1's rows of the penalty force at the output times (3.755 N s against the
+// summary's 3.856 N s) break it, as do the bouncing bar's.
+TEST(OutputRulesOfIda, IdaRunsKeepEveryRule) {
+  struct IdaRun {
+    std::string scene;
+    std::vector<std::string> set;
+    double end;  // s, the scene's time.end
+  };
+  for (const IdaRun& c : {IdaRun{testing::paper_scene("s1_central"), {}, 4.0},
+                          IdaRun{testing::benchmark_scene("bouncing_bar"), {"time.end=2.0"}, 2.0}}) {
+    const std::string& scene = c.scene;
+    const fs::path dir = testing::temp_path("output_rules_ida");
+    fs::remove_all(dir);
+    run(fs::path(scene), "ida", RunOptions{c.set, dir});
+    const auto verdicts = check_outputs(dir, OutputExpectation{scene, 1, c.end});
+    EXPECT_EQ(first_broken_rule(verdicts), "") << scene;
+    fs::remove_all(dir);
+  }
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <references/ida/ContactKinematics.hpp>
 #include <references/ida/PenaltyIda.hpp>
 #include <references/ida/ida_options.hpp>
+#include <references/ida/step_mean_rows.hpp>
 #include <solver/model/Effects.hpp>
 #include <solver/model/MassSolver.hpp>
 #include <solver/model/Model.hpp>
@@ -255,37 +256,35 @@ std::vector<std::array<double, 2>> event_intervals(const std::vector<ContactEven
 /// One contact's running impulse (quadrature) after every accepted step: (t, J(t)).
 using ImpulseTrace = std::vector<std::array<double, 2>>;
 
-/// Per contact, over the accepted steps, the peaks of the penalty force. At a first touch the
+/// Per contact, over the accepted steps, the penalty force as IDA solves it. At a first touch the
 /// dashpot jumps to cn times the closing speed (S1: 608 N against the exact 2 N), absorbs the
 /// closing speed within m_red / cn and leaves the spring compressed by about m_red v / cn, which
 /// relaxes through the dashpot with time constant cn / kn: the closure's transient, the penalty's
-/// counterpart of the paper's closure step. peak_R is the largest force outside the first
-/// kClosureWindow x cn / kn after each onset; the transient's own peak and the jump are stated apart.
+/// counterpart of the paper's closure step. Its onsets and the closure window kClosureWindow x
+/// cn / kn after each feed the rows' peaks (StepMeanRows); the instantaneous force's own peak and
+/// the jump are stated apart.
 struct ForcePeaks {
   static constexpr double kClosureWindow = 5.0;  ///< time constants: e^-5 = 0.7 % of the overshoot left
-  std::vector<double> outside, total, dashpot_jump, onset;
+  std::vector<double> total, dashpot_jump;
   std::vector<std::vector<double>> onsets;  ///< every onset of each contact (s)
   std::vector<char> was_closed;
-  explicit ForcePeaks(int nc)
-      : outside(nc, 0.0),
-        total(nc, 0.0),
-        dashpot_jump(nc, 0.0),
-        onset(nc, 0.0),
-        onsets(nc),
-        was_closed(nc, 0) {}
-  /// @brief Adds contact i's reading of an accepted step from t_prev to t (s) under law `law`.
-  void add(int i, const ContactReading& r, const PenaltyLaw& law, double t_prev, double t) {
+  explicit ForcePeaks(int nc) : total(nc, 0.0), dashpot_jump(nc, 0.0), onsets(nc), was_closed(nc, 0) {}
+  /// @brief Adds contact i's reading of an accepted step from t_prev (s) under law `law`.
+  void add(int i, const ContactReading& r, const PenaltyLaw& law, double t_prev) {
     if (r.closed) {
       if (!was_closed[i]) {
-        onset[i] = t_prev;
         onsets[i].push_back(t_prev);
         dashpot_jump[i] = std::max(dashpot_jump[i], r.R - law.normal_force(r.gap, 0.0));
       }
       total[i] = std::max(total[i], r.R);
-      const double window = law.kn > 0.0 ? kClosureWindow * law.cn / law.kn : 0.0;
-      if (t - onset[i] >= window) outside[i] = std::max(outside[i], r.R);
     }
     was_closed[i] = r.closed;
+  }
+  /// @brief The closure window of each contact (s): kClosureWindow x cn / kn, 0 without a dashpot.
+  static std::vector<double> windows(const std::vector<PenaltyLaw>& laws) {
+    std::vector<double> w;
+    for (const PenaltyLaw& law : laws) w.push_back(law.kn > 0.0 ? kClosureWindow * law.cn / law.kn : 0.0);
+    return w;
   }
 };
 
@@ -338,13 +337,28 @@ std::vector<double> interval_impulses(const std::vector<std::array<double, 2>>& 
   return out;
 }
 
+/// What the run keeps of its contacts beside the recorder: the impulse traces, the instantaneous
+/// force's peaks and the rows with their step means.
+struct ContactTracks {
+  std::vector<ImpulseTrace> traces;
+  ForcePeaks peaks;
+  StepMeanRows rows;
+  ContactTracks(ResultRecorder& rec, const std::vector<PenaltyLaw>& laws)
+      : traces(laws.size()), peaks(static_cast<int>(laws.size())), rows(rec, ForcePeaks::windows(laws)) {}
+  /// @brief Each contact's running (normal, tangential) impulse at IDA's current time (N s).
+  static std::vector<std::array<double, 2>> impulses(const PenaltyIda& ida, int nc) {
+    std::vector<std::array<double, 2>> j;
+    for (int i = 0; i < nc; ++i) j.push_back({ida.impulse_normal(i), ida.impulse_tangential(i)});
+    return j;
+  }
+};
+
 /// Integrates to the end, one row per output time on the paper's grid: p h for every
-/// every-th p and the last step N = ceil(end / h), so that the two methods' rows line up.
-/// Returns the output step (s).
+/// every-th p and the last step N = ceil(end / h), so that the two methods' rows line up; each
+/// row's forces are their means over the step it begins (StepMeanRows). Returns the output step (s).
 double integrate(const Scene& scene, const IdaOptions& opt, double dt, PenaltyIda& ida, const Observer& obs,
-                 const Model& model, ResultRecorder& rec, std::vector<ImpulseTrace>& traces,
-                 ForcePeaks& peaks, const std::vector<PenaltyLaw>& laws) {
-  traces.assign(scene.contacts.size(), {});
+                 const Model& model, ResultRecorder& rec, ContactTracks& tracks,
+                 const std::vector<PenaltyLaw>& laws) {
   const int nc = static_cast<int>(scene.contacts.size());
   std::vector<DeformedSurface> surfaces;  // the real gap of each contact, from the deformed geometry
   for (const Contact& c : scene.contacts)
@@ -355,13 +369,14 @@ double integrate(const Scene& scene, const IdaOptions& opt, double dt, PenaltyId
     for (int i = 0; i < nc; ++i) {
       const ContactReading r = ida.contact(i);
       rec.sample(i, ida.t(), r.R, r.tau, ida.t() - t_prev, obs.state(i, r));
-      peaks.add(i, r, laws[i], t_prev, ida.t());
+      tracks.peaks.add(i, r, laws[i], t_prev);
+      if (r.closed) tracks.rows.touch(i);
       rec.track_real_gap(i, ida.t(), surfaces[i].gap(ida.U()).gap);
-      traces[i].push_back({ida.t(), ida.impulse_normal(i)});
+      tracks.traces[i].push_back({ida.t(), ida.impulse_normal(i)});
     }
     rec.track_momentum(obs.momentum(ida.V()), ida.t());
   };
-  rec.add_row(obs.row());
+  tracks.rows.add(obs.row(), ContactTracks::impulses(ida, nc), tracks.peaks.onsets);
   const double h = opt.output_step.value_or(dt);
   const long every = opt.output_step ? 1 : scene.time.output_every;
   const long N = step_count(scene, h);
@@ -370,8 +385,9 @@ double integrate(const Scene& scene, const IdaOptions& opt, double dt, PenaltyId
   for (long p = 1; p <= N; ++p) {
     if (p % every != 0 && p != N) continue;
     ida.advance_to(static_cast<double>(p) * h, on_step);
-    rec.add_row(obs.row());
+    tracks.rows.add(obs.row(), ContactTracks::impulses(ida, nc), tracks.peaks.onsets);
   }
+  tracks.rows.finish(tracks.peaks.onsets);
   return h * static_cast<double>(every);
 }
 
@@ -405,11 +421,14 @@ nlohmann::json ida_extra(const IdaOptions& opt, const IdaSettings& settings, int
           {"contacts", contacts}};
 }
 
-/// Each contact's intervals from the located events and impulses from the quadratures; peaks and
+/// Each contact's intervals from the located events and impulses from the quadratures; the peaks
+/// from the rows, the force of the protocol (StepMeanRows), the instantaneous force's stated apart;
 /// stick/slip counts stay the recorder's (from the accepted steps).
-void summarize_contacts(const PenaltyIda& ida, const PenaltyContacts& contacts,
-                        const std::vector<ImpulseTrace>& traces, const ForcePeaks& peaks, double merge_gap,
-                        double shortest_period, SimulationResult& result) {
+void summarize_contacts(const PenaltyIda& ida, const PenaltyContacts& contacts, const ContactTracks& tracks,
+                        double merge_gap, double shortest_period, SimulationResult& result) {
+  const std::vector<ImpulseTrace>& traces = tracks.traces;
+  const ForcePeaks& peaks = tracks.peaks;
+  const std::vector<double> windows = ForcePeaks::windows(contacts.laws);
   for (int i = 0; i < static_cast<int>(result.contacts.size()); ++i) {
     ContactSummary& s = result.contacts[i];
     const double step_sum = s.impulse_normal;
@@ -421,14 +440,18 @@ void summarize_contacts(const PenaltyIda& ida, const PenaltyContacts& contacts,
     s.extra = contacts.extra[i];
     s.extra["events"] = events;
     s.extra["impulse_normal_step_sum"] = step_sum;
-    // The peaks leave out each closure's transient (ForcePeaks), stated apart.
-    s.peak_R = s.peak_R_excluding_closure = peaks.outside[i];
+    // The rows' step means, as the history: every row, the rows whose step meets a closure window
+    // left out, the first row in contact. The instantaneous penalty force's peak and the dashpot's
+    // jump (ForcePeaks) are stated apart.
+    const RowPeaks& rows = tracks.rows.peaks()[i];
+    s.peak_R = rows.all;
+    s.peak_R_excluding_closure = rows.outside_closure;
+    s.first_step_R = rows.first_closure;
     s.extra["peak_R_with_closure"] = peaks.total[i];
     s.extra["closure_dashpot_jump"] = peaks.dashpot_jump[i];
-    const double closure = ForcePeaks::kClosureWindow * contacts.laws[i].cn / contacts.laws[i].kn;
-    s.extra["closure_window"] = closure;
+    s.extra["closure_window"] = windows[i];
     s.extra["peak_R_resolved"] =
-        resolved_peak(traces[i], peaks.onsets[i], closure, shortest_period, s.peak_R);
+        resolved_peak(traces[i], peaks.onsets[i], windows[i], shortest_period, s.peak_R_excluding_closure);
     s.extra["resolved_window"] = shortest_period;
     s.friction = contacts.laws[i].mu;  // as applied
   }
@@ -472,9 +495,8 @@ SimulationResult solve(const Scene& scene) {
   rule << "contact phases (located by IDA root finding) separated by less than " << opt.merge_gap
        << " s are merged";
   rec.set_merge_rule(opt.merge_gap, rule.str());
-  std::vector<ImpulseTrace> traces;
-  ForcePeaks peaks(static_cast<int>(scene.contacts.size()));
-  const double output_step = integrate(scene, opt, dt, ida, obs, model, rec, traces, peaks, contacts.laws);
+  ContactTracks tracks(rec, contacts.laws);
+  const double output_step = integrate(scene, opt, dt, ida, obs, model, rec, tracks, contacts.laws);
 
   const auto V = ida.V();
   for (int b = 0; b < model.num_bodies(); ++b) {
@@ -492,8 +514,8 @@ SimulationResult solve(const Scene& scene) {
   SimulationResult result = rec.finish(kinds);
   // The mesh's shortest period 2 pi / omega_max (omega_max: the critical step's proven bound).
   const double omega_max = critical_step(model).omega_max;
-  summarize_contacts(ida, contacts, traces, peaks, opt.merge_gap,
-                     omega_max > 0.0 ? 2.0 * M_PI / omega_max : 0.0, result);
+  summarize_contacts(ida, contacts, tracks, opt.merge_gap, omega_max > 0.0 ? 2.0 * M_PI / omega_max : 0.0,
+                     result);
   return result;
 }
 

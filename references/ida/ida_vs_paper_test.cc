@@ -167,6 +167,40 @@ INSTANTIATE_TEST_SUITE_P(PaperScenes, IdaVsPaper,
                                            Case{"s4_oblique_45", 0.03, {"model.kinematics=linear"}, true}),
                          [](const ::testing::TestParamInfo<Case>& i) { return std::string(i.param.scene); });
 
+// A stiff penalty on S4 (linear kinematics) meets the hard-contact answer of the paper integrator
+// and never pulls. The penalty law's force is compressive or zero by definition (a contact releases
+// when its trial force reaches zero), so a tensile force in any row is a contact switch gone wrong:
+// S4-60 without friction at 1e4 EA/le closed its contact at a gap of roundoff size while the gap
+// rose, with a tensile dashpot force that the release root never saw (held for 1.4 ms, -1.9 MN;
+// impulse 6 % low over the scene's 0.1 s); S4-90 at 1e5 EA/le re-closed a receding contact on the
+// trial force and stepped through the sliding mode on R = 0 by roundoff-sized events until the
+// event guard stopped the run. Both methods approximate the same hard-contact limit: the impulses
+// agree within 0.1 % (IDA's penalty ladder 1e3 -> 1e5 EA/le moves them by 2e-5 and 4e-4, the
+// paper's step ladder 1/16 -> 1/64 by 3e-4 at 90 degrees; measured 1e-6 and 2e-4).
+TEST(IdaVsPaperS4, StiffPenaltyMeetsTheHardContactAndNeverPulls) {
+  struct Run {
+    const char* scene;
+    std::vector<std::string> sets;  ///< both methods
+    const char* kn_factor;          ///< EA/le
+  };
+  for (const Run& run : {Run{"s4_oblique_60", {"contacts[0].friction=0", "time.end=0.025"}, "1e4"},
+                         Run{"s4_oblique_90", {"time.end=0.065"}, "1e5"}}) {
+    std::vector<std::string> common = run.sets;
+    common.push_back("model.kinematics=linear");
+    std::vector<std::string> io = common, po = common;
+    io.insert(io.end(), {std::string("ida.kn_factor=") + run.kn_factor, "ida.rtol=1e-10", "ida.atol=1e-13"});
+    po.push_back("time.fraction=0.015625");
+    SimulationResult ida;
+    ASSERT_NO_THROW(ida = ida::solve(testing::load_paper_scene(run.scene, io))) << run.scene;
+    const SimulationResult paper = paper::solve(testing::load_paper_scene(run.scene, po));
+    double least = 0.0;
+    for (const HistoryRow& row : ida.history) least = std::min(least, row.contacts[0].R);
+    EXPECT_GE(least, 0.0) << run.scene << ": a tensile contact force";
+    const double J = paper.contacts.at(0).impulse_normal;
+    EXPECT_NEAR(ida.contacts.at(0).impulse_normal, J, 1e-3 * J) << run.scene;
+  }
+}
+
 // The Hertz law in both methods: IDA integrates the spring (no dashpot) to its tolerance and keeps
 // the energy; the paper integrator's secant force keeps it at any step (hertz_law.hpp). S1 with a
 // Hertz spring of k = 3e6 N/m^1.5 at the paper's dt = 0.01 s (the end nodes' contact lasts about

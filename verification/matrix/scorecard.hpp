@@ -34,8 +34,11 @@ struct ScoreItem {
   std::optional<JobSpec> reference_check;
   std::string reference_kind;  ///< the reference's method, "exact" or "ida" (its settings in reference.set)
   std::vector<Gate> gates;     ///< the card's quantities (tol and why)
-  std::string source;          ///< the matrix row the card's tolerances come from ("" derived)
-  std::string set;             ///< the card's scene set
+  /// The card's settled values: each of these quantities is judged against its settled value and
+  /// uncertainty, not against the reference run's value and spread.
+  std::vector<SettledValue> settled;
+  std::string source;  ///< the matrix row the card's tolerances come from ("" derived)
+  std::string set;     ///< the card's scene set
 };
 
 /// @brief What `beamimpact score` scores, and how.
@@ -88,7 +91,7 @@ struct ScoreQuantity {
   /// ladder: the finest run's error), "single run" (no ladder); "" when not judged.
   std::string judged;
   std::optional<LadderResult> ladder;  ///< the rungs' values, order, limit (judged == "limit")
-  std::optional<double> exact;         ///< the reference's value of a scalar quantity
+  std::optional<double> exact;         ///< the reference's value of a scalar quantity (a settled value)
   std::optional<double> allowed;       ///< judged == "limit": 1.25 U + tol / 10, what the error may reach
 };
 

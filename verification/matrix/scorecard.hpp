@@ -7,7 +7,8 @@
 /// judged against the exact value; elsewhere its one run is compared with IDA converged beyond
 /// its defaults (time tolerances 100 times tighter, penalty 10 times stiffer, friction
 /// regularised at 1e-5 m/s), whose spread against the same run at the card's penalty is the
-/// reference's own uncertainty.
+/// reference's own uncertainty. A quantity with a settled value on its card (SettledValue: S4's
+/// impulse) is judged against that value and its uncertainty instead.
 
 #include <filesystem>
 #include <map>

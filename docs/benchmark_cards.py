@@ -28,7 +28,9 @@ the finest rung under the tolerance. With `--no-ladder`, or against IDA, the one
 
 Units: relative (1) unless the quantity is a time (contact_start, contact_end: s) or a count
 (impacts). Reference `ida` is converged further by `score` (rtol 1e-10, atol 1e-13, penalty
-1e4 EA/le, friction regularised at 1e-5 m/s) unless `--references matrix`.
+1e4 EA/le, friction regularised at 1e-5 m/s) unless `--references matrix`. A quantity with a
+settled value (S4's impulse: docs/s4.md) is judged against that value, its uncertainty in place of
+the reference's spread; the reference column then says so.
 
 | scene | set | reference | quantity | tolerance | unit | reason |
 |---|---|---|---|---|---|---|
@@ -53,8 +55,11 @@ def page(cards):
     for c in cards:
         name = pathlib.PurePosixPath(c["scene"]).stem
         ref = c["reference"]["method"] + "".join(" " + s for s in c["reference"].get("set", []))
+        settled = {v["metric"]: v for v in c.get("settled", [])}
         for q in c["quantities"]:
-            rows.append("| " + " | ".join(cell(x) for x in (name, c["set"], ref, q["metric"], f"{q['tol']:g}",
+            v = settled.get(q["metric"])
+            r = f"settled {v['value']:g} +- {v['uncertainty']:g} ({v['why']})" if v else ref
+            rows.append("| " + " | ".join(cell(x) for x in (name, c["set"], r, q["metric"], f"{q['tol']:g}",
                                                             unit(q["metric"]), q["why"])) + " |")
     notes = [f"- **{pathlib.PurePosixPath(c['scene']).stem}**: {c['note']}" for c in cards if c.get("note")]
     tail = "\n\nQuantities of a scene left off its card, and why:\n\n" + "\n".join(notes) if notes else ""

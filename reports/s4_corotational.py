@@ -16,16 +16,24 @@ IDA's penalty ladder is read from its soft end while each rung moves the differe
 the one before: on S4 at 45 and 60 degrees the rungs from 1e4 EA/le on chatter (their impulse moves
 by tenths of a percent under roundoff-level changes), so the limit is the last rung before them.
 
+The settled corotational impulse (what the scorecard holds the shipped, corotational S4 scenes to:
+verification/cards.toml): the linear settled impulse of OUT/settled.json (s4_settled.py, run first)
+times (1 + IDA's limit of the difference), the uncertainty the sum of the two,
+U_linear (1 + c) + |I_linear| U_c. IDA's limit, not the paper integrator's: the paper integrator
+is what the scorecard scores, never a part of its reference.
+
 Usage: s4_corotational.py [--build build] [--out reports/s4] [--runs DIR] [--jobs 2] [--angles 45,60,90]
 Writes OUT/corotational.json. Exit 2 on bad input, 1 when a run fails.
 """
 import concurrent.futures
 import datetime
+import json
 import os
 import sys
 
 from report_files import write_json_atomic
-from s4_settled import IDA_TIGHT, LINEAR, ROOT, fail, ladder_limit, options, run, scene_path, version
+from s4_settled import (IDA_TIGHT, LINEAR, PENALTY_MIN_ORDER, ROOT, STEP_MIN_ORDER, fail, ladder_limit, options,
+                        run, scene_path, version)
 
 PAPER_FRACTIONS = [1 / 2 ** k for k in range(1, 7)]  # 1/2 ... 1/64 of the critical step
 IDA_PENALTIES = [1e2, 1e3, 1e4, 1e5]                 # EA/le
@@ -49,7 +57,8 @@ def compare(values):
     """Per method the ladders of impulse and of the relative corotational-minus-linear difference,
     each with its limit; then whether the two methods' limits of the difference agree."""
     out = {}
-    for method, ratio, fine_end in (("paper", 2.0, True), ("ida", 10.0, False)):
+    for method, ratio, fine_end, order in (("paper", 2.0, True, STEP_MIN_ORDER),
+                                           ("ida", 10.0, False, PENALTY_MIN_ORDER)):
         corot = [r["impulse_normal"] for r in values[(method, "corotational")]]
         linear = [r["impulse_normal"] for r in values[(method, "linear")]]
         rel = [(c - l) / l for c, l in zip(corot, linear)]
@@ -57,7 +66,7 @@ def compare(values):
                        "impacts_corotational": [r["impacts"] for r in values[(method, "corotational")]],
                        "wall_seconds_corotational": [r["wall_seconds"] for r in values[(method, "corotational")]],
                        "relative_difference": rel,
-                       "limit": ladder_limit(rel, ratio, from_fine_end=fine_end)}
+                       "limit": ladder_limit(rel, ratio, from_fine_end=fine_end, min_order=order)}
     p, i = out["paper"]["limit"], out["ida"]["limit"]
     if p["limit"] is not None and i["limit"] is not None:
         out["paper_minus_ida"] = p["limit"] - i["limit"]
@@ -66,6 +75,24 @@ def compare(values):
     else:
         out["agree"] = None
     return out
+
+
+def settled_corotational(out, angle, difference):
+    """The corotational settled impulse of one angle from the linear one (OUT/settled.json) and IDA's
+    limit of the corotational difference; None when either is missing or not converged."""
+    path = os.path.join(out, "settled.json")
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        q = json.load(f)["angles"].get(angle, {}).get("quantities", {}).get("impulse_normal", {})
+    c = difference["ida"]["limit"]
+    if "value" not in q or c["limit"] is None or not c["converged"]:
+        return None
+    value = q["value"] * (1.0 + c["limit"])
+    uncertainty = q["uncertainty"] * (1.0 + c["limit"]) + abs(q["value"]) * c["uncertainty"]
+    return {"impulse_normal": {"value": value, "uncertainty": uncertainty, "unit": "N s",
+                               "linear": q["value"], "linear_uncertainty": q["uncertainty"],
+                               "ida_difference": c["limit"], "ida_difference_uncertainty": c["uncertainty"]}}
 
 
 def main():
@@ -82,6 +109,10 @@ def main():
                        "ida_settings": IDA_TIGHT},
            "rule": "agree: |paper limit - ida limit| <= the sum of their uncertainties (s4_settled.ladder_limit)",
            "angles": {x: compare(values[x]) for x in angles}}
+    doc["settled_rule"] = ("settled corotational impulse = settled linear impulse (settled.json) x (1 + ida's limit); "
+                           "uncertainty = U_linear (1 + c) + |I_linear| U_c")
+    for x in angles:
+        doc["angles"][x]["settled_corotational"] = settled_corotational(a.out, x, doc["angles"][x])
     write_json_atomic(os.path.join(a.out, "corotational.json"), doc)
     for x in angles:
         c = doc["angles"][x]
@@ -91,6 +122,9 @@ def main():
             line.append(f"{m} {lim['limit']:+.4%} +- {lim['uncertainty']:.2%}" if lim["limit"] is not None
                         else f"{m} (no limit)")
         print(f"S4-{x} corotational - linear impulse: " + ", ".join(line) + f"; agree: {c['agree']}")
+        if c["settled_corotational"]:
+            s = c["settled_corotational"]["impulse_normal"]
+            print(f"S4-{x} settled corotational impulse: {s['value']:.6g} +- {s['uncertainty']:.3g} N s")
 
 
 if __name__ == "__main__":

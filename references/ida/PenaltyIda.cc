@@ -22,10 +22,18 @@ using CMap = Eigen::Map<const Vec>;
 using MMap = Eigen::Map<Vec>;
 using Triplet = Eigen::Triplet<double>;
 
-/// Contact state. "Penetrated" is open after a release with the dashpot still holding the gap
-/// negative: it re-closes when the trial force turns compressive, or becomes plain open when
-/// the gap turns positive (a plain g-root would miss a re-approach that starts below zero).
-enum class Phase { kOpen, kClosed, kOpenPenetrated };
+/// Contact state. "Receding" is open after a release while the bodies still separate (the gap's
+/// rate positive; with a dashpot the gap is then still negative). It re-closes when the trial
+/// force rises above the spring force of a penetration of the integration's absolute tolerance
+/// (kn atol: what IDA's error control resolves of the spring force), or when the bodies approach
+/// again (the gap's rate falls through zero); it turns plain open once the gap has cleared the
+/// surface by atol (a plain g-root would miss a re-approach that starts below zero). Both margins
+/// keep the roots off roundoff: with a stiff penalty on a receding contact the trial force creeps
+/// along zero (the overdamped spring-dashpot relaxing while the bodies part) within its roundoff
+/// of about kn 1e-18 m, and a root on zero itself flips the contact by events of roundoff size
+/// without end; g = g0 + n.U cancels to a few 1e-18 m near zero, which the root finder reads as a
+/// fall while the gap rises.
+enum class Phase { kOpen, kClosed, kReceding };
 
 /// IDA's messages: errors are kept for the exception text, warnings counted (not printed).
 struct Messages {
@@ -211,20 +219,23 @@ struct PenaltyIda::Impl {
     for (int i = 0; i < nc; ++i) {
       const CMap U(y, n), V(y + n, n);
       const ContactFrame f = contacts[i]->evaluate(U);
-      const double gap = f.gap(U), trial = laws[i].normal_force(gap, f.normal_rate(V));
+      const double gap = f.gap(U);
       switch (phase[i]) {
         case Phase::kOpen:
           g[2 * i] = gap;
           g[2 * i + 1] = 1.0;
           break;
         case Phase::kClosed:
-          g[2 * i] = trial;
+          g[2 * i] = laws[i].normal_force(gap, f.normal_rate(V));
           g[2 * i + 1] = 1.0;
           break;
-        case Phase::kOpenPenetrated:
-          g[2 * i] = trial;
-          g[2 * i + 1] = gap;
+        case Phase::kReceding: {
+          const double rate = f.normal_rate(V);
+          g[2 * i] =
+              std::max(laws[i].normal_force(gap, rate) - laws[i].normal_force(-settings.atol, 0.0), -rate);
+          g[2 * i + 1] = gap - settings.atol;
           break;
+        }
       }
     }
   }
@@ -232,7 +243,7 @@ struct PenaltyIda::Impl {
   void set_root_directions() {
     std::vector<int> dir(2 * nc, 0);
     for (int i = 0; i < nc; ++i) {
-      dir[2 * i] = phase[i] == Phase::kOpenPenetrated ? +1 : -1;
+      dir[2 * i] = phase[i] == Phase::kReceding ? +1 : -1;
       dir[2 * i + 1] = +1;
     }
     if (nc > 0) check(IDASetRootDirection(mem, dir.data()), "IDASetRootDirection");
@@ -359,6 +370,41 @@ struct PenaltyIda::Impl {
     return c;
   }
 
+  /// The phase change a root of contact i asks for at time t (r0: its first root function, else
+  /// its second), if any. A gap root of an open contact closes it only while the gap falls: a
+  /// contact closed while the gap rises would start with a tensile trial force (-cn g' < 0) that
+  /// the release root (R falling through zero) never sees, and hold the bodies together.
+  void switch_phase(int i, double t, bool r0) {
+    const double* y = N_VGetArrayPointer(yy);
+    switch (phase[i]) {
+      case Phase::kOpen:
+        if (!(read(i, y).gap_rate < 0.0)) return;
+        phase[i] = Phase::kClosed;
+        events.push_back({i, t, true});
+        return;
+      case Phase::kClosed: {
+        // The force is zero at release, but with a dashpot the spring is still compressed:
+        // its energy leaves the mechanical balance here (counted as dissipated).
+        const ContactReading r = read(i, y);
+        released_energy += r.penalty_energy;
+        phase[i] = r.gap_rate > 0.0 ? Phase::kReceding : Phase::kOpen;
+        events.push_back({i, t, false});
+        return;
+      }
+      case Phase::kReceding:
+        if (r0 && read(i, y).gap <= 0.0) {
+          // Re-closing below zero gap hands the spring kn g^2/2 back (the balance's mirror of
+          // the release above).
+          phase[i] = Phase::kClosed;
+          released_energy -= read(i, y).penalty_energy;
+          events.push_back({i, t, true});
+        } else {
+          phase[i] = Phase::kOpen;  // cleared, or approaching again above the surface
+        }
+        return;
+    }
+  }
+
   void reinit(double t) {
     done = counters_now();
     consistent_yp();
@@ -458,42 +504,14 @@ void PenaltyIda::advance_to(double t_out, const std::function<void(double)>& on_
     if (flag == IDA_ROOT_RETURN) {
       std::vector<int> found(2 * I.nc, 0);
       check(IDAGetRootInfo(I.mem, found.data()), "IDAGetRootInfo");
-      const double* y = N_VGetArrayPointer(I.yy);
-      for (int i = 0; i < I.nc; ++i) {
-        const bool r0 = found[2 * i] != 0, r1 = found[2 * i + 1] != 0;
-        if (!r0 && !r1) continue;
-        switch (I.phase[i]) {
-          case Phase::kOpen:
-            I.phase[i] = Phase::kClosed;
-            I.events.push_back({i, t, true});
-            break;
-          case Phase::kClosed: {
-            // The force is zero at release, but with a dashpot the spring is still compressed:
-            // its energy leaves the mechanical balance here (counted as dissipated).
-            const ContactReading r = I.read(i, y);
-            const double g = r.gap;
-            I.released_energy += r.penalty_energy;
-            I.phase[i] = I.laws[i].cn > 0.0 && g < 0.0 ? Phase::kOpenPenetrated : Phase::kOpen;
-            I.events.push_back({i, t, false});
-            break;
-          }
-          case Phase::kOpenPenetrated:
-            if (r0) {
-              // Re-closing below zero gap hands the spring kn g^2/2 back (the balance's mirror
-              // of the release above).
-              I.phase[i] = Phase::kClosed;
-              I.released_energy -= I.read(i, y).penalty_energy;
-              I.events.push_back({i, t, true});
-            } else {
-              I.phase[i] = Phase::kOpen;
-            }
-            break;
-        }
-      }
+      for (int i = 0; i < I.nc; ++i)
+        if (found[2 * i] != 0 || found[2 * i + 1] != 0) I.switch_phase(i, t, found[2 * i] != 0);
       ++I.done.events;
       if (I.done.events > I.settings.max_events)
         throw std::runtime_error("IDA reference: more than " + std::to_string(I.settings.max_events) +
                                  " contact events (endless chatter?)");
+      // Re-initialised after every root, a switch or not: IDA refuses to go on from a root
+      // function that is still zero where it stopped (IDARcheck2).
       I.reinit(t);
     }
     if (on_step) on_step(t_prev);

@@ -35,7 +35,12 @@ constexpr bool kFull = false;
 
 struct Case {
   const char* scene;
-  double quick_end;                ///< s, end time of the quick variant
+  double quick_end;  ///< s, end time of the quick variant
+  /// s, the impacts are compared one by one (count, displacement bound) before this time; 0: the
+  /// whole run. S4's chatter after its first impact phase (0.03 s) is a sequence of grazing
+  /// re-contacts whose count converges in no step or penalty ladder (docs/s4.md): the full run's
+  /// impulse and displacements there are held to shrink, not to one sequence.
+  double sequence_end;
   std::vector<std::string> extra;  ///< overrides for both methods
   bool auto_dt;                    ///< dt = fraction x critical (S4)
 };
@@ -45,10 +50,11 @@ void PrintTo(const Case& c, std::ostream* os) { *os << c.scene; }
 /// Largest |a - b| over the striker node's displacement (all rows) and the struck point's
 /// displacement (rows where both methods are in contact: when open, the paper re-locates the
 /// struck point on the deformed chord, a definition that differs from IDA's reference normal).
-double displacement_difference(const SimulationResult& p, const SimulationResult& i) {
+double displacement_difference(const SimulationResult& p, const SimulationResult& i,
+                               double t_end = INFINITY) {
   const std::size_t n = std::min(p.history.size(), i.history.size());
   double d = 0.0;
-  for (std::size_t k = 0; k < n; ++k) {
+  for (std::size_t k = 0; k < n && i.history[k].t < t_end; ++k) {
     const ContactSample& a = p.history[k].contacts[0];
     const ContactSample& b = i.history[k].contacts[0];
     // Rows line up on the common grid; only the paper's final row (its step N = ceil(end/dt)
@@ -67,10 +73,12 @@ double displacement_difference(const SimulationResult& p, const SimulationResult
 
 using Intervals = std::vector<std::array<double, 2>>;
 
-/// Intervals separated by less than gap seconds joined into one (the rule of every summary).
-Intervals merged(const Intervals& in, double gap) {
+/// Intervals separated by less than gap seconds joined into one (the rule of every summary), those
+/// starting before t_end.
+Intervals merged(const Intervals& in, double gap, double t_end) {
   ContactIntervals out(gap);
   for (const auto& iv : in) {
+    if (iv[0] >= t_end) break;
     out.begin(iv[0]);
     out.extend(iv[1]);
   }
@@ -119,6 +127,7 @@ TEST_P(IdaVsPaper, AgreeAndConvergeAsPaperDtFalls) {
     const double ds = std::abs(cp.intervals[0][0] - ci.intervals[0][0]);
     const double de = std::abs(cp.intervals[0][1] - ci.intervals[0][1]);
     du = displacement_difference(paper, ida);
+    const double t_seq = c.sequence_end > 0.0 ? c.sequence_end : INFINITY;
     std::printf(
         "%s dt=%.4e: |dI| %.3e N s (rel %.2e), first interval start %.2e end %.2e s, "
         "max|du| %.3e m, intervals paper/ida %zu/%zu\n",
@@ -130,23 +139,24 @@ TEST_P(IdaVsPaper, AgreeAndConvergeAsPaperDtFalls) {
     // constraint's by the penalty's release offset (below one penalty period). A shift of one
     // step changes the impulse by at most dt x the contact force after closure, and the contact
     // points' displacements by at most (relative speed <= v0) x dt per event (at least 4: two
-    // closures and releases). Those two bounds assume the same sequence of impacts: over S4's
-    // full 0.1 s the paper at dt0 merges or misses late grazing re-contacts (5 vs 7 intervals
-    // at 90 deg), which only the shrinking sequence below can judge.
+    // closures and releases). Those two bounds assume the same sequence of impacts, so they hold
+    // before the case's sequence_end: over S4's full 0.1 s the paper merges or adds late grazing
+    // re-contacts (at 90 deg 5 against IDA's 7 intervals at dt0, 8 against 7 at dt0/16; at 45 deg
+    // 9 against 7 at dt0/4), which only the shrinking sequence below can judge.
     EXPECT_LE(ds, dt + 1e-9);
     EXPECT_LE(de, 2.0 * dt + period);
-    // The same semi-discrete model must give the same sequence of impacts: a count mismatch is a
-    // failure (both lists printed), never a reason to skip the bounds below. Both lists are merged
-    // with one gap in seconds, 5 paper steps at dt0 for every rung: at dt0 the paper's event
+    // The same semi-discrete model must give the same sequence of impacts (before sequence_end):
+    // a count mismatch is a failure (both lists printed), never a reason to skip the bounds below. Both lists
+    // are merged with one gap in seconds, 5 paper steps at dt0 for every rung: at dt0 the paper's event
     // timing (closure up to 1 dt early, release up to 1.5 dt early) splits a contact that IDA
     // keeps closed (S4_60: a 4-step separation at 0.0197 s, gone at dt0/2).
     const double merge_gap = 5.0 * dt * static_cast<double>(every);  // s, 5 x dt0
-    const auto mp = merged(cp.intervals, merge_gap), mi = merged(ci.intervals, merge_gap);
+    const auto mp = merged(cp.intervals, merge_gap, t_seq), mi = merged(ci.intervals, merge_gap, t_seq);
     EXPECT_EQ(mp.size(), mi.size()) << c.scene << " dt=" << dt << " (merge gap " << merge_gap
                                     << " s): paper intervals " << interval_list(mp) << ", IDA intervals "
                                     << interval_list(mi);
     EXPECT_LE(dI, 2.0 * dt * cp.peak_R_excluding_closure);
-    EXPECT_LE(du, static_cast<double>(events) * v0 * dt);
+    EXPECT_LE(displacement_difference(paper, ida, t_seq), static_cast<double>(events) * v0 * dt);
     if (k == 0) {
       first_dI = dI;
       first_du = du;
@@ -157,15 +167,48 @@ TEST_P(IdaVsPaper, AgreeAndConvergeAsPaperDtFalls) {
   EXPECT_LT(du, first_du / 2);
 }
 
-INSTANTIATE_TEST_SUITE_P(PaperScenes, IdaVsPaper,
-                         ::testing::Values(Case{"s1_central", 4.0, {}, false},
-                                           Case{"s2_transverse", 1.5, {}, false},
-                                           Case{"s3_surface_10", 1.5, {}, false},
-                                           Case{"s3_surface_20", 1.5, {}, false},
-                                           Case{"s4_oblique_90", 0.03, {"model.kinematics=linear"}, true},
-                                           Case{"s4_oblique_60", 0.03, {"model.kinematics=linear"}, true},
-                                           Case{"s4_oblique_45", 0.03, {"model.kinematics=linear"}, true}),
-                         [](const ::testing::TestParamInfo<Case>& i) { return std::string(i.param.scene); });
+INSTANTIATE_TEST_SUITE_P(
+    PaperScenes, IdaVsPaper,
+    ::testing::Values(Case{"s1_central", 4.0, 0.0, {}, false}, Case{"s2_transverse", 1.5, 0.0, {}, false},
+                      Case{"s3_surface_10", 1.5, 0.0, {}, false}, Case{"s3_surface_20", 1.5, 0.0, {}, false},
+                      Case{"s4_oblique_90", 0.03, 0.03, {"model.kinematics=linear"}, true},
+                      Case{"s4_oblique_60", 0.03, 0.03, {"model.kinematics=linear"}, true},
+                      Case{"s4_oblique_45", 0.03, 0.03, {"model.kinematics=linear"}, true}),
+    [](const ::testing::TestParamInfo<Case>& i) { return std::string(i.param.scene); });
+
+// A stiff penalty on S4 (linear kinematics) meets the hard-contact answer of the paper integrator
+// and never pulls. The penalty law's force is compressive or zero by definition (a contact releases
+// when its trial force reaches zero), so a tensile force in any row is a contact switch gone wrong:
+// S4-60 without friction at 1e4 EA/le closed its contact at a gap of roundoff size while the gap
+// rose, with a tensile dashpot force that the release root never saw (held for 1.4 ms, -1.9 MN;
+// impulse 6 % low over the scene's 0.1 s); S4-90 at 1e5 EA/le re-closed a receding contact on the
+// trial force and stepped through the sliding mode on R = 0 by roundoff-sized events until the
+// event guard stopped the run. Both methods approximate the same hard-contact limit: the impulses
+// agree within 0.1 % (IDA's penalty ladder 1e3 -> 1e5 EA/le moves them by 2e-5 and 4e-4, the
+// paper's step ladder 1/16 -> 1/64 by 3e-4 at 90 degrees; measured 1e-6 and 2e-4).
+TEST(IdaVsPaperS4, StiffPenaltyMeetsTheHardContactAndNeverPulls) {
+  struct Run {
+    const char* scene;
+    std::vector<std::string> sets;  ///< both methods
+    const char* kn_factor;          ///< EA/le
+  };
+  for (const Run& run : {Run{"s4_oblique_60", {"contacts[0].friction=0", "time.end=0.025"}, "1e4"},
+                         Run{"s4_oblique_90", {"time.end=0.065"}, "1e5"}}) {
+    std::vector<std::string> common = run.sets;
+    common.push_back("model.kinematics=linear");
+    std::vector<std::string> io = common, po = common;
+    io.insert(io.end(), {std::string("ida.kn_factor=") + run.kn_factor, "ida.rtol=1e-10", "ida.atol=1e-13"});
+    po.push_back("time.fraction=0.015625");
+    SimulationResult ida;
+    ASSERT_NO_THROW(ida = ida::solve(testing::load_paper_scene(run.scene, io))) << run.scene;
+    const SimulationResult paper = paper::solve(testing::load_paper_scene(run.scene, po));
+    double least = 0.0;
+    for (const HistoryRow& row : ida.history) least = std::min(least, row.contacts[0].R);
+    EXPECT_GE(least, 0.0) << run.scene << ": a tensile contact force";
+    const double J = paper.contacts.at(0).impulse_normal;
+    EXPECT_NEAR(ida.contacts.at(0).impulse_normal, J, 1e-3 * J) << run.scene;
+  }
+}
 
 // The Hertz law in both methods: IDA integrates the spring (no dashpot) to its tolerance and keeps
 // the energy; the paper integrator's secant force keeps it at any step (hertz_law.hpp). S1 with a

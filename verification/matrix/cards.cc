@@ -1,6 +1,7 @@
 #include <verification/matrix/cards.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -40,6 +41,33 @@ Gate read_quantity(const toml::node& n, const std::string& file, const std::stri
   return g;
 }
 
+/// One { metric, value, uncertainty, why } of a card's `settled`, for a metric the card gates.
+SettledValue read_settled(const toml::node& n, const BenchmarkCard& c, const std::string& file,
+                          const std::string& key) {
+  const toml::table* t = n.as_table();
+  if (!t) throw InputError(file, key, "expected { metric = ..., value = ..., uncertainty = ..., why = ... }");
+  TableReader r(*t, file, key, nullptr);
+  SettledValue v;
+  v.metric =
+      r.string("metric", "a quantity of the card with a scalar value (impulse, peak_R, contact_start)");
+  const bool gated = std::any_of(c.quantities.begin(), c.quantities.end(),
+                                 [&](const Gate& g) { return g.metric == v.metric; });
+  if (!gated || !settled_metric(v.metric))
+    r.fail("metric",
+           "expected a quantity of the card with a scalar value (impulse, impulse_2, ..., peak_R, "
+           "contact_start, contact_end), got '" +
+               v.metric + "'");
+  v.value = r.number("value", "the settled value in the quantity's unit (N s, N or s)");
+  if (!(std::isfinite(v.value) && v.value != 0.0)) r.fail("value", "expected a finite, non-zero value");
+  v.uncertainty = r.number("uncertainty", "the settled value's uncertainty >= 0, same unit");
+  if (!(std::isfinite(v.uncertainty) && v.uncertainty >= 0.0))
+    r.fail("uncertainty", "expected a finite uncertainty >= 0 in the value's unit");
+  v.why = r.string("why", "where the settled value and its uncertainty come from");
+  if (v.why.size() < 10) r.fail("why", "expected where the settled value and its uncertainty come from");
+  r.finish();
+  return v;
+}
+
 /// One [[card]].
 BenchmarkCard read_card(TableReader& r, const std::string& key, const fs::path& root) {
   BenchmarkCard c;
@@ -77,10 +105,28 @@ BenchmarkCard read_card(TableReader& r, const std::string& key, const fs::path& 
             r.file(), fmt::format("{}.quantities[{}]", key, i),
             "expected one tolerance per quantity, '" + c.quantities[i].metric + "' is named twice");
   }
+  if (const toml::node* sn = r.raw("settled")) {
+    const toml::array* sa = sn->as_array();
+    if (!sa) r.fail("settled", "expected an array of { metric, value, uncertainty, why }");
+    for (std::size_t i = 0; i < sa->size(); ++i) {
+      const std::string k = fmt::format("{}.settled[{}]", key, i);
+      c.settled.push_back(read_settled((*sa)[i], c, r.file(), k));
+      for (std::size_t j = 0; j < i; ++j)
+        if (c.settled[j].metric == c.settled[i].metric)
+          throw InputError(r.file(), k + ".metric",
+                           "expected one settled value per quantity, '" + c.settled[i].metric + "' has two");
+    }
+  }
   return c;
 }
 
 }  // namespace
+
+bool settled_metric(const std::string& metric) {
+  if (metric == "peak_R" || metric == "contact_start" || metric == "contact_end" || metric == "impulse")
+    return true;
+  return metric.rfind("impulse_", 0) == 0 && known_norm(metric);
+}
 
 const std::vector<std::string>& card_sets() {
   static const std::vector<std::string> s = {"paper", "hard", "exact"};

@@ -79,6 +79,37 @@ ScoreQuantity single(const Gate& g, const Comparison& cmp, const std::optional<C
   return q;
 }
 
+/// A quantity judged against its settled value v +- U (the card's; docs/s4.md): the run's own value
+/// a (the comparison's run side, read from its history) against v, |a - v| / |v| for a relative norm
+/// and |a - v| for one in s, the uncertainty U / |v| or U in place of the reference's spread.
+ScoreQuantity against_settled(const Gate& g, const Comparison& cmp, const SettledValue& v,
+                              const char* judged) {
+  ScoreQuantity q{g.metric, std::nullopt, g.tol,        std::nullopt, "fail",
+                  "",       judged,       std::nullopt, v.value,      std::nullopt};
+  const Norm* n = cmp.find(g.metric);
+  if (!n || !n->a || n->difference) {
+    q.note =
+        fmt::format("{}: the run has no value of its own to hold to the settled {:.6g}", g.metric, v.value);
+    return q;
+  }
+  const double per = n->unit == "1" ? 1.0 / std::abs(v.value) : 1.0;  // the error's unit per unit of a - v
+  q.error = std::abs(*n->a - v.value) * per;
+  q.uncertainty = v.uncertainty * per;
+  q.status = verdict(*q.error, *g.tol, q.uncertainty, n->unit == "1" ? 1.0 : std::abs(v.value));
+  const std::string against = fmt::format("{} = {:.6g} against the settled {:.6g} +- {:.3g} ({})", g.metric,
+                                          *n->a, v.value, v.uncertainty, v.why);
+  if (q.status == "pass")
+    q.note = g.why + "; " + against;
+  else if (q.status == "fail")
+    q.note = fmt::format("error {:.4g} exceeds {:g} by more than the settled uncertainty {:.3g}: {}",
+                         *q.error, *g.tol, *q.uncertainty, against);
+  else
+    q.note =
+        fmt::format("error {:.4g} against {:g}: the settled uncertainty {:.3g} could reverse the verdict: {}",
+                    *q.error, *g.tol, *q.uncertainty, against);
+  return q;
+}
+
 /// A scalar judged by its ladder: the limit against the exact value, within 1.25 U + tol / 10.
 ScoreQuantity on_ladder(const Gate& g, const std::vector<Comparison>& cmps) {
   std::vector<double> values;
@@ -178,7 +209,12 @@ void judge(ScoreRow& row, const JobOutcome& ref, const std::map<std::string, Job
   std::string spread_note;
   const std::optional<Comparison> spread = reference_spread(it, ref, runs, spread_note);
   for (const Gate& g : it.gates) {
-    if (cmps.size() >= 3 && extrapolable(g.metric))
+    const auto settled = std::find_if(it.settled.begin(), it.settled.end(),
+                                      [&](const SettledValue& v) { return v.metric == g.metric; });
+    if (settled != it.settled.end())
+      row.quantities.push_back(
+          against_settled(g, cmps.back(), *settled, cmps.size() >= 3 ? "finest rung" : "single run"));
+    else if (cmps.size() >= 3 && extrapolable(g.metric))
       row.quantities.push_back(on_ladder(g, cmps));
     else
       row.quantities.push_back(

@@ -100,6 +100,7 @@ std::vector<ScoreItem> score_items(const std::vector<BenchmarkCard>& cards, cons
       if (facts.rank == ReferenceRank::kExact && options.ladder)
         it.ladder = plan_ladder(it.run, method, options.rungs);
       it.gates = c.quantities;
+      it.settled = c.settled;
       it.source = c.source;
       it.set = c.set;
       if (picked(it.run)) items.push_back(std::move(it));

@@ -7,7 +7,8 @@
 /// judged against the exact value; elsewhere its one run is compared with IDA converged beyond
 /// its defaults (time tolerances 100 times tighter, penalty 10 times stiffer, friction
 /// regularised at 1e-5 m/s), whose spread against the same run at the card's penalty is the
-/// reference's own uncertainty.
+/// reference's own uncertainty. A quantity with a settled value on its card (SettledValue: S4's
+/// impulse) is judged against that value and its uncertainty instead.
 
 #include <filesystem>
 #include <map>
@@ -35,8 +36,11 @@ struct ScoreItem {
   std::optional<JobSpec> reference_check;
   std::string reference_kind;  ///< the reference's method, "exact" or "ida" (its settings in reference.set)
   std::vector<Gate> gates;     ///< the card's quantities (tol and why)
-  std::string source;          ///< the matrix row the card's tolerances come from ("" derived)
-  std::string set;             ///< the card's scene set
+  /// The card's settled values: each of these quantities is judged against its settled value and
+  /// uncertainty, not against the reference run's value and spread.
+  std::vector<SettledValue> settled;
+  std::string source;  ///< the matrix row the card's tolerances come from ("" derived)
+  std::string set;     ///< the card's scene set
 };
 
 /// @brief What `beamimpact score` scores, and how: the options of the command, of
@@ -112,7 +116,7 @@ struct ScoreQuantity {
   /// ladder: the finest run's error), "single run" (no ladder); "" when not judged.
   std::string judged;
   std::optional<LadderResult> ladder;  ///< the rungs' values, order, limit (judged == "limit")
-  std::optional<double> exact;         ///< the reference's value of a scalar quantity
+  std::optional<double> exact;         ///< the reference's value of a scalar quantity (a settled value)
   std::optional<double> allowed;       ///< judged == "limit": 1.25 U + tol / 10, what the error may reach
 };
 

@@ -60,6 +60,10 @@ nlohmann::json scene_json(const ScoreRow& r, nlohmann::json quantities) {
                        {"steps", o.steps},
                        {"solver_seconds", o.solver_seconds},
                        {"process_seconds", o.process_seconds}});
+  nlohmann::json settled = nlohmann::json::array();
+  for (const SettledValue& v : it.settled)
+    settled.push_back(
+        {{"metric", v.metric}, {"value", v.value}, {"uncertainty", v.uncertainty}, {"why", v.why}});
   return {{"scene", it.run.scene_name()},
           {"file", shown_path(it.run.scene.string())},
           {"set", it.set},
@@ -68,6 +72,7 @@ nlohmann::json scene_json(const ScoreRow& r, nlohmann::json quantities) {
           {"reference_kind", it.reference_kind},
           {"reference_check",
            it.reference_check ? nlohmann::json(it.reference_check->settings_label()) : nlohmann::json()},
+          {"settled", std::move(settled)},
           {"tolerances_from", it.source},
           {"ladder", {{"kind", it.ladder.kind}, {"why", it.ladder.why}, {"rungs", rungs}}},
           {"status", to_string(r.outcome.status)},

@@ -221,6 +221,31 @@ TEST(Scorecard, ABadCardIsInputErrorNamingTheKey) {
   EXPECT_EQ(card_error("[[card]]\nscene = \"nowhere.toml\"\n"), "card[0].scene");
 }
 
+TEST(Scorecard, ASettledValueIsOneOfTheCardsScalarQuantities) {
+  const std::string card =
+      "[[card]]\nscene = \"verification/scenes/paper/s1_central.toml\"\nset = \"paper\"\n"
+      "reference = { method = \"ida\" }\nsource = \"\"\n"
+      "quantities = [{ metric = \"impulse\", tol = 0.04, why = \"derived: a bound\" },"
+      " { metric = \"R.rel_l2\", tol = 0.1, why = \"derived: a bound\" }]\n";
+  const auto settled = [&](const std::string& entries) {
+    return card_error(card + "settled = [" + entries + "]\n");
+  };
+  const std::string good =
+      "{ metric = \"impulse\", value = 2.5, uncertainty = 0.1, why = \"a settled ladder\" }";
+  EXPECT_EQ(settled(good), "accepted");
+  EXPECT_EQ(settled(good + ", " + good), "card[0].settled[1].metric");  // one value per quantity
+  // A quantity the card does not gate, one with no scalar value of the run's own.
+  EXPECT_EQ(settled("{ metric = \"peak_R\", value = 2.5, uncertainty = 0.1, why = \"a settled ladder\" }"),
+            "card[0].settled[0].metric");
+  EXPECT_EQ(settled("{ metric = \"R.rel_l2\", value = 2.5, uncertainty = 0.1, why = \"a settled ladder\" }"),
+            "card[0].settled[0].metric");
+  EXPECT_EQ(settled("{ metric = \"impulse\", value = 2.5, uncertainty = -0.1, why = \"a settled ladder\" }"),
+            "card[0].settled[0].uncertainty");
+  EXPECT_EQ(settled("{ metric = \"impulse\", value = 0, uncertainty = 0.1, why = \"a settled ladder\" }"),
+            "card[0].settled[0].value");
+  EXPECT_EQ(settled("{ metric = \"impulse\", value = 2.5, uncertainty = 0.1 }"), "card[0].settled[0].why");
+}
+
 TEST(Scorecard, ToleranceComparisonsCarryFourUlpsOfSlack) {
   // A contact_end of 2.55 s against an exact 2.5 s: |a - b| carries round-off of a few ulps of
   // 2.55 (4.4e-16 each), so 0.05 + 2.7e-16 is 0.05 to the precision the error has.
@@ -278,6 +303,51 @@ TEST(Scorecard, TheRunIsComparedWithItsReferenceNotTheOtherWayRound) {
   EXPECT_NEAR(*row.quantities.front().error, 0.25, 1e-12);
   EXPECT_EQ(row.quantities.front().judged, "single run");
   EXPECT_EQ(row.quantities.front().status, QuantityStatus::kPass);
+}
+
+// The S4 cards' settled impulses are the committed ones (reports/s4/corotational.json, made by
+// reports/s4_corotational.py from reports/s4/settled.json), rounded to 0.05 N s, the uncertainty
+// rounded up by at most 0.1 N s; score carries them to its items.
+TEST(Scorecard, TheS4CardsHoldTheCommittedSettledImpulses) {
+  std::ifstream in(kRoot / "reports/s4/corotational.json");
+  ASSERT_TRUE(in) << "reports/s4/corotational.json";
+  const nlohmann::json doc = nlohmann::json::parse(in);
+  const auto items = score_items(shipped_cards(), *find_method("paper"));
+  for (const char* angle : {"45", "60", "90"}) {
+    const ScoreItem& it = item(items, std::string("s4_oblique_") + angle);
+    ASSERT_EQ(it.settled.size(), 1u) << angle;
+    EXPECT_EQ(it.settled[0].metric, "impulse");
+    const nlohmann::json& s = doc.at("angles").at(angle).at("settled_corotational").at("impulse_normal");
+    EXPECT_NEAR(it.settled[0].value, s.at("value").get<double>(), 0.05) << angle;
+    EXPECT_GE(it.settled[0].uncertainty, s.at("uncertainty").get<double>()) << angle;
+    EXPECT_LE(it.settled[0].uncertainty, s.at("uncertainty").get<double>() + 0.1) << angle;
+  }
+}
+
+TEST(Scorecard, ASettledValueTakesThePlaceOfTheReferenceRun) {
+  // The memory runs' impulse is 0.41 x force (0.4 s of force and the rows' two half-step ramps):
+  // reference run 0.41 N s, run 0.615 N s, settled value 0.5 +- 0.01 N s. Judged against the
+  // settled value the error is |0.615 - 0.5| / 0.5 = 0.23 with uncertainty 0.01 / 0.5 = 0.02
+  // (against the reference run it would be 0.5; the run and the settled value swapped,
+  // 0.115 / 0.615 = 0.187 and 0.0163).
+  std::vector<ScoreItem> held;
+  score_memory({1.5}, 0.25, held);
+  held[0].settled = {SettledValue{"impulse", 0.5, 0.01, "a settled ladder"}};
+  std::map<std::string, JobOutcome> runs;
+  runs.emplace(held[0].reference.key(), memory_run(held[0].reference, 1.0));
+  runs.emplace(held[0].run.key(), memory_run(held[0].run, 1.5));
+  const auto judged = [&](double tol) {
+    held[0].gates[0].tol = tol;
+    return score_rows(held, runs).front().quantities.front();
+  };
+  const ScoreQuantity q = judged(0.26);
+  ASSERT_TRUE(q.error && q.uncertainty && q.exact);
+  EXPECT_NEAR(*q.error, 0.23, 1e-12);
+  EXPECT_NEAR(*q.uncertainty, 0.02, 1e-12);
+  EXPECT_EQ(*q.exact, 0.5);
+  EXPECT_EQ(q.status, "pass");                            // 0.25 <= 0.26
+  EXPECT_EQ(judged(0.24).status, "reference uncertain");  // 0.21 <= 0.24 < 0.25: the uncertainty decides
+  EXPECT_EQ(judged(0.20).status, "fail");  // 0.21 > 0.20 (swapped: 0.171 <= 0.20 < 0.203, uncertain)
 }
 
 TEST(Scorecard, ABiasCannotHideInTheDiscretisationError) {

@@ -6,8 +6,9 @@ contact forces as arrows, written as a GIF (matplotlib's Pillow writer) or an MP
 Usage: reports/animate.py RUN_DIR [--out RUN_DIR/animation.gif] [--scale auto|S] [--every N]
          [--fps 20] [--frame T --out frame.png]
 RUN_DIR comes from `beamimpact run SCENE --out RUN_DIR --fields`. --frame writes one PNG at the
-time nearest T instead. Every picture's footer names the run (scene, method, version), the
-scale and this command.
+time nearest T instead. Each picture shows the time and its scales (deformation, force arrows);
+how it was made (this command, the run's scene, method and version, the date) is its manifest
+OUT_figures.json beside it (reports/figure_sets.py), not drawn.
 """
 import argparse
 import importlib.util
@@ -24,6 +25,8 @@ import numpy as np  # noqa: E402
 from matplotlib import animation  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from figure_sets import manifest_figure, write_manifest  # noqa: E402
 # The fields reader of the Python package, loaded by path: no compiled module needed here.
 _spec = importlib.util.spec_from_file_location("beamimpact_fields", os.path.join(ROOT, "python", "beamimpact",
                                                                                   "fields.py"))
@@ -101,8 +104,7 @@ def main(argv):
     arrow = 0.1 * size / fmax if fmax > 0 else 0.0  # m per N: the largest force is 10 % of the scene
     pad = 0.08 * size
 
-    fig, ax = plt.subplots(figsize=(8, 4.5))
-    fig.subplots_adjust(bottom=0.2)
+    fig, ax = plt.subplots(figsize=(8, 4.5), layout="constrained")
     ax.set_aspect("equal")
     ax.set_xlim(lo[0] - pad, hi[0] + pad)
     ax.set_ylim(lo[1] - pad, hi[1] + pad)
@@ -115,9 +117,8 @@ def main(argv):
                        angles="xy", scale_units="xy", scale=1.0, width=0.004, minlength=0)
     title = ax.set_title("")
     command = "reports/animate.py " + " ".join(shlex.quote(x) for x in argv)
-    fig.text(0.01, 0.01, f"{summary['scene']} ({summary['method']}), beamimpact {summary['version']}; "
-             f"deformation x {scale:.3g}, arrows {arrow:.3g} m/N (contact force)\n{command}",
-             fontsize=6.5, family="monospace", va="bottom")
+    # What the picture's lengths mean is drawn with it; how it was made is the manifest's caption.
+    legend = f"deformation x {scale:.3g}, contact force arrows {arrow:.3g} m/N"
 
     def draw(i):
         t, path = steps[i]
@@ -128,7 +129,7 @@ def main(argv):
         F = f["contact_force"][:, :2]
         quiver.set_offsets(x)
         quiver.set_UVC(arrow * F[:, 0], arrow * F[:, 1])
-        title.set_text(f"t = {t:.4g} s")
+        title.set_text(f"t = {t:.4g} s; {legend}")
         return lines + [quiver, title]
 
     if a.frame is not None:
@@ -140,7 +141,11 @@ def main(argv):
         out = a.out or os.path.join(a.run_dir, "animation.gif")
         writer = writer_for(out, a.fps)
         animation.FuncAnimation(fig, draw, frames=len(steps), blit=False).save(out, writer=writer)
-    print(f"wrote {out} ({len(steps)} steps)")
+    manifest = os.path.splitext(out)[0] + "_figures.json"
+    write_manifest(manifest, f"{summary['scene']} ({summary['method']})", [manifest_figure(
+        os.path.basename(out), f"{summary['scene']} ({summary['method']})", command, summary["scene"],
+        summary["version"], f"The beams in their deformed shape ({legend}); {len(steps)} steps of the run's fields.")])
+    print(f"wrote {out} ({len(steps)} steps) and {manifest} (how it was made: its caption)")
     return 0
 
 

@@ -1,11 +1,15 @@
 """reports/animate.py on a real run: a frame and a GIF are written (valid image files whose
-frame count is the number of steps used), and bad requests fail with a clear message, exit 2.
+frame count is the number of steps used), each with its manifest (command, version, date,
+caption) and with every label inside the frame and nothing of how it was made drawn into it; bad
+requests fail with a clear message, exit 2.
 Run from ctest (BEAMIMPACT_EXE, BEAMIMPACT_SOURCE)."""
+import json
 import os
 import subprocess
 import sys
 from pathlib import Path
 
+import matplotlib.figure
 import pytest
 
 EXE = os.environ["BEAMIMPACT_EXE"]
@@ -34,6 +38,28 @@ def test_frame_and_gif(run_dir, tmp_path):
     assert p.returncode == 0, p.stderr
     with pil.open(tmp_path / "a.gif") as gif:
         assert gif.n_frames == 6  # rows 0, 10, ..., 50 of the 51 (0.5 s / 0.01 s + 1)
+
+
+def test_frame_draws_no_provenance_and_its_manifest_says_it(run_dir, tmp_path, monkeypatch):
+    sys.path.insert(0, str(SOURCE / "reports"))
+    import animate
+    from figure_checks import drawn_text, texts_outside
+    saved = []
+    real = matplotlib.figure.Figure.savefig
+
+    def capture(fig, path, **kwargs):
+        assert texts_outside(fig) == []  # every label inside the frame
+        saved.append(drawn_text(fig))
+        real(fig, path, **kwargs)
+
+    monkeypatch.setattr(matplotlib.figure.Figure, "savefig", capture)
+    assert animate.main([str(run_dir), "--frame", "0.3", "--out", str(tmp_path / "f.png")]) == 0
+    summary = json.loads((run_dir / "summary.json").read_text())
+    assert len(saved) == 1 and "m/N" in saved[0]  # the scales are drawn: they are how to read it
+    assert summary["version"] not in saved[0] and "animate.py" not in saved[0]
+    fig = json.loads((tmp_path / "f_figures.json").read_text())["figures"][0]
+    assert fig["png"] == "f.png" and fig["version"] == summary["version"] and fig["made"].endswith("Z")
+    assert "reports/animate.py" in fig["command"] and "--frame 0.3" in fig["command"]
 
 
 def test_clear_errors(run_dir, tmp_path):

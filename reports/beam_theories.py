@@ -30,6 +30,7 @@ import os
 import subprocess
 import sys
 
+from figure_sets import manifest_figure, write_manifest
 from report_files import save_figure_atomic, write_json_atomic, write_text_atomic
 
 import matplotlib
@@ -220,8 +221,11 @@ def markdown(data, version):
     return "".join(out)
 
 
-def plot(prob, path, version):
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.4))
+def draw(prob):
+    """@brief The peak force of every variant under the dt ladder (left) and the mesh ladder (right),
+    every label inside the image (constrained layout); how it was made is the manifest's caption.
+    @return the matplotlib figure"""
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.4), layout="constrained")
     for name, e in prob["variants"].items():
         axes[0].loglog([r["dt"] for r in e["dt_ladder"]], [r["peak"] for r in e["dt_ladder"]], "o-", label=name)
         axes[1].loglog([r["refinement"] for r in e["mesh_ladder"]], [r["peak"] for r in e["mesh_ladder"]], "o-",
@@ -237,8 +241,12 @@ def plot(prob, path, version):
         ax.set_title(f"{prob['title']}: peak force vs {what}", fontsize=9)
         ax.grid(True, which="both", alpha=0.3)
     axes[0].legend(fontsize=7)
-    fig.text(0.01, 0.005, f"{COMMAND} | beamimpact {version}", fontsize=6.5, family="monospace", va="bottom")
-    fig.tight_layout(rect=(0, 0.03, 1, 1))
+    return fig
+
+
+def plot(prob, path):
+    """@brief draw() saved to `path`."""
+    fig = draw(prob)
     save_figure_atomic(fig, path, dpi=110)
     plt.close(fig)
 
@@ -247,22 +255,24 @@ PNG = {"s2": "ladders.png", "ball_on_beam": "ball_on_beam.png"}
 SCENES = {"s2": S2_SCENE, "ball_on_beam": BALL_SCENE + " (hard variants: its Hertz keys removed)"}
 
 
-def manifest(data):
+def write_figures_json(path, data):
+    """@brief The figure set's manifest (figures.json): the tables, and per figure its command, scene,
+    version, date and caption (the two ladders)."""
     probs = data["problems"]
-    return {"title": "Beam theories and contact laws: do impulse and peak force converge?",
-            "about": "The paper integrator under dt and mesh ladders with Euler-Bernoulli or Timoshenko beams and the "
-                     "hard (paper's) or Hertz contact law. With the hard law the peak force excludes the closure "
-                     "steps (their force is the impact impulse over one step). Observed orders "
-                     "log2(|q_h - q_h/2| / |q_h/2 - q_h/4|) along each ladder; a, the exponent of a fit peak ~ h^-a "
-                     "over the last three rungs (h = dt or 1 / refinement).",
-            "tables": [{"title": probs[n]["title"], "columns": COLUMNS, "rows": table_rows(probs[n])} for n in probs]
-            + [{"title": "Ball on a beam, Euler-Bernoulli + Hertz, against the semi-analytic reference "
-                         "(references/exact/BallOnBeam.hpp)", "columns": EXACT_COLUMNS,
-                "rows": exact_rows(probs["ball_on_beam"])}],
-            "figures": [{"png": PNG[n], "title": f"{probs[n]['title']}: peak force under dt and mesh ladders",
-                         "command": COMMAND, "scene": SCENES[n], "version": data["version"],
-                         "caption": f"dt ladder: {probs[n]['dt_ladder']}; mesh ladder: {probs[n]['mesh_ladder']}."}
-                        for n in probs]}
+    write_manifest(
+        path, "Beam theories and contact laws: do impulse and peak force converge?",
+        [manifest_figure(PNG[n], f"{probs[n]['title']}: peak force under dt and mesh ladders", COMMAND, SCENES[n],
+                         data["version"], f"dt ladder: {probs[n]['dt_ladder']}; mesh ladder: {probs[n]['mesh_ladder']}.")
+         for n in probs],
+        about="The paper integrator under dt and mesh ladders with Euler-Bernoulli or Timoshenko beams and the "
+              "hard (paper's) or Hertz contact law. With the hard law the peak force excludes the closure "
+              "steps (their force is the impact impulse over one step). Observed orders "
+              "log2(|q_h - q_h/2| / |q_h/2 - q_h/4|) along each ladder; a, the exponent of a fit peak ~ h^-a "
+              "over the last three rungs (h = dt or 1 / refinement).",
+        tables=[{"title": probs[n]["title"], "columns": COLUMNS, "rows": table_rows(probs[n])} for n in probs]
+        + [{"title": "Ball on a beam, Euler-Bernoulli + Hertz, against the semi-analytic reference "
+                     "(references/exact/BallOnBeam.hpp)", "columns": EXACT_COLUMNS,
+            "rows": exact_rows(probs["ball_on_beam"])}])
 
 
 def main():
@@ -289,8 +299,8 @@ def main():
         write_json_atomic(js, data)
     write_text_atomic(os.path.join(a.out, "ladders.md"), markdown(data, data["version"]))
     for n, prob in data["problems"].items():
-        plot(prob, os.path.join(a.out, PNG[n]), data["version"])
-    write_json_atomic(os.path.join(a.out, "figures.json"), manifest(data))
+        plot(prob, os.path.join(a.out, PNG[n]))
+    write_figures_json(os.path.join(a.out, "figures.json"), data)
     print(markdown(data, data["version"]))
 
 

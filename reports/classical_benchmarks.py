@@ -20,7 +20,8 @@ import subprocess
 import sys
 import tomllib
 
-from report_files import save_figure_atomic, write_json_atomic
+from figure_sets import manifest_figure, write_manifest
+from report_files import save_figure_atomic
 
 import matplotlib
 
@@ -133,19 +134,18 @@ def main(argv):
             drawn.append((method, history(out)))
         png = f"{name}.png"
         scene_figure(name, history(ref_dir), drawn, os.path.join(args.out, png))
-        figures.append({"png": png, "title": f"{name}: contact force and contact node against the exact solution",
-                        "caption": "Each method at the scene's own mesh and step (NAME:M: M times the elements at "
-                                   "dt / M); exact in black (references/exact/RodOnWall.hpp, CoaxialRods.hpp).",
-                        "command": command, "scene": scene, "version": version})
-    manifest = {"title": "Classical impact benchmarks against their exact answers",
-                "about": "The rod on a rigid wall (d'Alembert), the bouncing bar (Doyen, Ern, Piperno 2011) and two "
+        figures.append(manifest_figure(
+            png, f"{name}: contact force and contact node against the exact solution", command, scene, version,
+            "Each method at the scene's own mesh and step (NAME:M: M times the elements at dt / M); exact in black "
+            "(references/exact/RodOnWall.hpp, CoaxialRods.hpp)."))
+    write_manifest(os.path.join(args.out, "figures.json"), "Classical impact benchmarks against their exact answers",
+                   figures,
+                   about="The rod on a rigid wall (d'Alembert), the bouncing bar (Doyen, Ern, Piperno 2011) and two "
                          "rods with a second contact period (Escalona, Mayo, Dominguez 1999), docs/benchmarks.md. "
                          "Norms of beamimpact compare against the exact run: "
                          + ", ".join(f"{n} ({UNITS[n]})" for n in NORMS) + ".",
-                "tables": [{"title": "Sequence norms against exact", "columns": ["scene", "method"] + list(NORMS),
-                            "rows": rows}],
-                "figures": figures}
-    write_json_atomic(os.path.join(args.out, "figures.json"), manifest)
+                   tables=[{"title": "Sequence norms against exact", "columns": ["scene", "method"] + list(NORMS),
+                            "rows": rows}])
     print(f"classical_benchmarks: wrote {args.out}/figures.json")
 
 

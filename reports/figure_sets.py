@@ -2,11 +2,14 @@
 checked, its PNGs copied beside the page (images as separate files, loaded lazily), and every figure
 told apart as made by this run or by an older build (its version, that version's commit date and the
 command that remakes it)."""
+import datetime
 import functools
 import json
 import os
 import shutil
 import subprocess
+
+from report_files import write_json_atomic
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -25,6 +28,39 @@ FIGURE_SETS = {
     "setup": "/usr/bin/python3 reports/plot_setup_benchmark.py --run",
 }
 FIGURE_KEYS = ("png", "title", "command", "scene", "version")
+
+
+def made_now():
+    """@brief The time a figure is made, UTC, "2026-11-29T08:00:00Z" (a manifest's "made")."""
+    return datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
+
+
+def manifest_figure(png, title, command, scene, version, caption, made=None):
+    """@brief One figure of a manifest: how it was made (command, scene, version, the date) and its
+    caption, said here once and shown under the image; nothing of it is drawn into the image.
+    @param png the image's path relative to the manifest
+    @param title the figure's heading
+    @param command the command that remakes it, from the repository root
+    @param scene the scene file(s) its data comes from
+    @param version the beamimpact version that made its data ("0.1.0+abc1234")
+    @param caption what the figure shows and whatever else a reader needs (units, what is left out)
+    @param made the time it was made (default: now, UTC)"""
+    return {"png": png, "title": title, "command": command, "scene": scene, "version": version,
+            "made": made or made_now(), "caption": caption}
+
+
+def write_manifest(path, title, figures, about="", tables=()):
+    """@brief Writes a figure set's manifest (figures.json, or PREFIX_figures.json), atomically: the
+    one format the report page reads (figure_set below).
+    @param figures manifest_figure() entries
+    @param tables [{"title", "columns", "rows"}] shown above the figures"""
+    for f in figures:
+        missing = [k for k in FIGURE_KEYS + ("made", "caption") if k not in f]
+        if missing:
+            raise ValueError(f"{path}: figure {f.get('png', '?')} lacks {', '.join(missing)} (use manifest_figure)")
+    doc = {"title": title, "about": about, "tables": list(tables), "figures": list(figures)}
+    write_json_atomic(path, doc)
+    return doc
 
 
 class InputProblem(Exception):

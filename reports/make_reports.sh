@@ -14,7 +14,7 @@ report="$out/REPORT.md"
   echo "# beamimpact: what accuracy costs in time"
   echo
   echo "- made by: \`reports/make_reports.sh\`, beamimpact $version, $(date -u +%Y-%m-%dT%H:%M:%SZ)"
-  echo "- each figure's footer gives the sweep command, the scene and the version; the tables are the sweeps' own sweep.md"
+  echo "- each figure's caption gives the sweep command, the scene and the version (also in NAME/figures.json); the tables are the sweeps' own sweep.md"
 } > "$report"
 
 # name | scene | sweep arguments | reference | title | norm | what it shows
@@ -37,6 +37,8 @@ for s in "${sweeps[@]}"; do
     echo "$what"
     echo
     echo "![timestep sensitivity]($name/sensitivity.png) ![work-precision]($name/work_precision.png)"
+    echo
+    echo "*Made by \`$cmd\` (scene $scene, reference $ref), beamimpact $version.*"
     echo
     sed -n '/^|/p' "$out/$name/sweep.md"
   } >> "$report"

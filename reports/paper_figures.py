@@ -8,7 +8,8 @@ Usage: paper_figures.py [--out reports/paper_figures] [--runs out/paper_figures]
 Runs every scene x method once (`beamimpact run`, FEniCSx through references/fenicsx/run.py; about
 1-2 min on 2 cores), then writes OUT/fig06.png .. fig14.png, OUT/claims.md, OUT/claims.json and
 OUT/figures.json (the manifest of the HTML report). Progress on stderr. A reference that refuses a
-scene (exit 2, e.g. exact with friction) is left out of that figure and named in its footer.
+scene (exit 2, e.g. exact with friction) is left out of that figure and named in its caption
+(figures.json: each figure's command, scenes, version, date and caption; nothing of it is drawn).
 """
 import argparse
 import csv
@@ -17,9 +18,9 @@ import json
 import os
 import subprocess
 import sys
-import textwrap
 import time
 
+from figure_sets import manifest_figure, write_manifest
 from report_files import save_figure_atomic, write_json_atomic, write_text_atomic
 
 import matplotlib
@@ -82,52 +83,62 @@ def summary(d):
         return json.load(f)
 
 
+def draw(runs, num, title, panels, xlabel):
+    """@brief One of the paper's figures from the runs: one panel per (ylabel, curves), every method
+    that ran the curve's scene on it; every label inside the image (constrained layout), nothing of
+    how it was made drawn (the manifest's caption says it).
+    @param runs {(scene, method): run directory or None}
+    @param panels [(ylabel, [(scene, column, transform, {"color", "text"})])]
+    @return the matplotlib figure"""
+    fig, axes = plt.subplots(len(panels), 1, figsize=(7.5, 2.6 * len(panels) + 0.8), squeeze=False,
+                             layout="constrained")
+    for ax, (ylabel, curves) in zip(axes[:, 0], panels):
+        tops = []
+        for (scene, col, f, suffix) in curves:
+            for m in METHODS:
+                d = runs.get((scene, m))
+                if not d:
+                    continue
+                h = history(d)
+                if col not in h:
+                    continue
+                st = dict(STYLE[m])
+                if suffix.get("color"):
+                    st["color"] = suffix["color"]
+                ys = [f(v) for v in h[col]]
+                ax.plot(h["t"], ys, label=f"{LABEL[m]}{suffix.get('text', '')}", **st)
+                tops.append(sorted(ys)[int(0.97 * (len(ys) - 1))])
+        if col == "R" and tops:
+            # Closure rows (the paper's one-step impulse, IDA's penalty spike) would flatten the plot:
+            # the axis stops above the largest 97th percentile; the peaks are in the claims table.
+            ax.set_ylim(bottom=-0.05 * max(tops), top=1.6 * max(tops))
+            ax.text(0.01, 0.97, "closure spikes clipped", transform=ax.transAxes, fontsize=6, va="top")
+        ax.set_ylabel(ylabel)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=6, ncol=3)
+    axes[-1, 0].set_xlabel(xlabel)
+    fig.suptitle(f"Figure {num}: {title}", fontsize=10)
+    return fig
+
+
+COMMAND = "/usr/bin/python3 reports/paper_figures.py"
+
+
 class Figures:
     def __init__(self, a, runs, notes, version):
         self.a, self.runs, self.notes, self.version, self.manifest = a, runs, notes, version, []
 
     def make(self, num, title, scenes, panels, xlabel, caption):
-        """panels: list of (ylabel, [(scene, column, transform, label suffix)])."""
-        fig, axes = plt.subplots(len(panels), 1, figsize=(7.5, 2.6 * len(panels) + 1.2), squeeze=False)
-        fig.subplots_adjust(left=0.12, right=0.97, bottom=0.24 if len(panels) == 1 else 0.15, top=0.92, hspace=0.35)
-        for ax, (ylabel, curves) in zip(axes[:, 0], panels):
-            tops = []
-            for (scene, col, f, suffix) in curves:
-                for m in METHODS:
-                    d = self.runs.get((scene, m))
-                    if not d:
-                        continue
-                    h = history(d)
-                    if col not in h:
-                        continue
-                    st = dict(STYLE[m])
-                    if suffix.get("color"):
-                        st["color"] = suffix["color"]
-                    ys = [f(v) for v in h[col]]
-                    ax.plot(h["t"], ys, label=f"{LABEL[m]}{suffix.get('text', '')}", **st)
-                    tops.append(sorted(ys)[int(0.97 * (len(ys) - 1))])
-            if col == "R" and tops:
-                # Closure rows (the paper's one-step impulse, IDA's penalty spike) would flatten the plot:
-                # the axis stops above the largest 97th percentile; the peaks are in the claims table.
-                ax.set_ylim(bottom=-0.05 * max(tops), top=1.6 * max(tops))
-                ax.text(0.01, 0.97, "closure spikes clipped", transform=ax.transAxes, fontsize=6, va="top")
-            ax.set_ylabel(ylabel)
-            ax.grid(True, alpha=0.3)
-            ax.legend(fontsize=6, ncol=3)
-        axes[-1, 0].set_xlabel(xlabel)
-        fig.suptitle(f"Figure {num}: {title}", fontsize=10)
-        missing = sorted({self.notes[(s, m)] for (s, m) in self.notes if s in scenes})
-        cmd = "/usr/bin/python3 reports/paper_figures.py"
-        foot = textwrap.wrap(f"{cmd} | beamimpact {self.version} | scenes: "
-                             f"{', '.join(f'{PAPER}/{s}.toml' for s in scenes)}", 150)
-        foot += textwrap.wrap("not shown: " + "; ".join(missing), 150) if missing else []
-        fig.text(0.01, 0.005, "\n".join(foot), fontsize=5.5, family="monospace", va="bottom")
+        """Draws and saves one figure; its manifest entry says how it was made and, in its caption,
+        which reference refused which scene (left out of the figure)."""
+        fig = draw(self.runs, num, title, panels, xlabel)
         png = f"fig{num:02d}.png"
         save_figure_atomic(fig, os.path.join(self.a.out, png), dpi=100)
         plt.close(fig)
-        self.manifest.append({"png": png, "title": f"Figure {num}: {title}", "command": cmd,
-                              "scene": ", ".join(f"{PAPER}/{s}.toml" for s in scenes), "version": self.version,
-                              "caption": caption})
+        missing = sorted({self.notes[(s, m)] for (s, m) in self.notes if s in scenes})
+        caption = " ".join(filter(None, [caption, f"Not shown: {'; '.join(missing)}." if missing else ""]))
+        self.manifest.append(manifest_figure(png, f"Figure {num}: {title}", COMMAND,
+                                             ", ".join(f"{PAPER}/{s}.toml" for s in scenes), self.version, caption))
 
 
 def ident(v):
@@ -248,7 +259,7 @@ def main():
     F = Figures(a, runs, notes, version)
     all_figures(F)
     cl = claims(runs)
-    cmd = "/usr/bin/python3 reports/paper_figures.py"
+    cmd = COMMAND
     write_json_atomic(os.path.join(a.out, "claims.json"), {"command": cmd, "version": version, "claims": cl})
     rows = [[c["figure"], c["claim"], "; ".join(f"{m}: {v}" for m, v in c["measured"].items()),
              "yes" if c["holds"] else "NO"] for c in cl]
@@ -257,13 +268,11 @@ def main():
                       "runs at the paper's settings (scenes in verification/scenes/paper/). 'holds' judges the paper "
                       "integrator's run.\n\n| figure | paper's claim | measured | holds (paper integrator) |\n|---|---|---|---|\n"
                       + "".join("| " + " | ".join(r) + " |\n" for r in rows))
-    write_json_atomic(os.path.join(a.out, "figures.json"), {
-        "title": "The paper's Figures 6-14 and its claims",
-        "about": "Pu & Chi 2011, Figures 6-14: the paper integrator at the paper's settings with the "
-                 "references that accept each scene overlaid.",
-        "tables": [{"title": "claims", "columns": ["figure", "paper's claim", "measured",
-                                                   "holds (paper integrator)"], "rows": rows}],
-        "figures": F.manifest})
+    write_manifest(os.path.join(a.out, "figures.json"), "The paper's Figures 6-14 and its claims", F.manifest,
+                   about="Pu & Chi 2011, Figures 6-14: the paper integrator at the paper's settings with the "
+                         "references that accept each scene overlaid.",
+                   tables=[{"title": "claims", "columns": ["figure", "paper's claim", "measured",
+                                                           "holds (paper integrator)"], "rows": rows}])
     print(open(os.path.join(a.out, "claims.md")).read())
 
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """@brief Per-effect cost per step: reads the JSON of benchmarks/effects_benchmark (--benchmark_out),
 divides every variant's CPU time per step by the hand-written kernel's at the same size (same run),
-and writes the plot, the table (markdown) and the manifest the HTML report reads.
+and writes the plot, the table (markdown) and the manifest the HTML report reads (figures.json: the
+figure's command, version, date and caption, with the machine's load; nothing of it drawn).
 
 Usage: plot_effects_benchmark.py [--run] [--json reports/benchmarks/effects_benchmark.json]
                                  [--out reports/benchmarks] [--build build]
@@ -17,8 +18,8 @@ import json
 import os
 import subprocess
 import sys
-import textwrap
 
+from figure_sets import manifest_figure, write_manifest
 from report_files import save_figure_atomic, write_json_atomic, write_text_atomic
 
 import matplotlib
@@ -131,10 +132,12 @@ def table(rows):
     return out
 
 
-def plot(rows, png, footer):
+def draw(rows):
+    """@brief Each variant's cost per step against size, as a ratio to the kernel, every label inside
+    the image (constrained layout); how it was made is the manifest's caption.
+    @return the matplotlib figure"""
     names, sizes = order(rows)
-    fig, ax = plt.subplots(figsize=(8, 5))
-    fig.subplots_adjust(left=0.1, right=0.72, bottom=0.22)
+    fig, ax = plt.subplots(figsize=(8, 5), layout="constrained")
     for i, n in enumerate(names):
         pts = [(rows[(n, s)]["dofs"], rows[(n, s)]["ratio_to_kernel"], rows[(n, s)]["spread"])
                for s in sizes if (n, s) in rows and rows[(n, s)]["ratio_to_kernel"]]
@@ -148,9 +151,35 @@ def plot(rows, png, footer):
     ax.set_title("Cost per step of each effect, as a ratio to the lumped-mass kernel", fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
-    fig.text(0.01, 0.01, footer, fontsize=6.5, family="monospace", va="bottom")
+    return fig
+
+
+def plot(rows, png):
+    """@brief draw() saved to `png`."""
+    fig = draw(rows)
     save_figure_atomic(fig, png, dpi=100)
     plt.close(fig)
+
+
+def stamp_version(path, version):
+    """The build that measured: written into the benchmark JSON's context ("beamimpact_version"), so
+    that a re-plot of it (no --run) names that build, not the one plotting."""
+    with open(path) as f:
+        data = json.load(f)
+    data["context"]["beamimpact_version"] = version
+    write_json_atomic(path, data)
+
+
+def measured_version(ctx, manifest):
+    """The version that measured the JSON: its context's, else (a JSON from before the stamp) the
+    version its earlier manifest named, else "unknown"."""
+    if ctx.get("beamimpact_version"):
+        return ctx["beamimpact_version"]
+    try:
+        with open(manifest) as f:
+            return json.load(f)["figures"][0]["version"]
+    except (OSError, ValueError, KeyError, IndexError):
+        return "unknown"
 
 
 def main():
@@ -167,15 +196,14 @@ def main():
             fail(f"--build {a.build}: no benchmarks/effects_benchmark there (cmake --build {a.build} --target effects_benchmark)")
         os.makedirs(os.path.dirname(os.path.abspath(a.json)), exist_ok=True)
         subprocess.run(cmd.split(), check=True)
-    version = subprocess.run([os.path.join(a.build, "beamimpact"), "--version"], capture_output=True,
-                             text=True).stdout.strip() or "unknown"
+        stamp_version(a.json, subprocess.run([os.path.join(a.build, "beamimpact"), "--version"], capture_output=True,
+                                             text=True).stdout.strip() or "unknown")
     ctx, times = load(a.json)
+    version = measured_version(ctx, os.path.join(a.out, "figures.json"))
     rows = summarise(times)
     os.makedirs(a.out, exist_ok=True)
     load_avg = ctx.get("load_avg", [])
-    footer = ("\n".join(textwrap.wrap(cmd, 130)) + f"\nbeamimpact {version} | {ctx.get('num_cpus')} CPUs, load average {load_avg} | "
-              f"min of repetitions, bars: half the spread")
-    plot(rows, os.path.join(a.out, "effects.png"), footer)
+    plot(rows, os.path.join(a.out, "effects.png"))
     md = table(rows)
     write_text_atomic(os.path.join(a.out, "effects_table.md"),
                       f"Made by `{cmd}` then `reports/plot_effects_benchmark.py`, beamimpact {version}, "
@@ -186,19 +214,22 @@ def main():
                      f"{rows[(n, s)]['ratio_to_kernel']:.2f}" + ("" if rows[(n, s)]["vs_baseline"] is None
                                                                 else f" ({rows[(n, s)]['vs_baseline']:+.0%})"))
                     for s in sizes] for n in names]
-    write_json_atomic(os.path.join(a.out, "figures.json"), {"title": "Per-effect benchmarks (cost per step, ratio to the hand-written kernel)",
-                   "about": "benchmarks/effects_benchmark.cc: the paper integrator on a 10 m target of n elements "
-                            "with one effect on at a time; CPU time per step divided by beamimpact::bench::StepKernel's "
-                            "at the same size in the same run (minimum of 3 interleaved repetitions); in brackets the change against the "
-                            "baseline: 'frames' (one target, open contact, no other effect), for the contact rows "
-                            "'contact_0' (8 targets, all contacts open); NAME_threads_2: NAME on 2 threads, in "
-                            "wall time against NAME's wall time (negative: faster).",
-                   "tables": [{"title": "ratio to the kernel (change vs baseline)",
-                               "columns": ["variant", "threads"] + [f"{s:g} DOFs" for s in sizes], "rows": trows}],
-                   "figures": [{"png": "effects.png", "title": "Cost per step against size, per effect",
-                                "command": cmd + " && /usr/bin/python3 reports/plot_effects_benchmark.py",
-                                "scene": "generated in benchmarks/effects_benchmark.cc (S2's beam, rigid strikers)",
-                                "version": version, "caption": "Ratios within one run; the machine was shared."}]})
+    write_manifest(
+        os.path.join(a.out, "figures.json"), "Per-effect benchmarks (cost per step, ratio to the hand-written kernel)",
+        [manifest_figure("effects.png", "Cost per step against size, per effect",
+                         cmd + " && /usr/bin/python3 reports/plot_effects_benchmark.py",
+                         "generated in benchmarks/effects_benchmark.cc (S2's beam, rigid strikers)", version,
+                         f"Ratios within one run: the minimum of the repetitions, bars half their spread; "
+                         f"measured {ctx.get('date', '?')} on {ctx.get('num_cpus')} CPUs, shared, load average {load_avg} "
+                         "at the start.")],
+        about="benchmarks/effects_benchmark.cc: the paper integrator on a 10 m target of n elements "
+              "with one effect on at a time; CPU time per step divided by beamimpact::bench::StepKernel's "
+              "at the same size in the same run (minimum of 3 interleaved repetitions); in brackets the change against the "
+              "baseline: 'frames' (one target, open contact, no other effect), for the contact rows "
+              "'contact_0' (8 targets, all contacts open); NAME_threads_2: NAME on 2 threads, in "
+              "wall time against NAME's wall time (negative: faster).",
+        tables=[{"title": "ratio to the kernel (change vs baseline)",
+                 "columns": ["variant", "threads"] + [f"{s:g} DOFs" for s in sizes], "rows": trows}])
     print(md)
 
 

@@ -13,7 +13,8 @@ import os
 import subprocess
 import sys
 
-from report_files import save_figure_atomic, write_json_atomic, write_text_atomic
+from figure_sets import manifest_figure, write_manifest
+from report_files import save_figure_atomic, write_text_atomic
 
 import matplotlib
 
@@ -86,23 +87,19 @@ def main():
     plot(rows, os.path.join(a.out, "setup.png"))
     version = header.split("beamimpact ")[1].split(";")[0] if "beamimpact " in header else "unknown"
     cols = ["scene", "DOFs", "step (us)", "warm (steps)", "cold (steps)", "CLI process (steps)"]
-    manifest = {
-        "title": "Set-up on the user's path (steps of the same run)",
-        "about": "benchmarks/setup_benchmark.cc: beamimpact::run from the scene in memory to the first "
-                 "step (model, critical step, integrator, contact pairs, trackers, recorder, first row), a "
-                 "1-step run minus one step, in steps of the same run (the step from differencing runs of N "
-                 "and 2N steps); warm: best of repeated runs in one process; cold: a fresh process's first "
-                 f"run; CLI process: a whole `beamimpact run` of 1 step. {load}.",
-        "tables": [{"title": "set-up in steps", "columns": cols, "rows": [[r[c] for c in cols] for r in rows]}],
-        "figures": [{"png": "setup.png", "title": "Set-up in steps against size, warm and cold",
-                     "command": "/usr/bin/python3 reports/plot_setup_benchmark.py --run",
-                     "scene": "verification/scenes/paper/s1_central.toml (rods), s2_transverse.toml (frames), "
-                              "bodies.*.elements set for the DOFs",
-                     "version": version,
-                     "caption": "Ratios within one run; the machine was shared (load average in the text)."}],
-    }
-    write_json_atomic(os.path.join(a.out, "figures.json"), manifest)
-
+    write_manifest(
+        os.path.join(a.out, "figures.json"), "Set-up on the user's path (steps of the same run)",
+        [manifest_figure("setup.png", "Set-up in steps against size, warm and cold",
+                         "/usr/bin/python3 reports/plot_setup_benchmark.py --run",
+                         "verification/scenes/paper/s1_central.toml (rods), s2_transverse.toml (frames), "
+                         "bodies.*.elements set for the DOFs", version,
+                         "Ratios within one run; the machine was shared (load average in the text).")],
+        about="benchmarks/setup_benchmark.cc: beamimpact::run from the scene in memory to the first "
+              "step (model, critical step, integrator, contact pairs, trackers, recorder, first row), a "
+              "1-step run minus one step, in steps of the same run (the step from differencing runs of N "
+              "and 2N steps); warm: best of repeated runs in one process; cold: a fresh process's first "
+              f"run; CLI process: a whole `beamimpact run` of 1 step. {load}.",
+        tables=[{"title": "set-up in steps", "columns": cols, "rows": [[r[c] for c in cols] for r in rows]}])
 
 if __name__ == "__main__":
     main()

@@ -14,6 +14,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "reports"))
 import breakdown  # noqa: E402
 import cost_grid  # noqa: E402
+import report_page  # noqa: E402
 
 RENDER = os.path.join(ROOT, "reports", "render.py")
 FIXTURE = os.path.join(ROOT, "reports", "testdata", "verify")
@@ -88,6 +89,23 @@ def test_flat_ladders_flag_a_time_ladder_whose_error_grows_and_not_a_converging_
     assert set(flat) == {"paper (dt ladder)", "FEniCSx (meshes)"}
     assert "mesh (spatial) error dominates" in flat["paper (dt ladder)"]["why"]
     assert "another error dominates" in flat["FEniCSx (meshes)"]["why"]
+
+
+def test_a_ladder_row_says_what_it_is_judged_against():
+    # Items as verify writes them (Convergence::name(): scene, method, rungs, " vs REFERENCE" when it
+    # has one): a ladder against the exact answer is not labelled self-convergence, one without is.
+    gate = {"metric": "impulse", "margin": 0.5, "passed": True, "status": "pass"}
+    exact = {"kind": "convergence", "scene": "s1_central", "name": "s1_central paper dt=0.01/0.005 vs exact",
+             "settings": "paper dt=0.01", "reference": "exact", "gates": [gate]}
+    own = dict(exact, name="s1_central paper dt=0.01/0.005", reference="")
+    case = {"kind": "case", "scene": "s1_central", "name": "s1_central/paper", "settings": "paper dt=0.01",
+            "reference": "exact", "gates": [gate]}
+    rows = report_page.gate_rows({"items": [exact, own, case]})
+    assert [(r["run"], r["against"]) for r in rows] == [
+        ("paper dt=0.01/0.005 (ladder: each rung against exact)", "exact"),
+        ("paper dt=0.01/0.005 (self-convergence: each rung against the next finer)", "-"),
+        ("paper dt=0.01", "exact")]
+    assert [r["reference"] for r in rows] == ["exact", "", "exact"]  # the raw field, for the promise's count
 
 
 def test_report_opens_with_the_verdict_and_the_failing_gate(tmp_path):

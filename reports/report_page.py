@@ -43,13 +43,27 @@ def item_method(it):
     return words[0] if words else "?"
 
 
+def run_labels(it):
+    """@brief The run and reference cells of an item's gates: a ladder's run is its rungs and what
+    they are judged against (its reference run, or each rung against the next finer:
+    self-convergence), as report.md says it (verification/matrix/reports.cc, row_labels)."""
+    ref = it.get("reference", "")
+    if it.get("kind") != "convergence":
+        return it.get("settings") or it["name"], ref
+    rungs = it["name"][len(it.get("scene", "")):].strip()
+    if not ref:
+        return f"{rungs} (self-convergence: each rung against the next finer)", "-"
+    return f"{rungs.removesuffix(' vs ' + ref)} (ladder: each rung against {ref})", ref
+
+
 def gate_rows(norms):
-    """@brief Every gate as a flat row (scene, method, run, reference, metric, value, limit, margin,
-    status, message, why)."""
+    """@brief Every gate as a flat row (scene, method, run, against (the reference cell as shown),
+    reference, metric, value, limit, margin, status, message, why)."""
     rows = []
     for it in norms["items"]:
+        run, against = run_labels(it)
         for g in it.get("gates", []):
-            rows.append({"scene": it["scene"], "method": item_method(it), "run": it.get("settings") or it["name"],
+            rows.append({"scene": it["scene"], "method": item_method(it), "run": run, "against": against,
                          "name": it["name"], "reference": it.get("reference", ""), "metric": g["metric"],
                          "value": g.get("value"), "limit": g.get("limit", ""), "margin": g["margin"],
                          "passed": g["passed"], "status": g["status"], "message": g.get("message", ""),

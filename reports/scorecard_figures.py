@@ -13,12 +13,12 @@ again through reports/render.py, which embeds the diagrams with their captions. 
 replaces the diagrams. Exit 2 with one line on bad input.
 """
 import argparse
-import datetime
 import json
 import os
 import sys
 
-from report_files import save_figure_atomic, write_json_atomic
+from figure_sets import made_now, manifest_figure, write_manifest
+from report_files import save_figure_atomic
 
 import matplotlib
 
@@ -85,17 +85,16 @@ def figure(name, wp, marks, out_png):
             f"(impulse error against the scorecard's reference: {'; '.join(said)}).")
 
 
-def manifest(card, entries, argv):
-    """@brief figures.json of the score folder: each diagram's PNG, scene, caption and how it was
+def manifest(path, card, entries, argv):
+    """@brief Writes figures.json of the score folder: each diagram's PNG, scene, caption and how it was
     made (this script's command, the scorecard's version, the date). @param entries (scene, png, caption)"""
-    made = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
+    made = made_now()
     command = " ".join(["/usr/bin/python3 reports/scorecard_figures.py", *argv])
-    return {"title": "On the work-precision diagrams",
-            "about": f"The scored runs of {card['method']} (markers) on the committed work-precision curves of "
-                     "each scene that has a set (reports/work_precision).",
-            "figures": [{"png": png, "scene": scene, "title": f"{scene}: {card['method']} on the work-precision diagram",
-                         "command": command, "version": card.get("version", "?"), "made": made, "caption": caption}
-                        for scene, png, caption in entries]}
+    write_manifest(path, "On the work-precision diagrams",
+                   [manifest_figure(png, f"{scene}: {card['method']} on the work-precision diagram", command, scene,
+                                    card.get("version", "?"), caption, made) for scene, png, caption in entries],
+                   about=f"The scored runs of {card['method']} (markers) on the committed work-precision curves of "
+                         "each scene that has a set (reports/work_precision).")
 
 
 def main(argv):
@@ -113,7 +112,7 @@ def main(argv):
         wp = load_json(wp_path, "a work-precision set")
         entries.append((scene["scene"], png, figure(scene["scene"], wp, [(card["method"], scene)],
                                                     os.path.join(args.score_dir, png))))
-    write_json_atomic(os.path.join(args.score_dir, "figures.json"), manifest(card, entries, argv))
+    manifest(os.path.join(args.score_dir, "figures.json"), card, entries, argv)
     print(f"scorecard_figures: {len(entries)} diagram(s) in {os.path.join(args.score_dir, 'figures.json')}")
     import render  # the page, with the diagrams, from the one page generator
     render.main(["scorecard", args.score_dir])

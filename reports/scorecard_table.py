@@ -13,6 +13,7 @@ import json
 import os
 import sys
 
+from figure_sets import manifest_figure, write_manifest
 from report_files import write_json_atomic, write_text_atomic
 
 
@@ -133,18 +134,16 @@ def write_set(out, dirs, cards, text):
         marks = [(c["method"], e) for c in cards for e in c["scenes"] if e["scene"] == s["scene"]]
         png = f"{s['scene']}.png"
         caption = figure(s["scene"], wp, marks, os.path.join(out, png))
-        figures.append({"png": png, "title": f"{s['scene']}: every scored method on the work-precision diagram",
-                        "caption": caption, "command": COMMAND, "scene": s["file"], "version": cards[0]["version"]})
+        figures.append(manifest_figure(png, f"{s['scene']}: every scored method on the work-precision diagram",
+                                       COMMAND, s["file"], cards[0]["version"], caption))
     (cols1, rows1), (cols2, rows2) = tables(cards)
-    manifest = {"title": "Scorecards: every method on the benchmark set",
-                "about": "Each method run on the paper's scenes, the hard scenes and every scene with an exact "
+    write_manifest(os.path.join(out, "figures.json"), "Scorecards: every method on the benchmark set", figures,
+                   about="Each method run on the paper's scenes, the hard scenes and every scene with an exact "
                          "answer, each scene judged under its benchmark card: one reference and one tolerance per "
                          "quantity for every method, ladders and Richardson limits where the answer is exact "
                          "(beamimpact score; docs/benchmark-cards.md, docs/protocol.md).",
-                "tables": [{"title": "Verdicts per method", "columns": cols1, "rows": rows1},
-                           {"title": "Relative impulse error (verdict)", "columns": cols2, "rows": rows2}],
-                "figures": figures}
-    write_json_atomic(os.path.join(out, "figures.json"), manifest)
+                   tables=[{"title": "Verdicts per method", "columns": cols1, "rows": rows1},
+                           {"title": "Relative impulse error (verdict)", "columns": cols2, "rows": rows2}])
     write_text_atomic(os.path.join(out, "scorecards.md"), HEADER + text)
 
 

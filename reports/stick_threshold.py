@@ -15,8 +15,9 @@ contact's normal and tangential compliances were equal).
 
 Usage: reports/stick_threshold.py [--binary build/beamimpact] [--out out/stick_threshold]
          [--angles 60,45] [--phases 8]
-Writes OUT/stick_threshold.json, OUT/stick_threshold.png and OUT/stick_threshold.md; each says
-the command, the scenes and the code version.
+Writes OUT/stick_threshold.json, OUT/stick_threshold.png, OUT/stick_threshold.md and
+OUT/stick_threshold_figures.json (the figure's manifest: command, scenes, version, date, caption;
+nothing of it is drawn into the image).
 """
 import argparse
 import csv
@@ -28,6 +29,7 @@ import sys
 import tempfile
 import tomllib
 
+from figure_sets import manifest_figure, write_manifest
 from report_files import save_figure_atomic, write_json_atomic, write_text_atomic
 
 import matplotlib
@@ -67,6 +69,52 @@ def threshold(binary, scene, base_sets, tmp, hi=10.0, rel=1e-4):
         mid = 0.5 * (lo + hi)
         lo, hi = (lo, mid) if sticks(mid) else (mid, hi)
     return hi
+
+
+TITLE = "Discrete stick threshold of the closure step against the closure phase"
+CAPTION = ("The paper's closure step sticks only above cot(alpha0)/(1 - phi); [paper] closure_slip = "
+           "\"from_closure\" gives cot(alpha0) at every phase. phi: the fraction of the closure step before the "
+           "contact closes; threshold: the smallest mu (bisected to 1e-4) whose first closed step sticks.")
+
+
+def draw(result):
+    """@brief One panel per angle: the threshold against the closure phase for both options, with
+    cot(alpha0) and cot(alpha0) / (1 - phi); every label inside the image (constrained layout), how it
+    was made in the manifest's caption. @return the matplotlib figure"""
+    fig, axes = plt.subplots(1, len(result["angles"]), figsize=(5.5 * len(result["angles"]), 4.2), squeeze=False,
+                             layout="constrained")
+    for ax, e in zip(axes[0], result["angles"]):
+        pts = sorted(e["points"], key=lambda p: p["phi"])
+        ax.plot([p["phi"] for p in pts], [p["step"] for p in pts], "o-", label='paper: "step"')
+        ax.plot([p["phi"] for p in pts], [p["from_closure"] for p in pts], "s-", label='"from_closure"')
+        ax.axhline(e["cot_alpha0"], color="k", ls="--", lw=0.8, label="cot(alpha0)")
+        phis = [i / 200 for i in range(0, 196)]
+        ax.plot(phis, [e["cot_alpha0"] / (1 - f) for f in phis], color="gray", lw=0.8,
+                label="cot(alpha0) / (1 - phi)")
+        ax.set_ylim(0, 1.15 * max(p["step"] for p in pts if math.isfinite(p["step"])))
+        ax.set_xlabel("closure phase phi (fraction of the step before closure)")
+        ax.set_ylabel("stick threshold mu")
+        ax.set_title(f"{e['scene']} (dt = {e['dt']:.3g} s)", fontsize=9)
+        ax.legend(fontsize=8)
+    return fig
+
+
+def markdown(result):
+    """@brief stick_threshold.md: how it was made, then one table per angle."""
+    md = [f"# {TITLE}", "", f"Made by `{result['command']}` with beamimpact {result['version']}.", "",
+          "phi: fraction of the closure step before the contact closes (linear in time). Threshold: the "
+          "smallest mu (bisected to 1e-4) at which the first closed step sticks.", ""]
+    for e in result["angles"]:
+        pts = sorted(e["points"], key=lambda p: p["phi"])
+        md += [f"## alpha0 = {e['alpha0_deg']} deg (`{e['scene']}`, dt = {e['dt']:.4g} s, cot alpha0 = "
+               f"{e['cot_alpha0']:.4g})", "", "| phi | threshold, step (paper) | threshold, from_closure |",
+               "|---|---|---|"]
+        md += [f"| {p['phi']:.3f} | {p['step']:.4g} | {p['from_closure']:.4g} |" for p in pts]
+        s = [p["step"] for p in pts]
+        c = [p["from_closure"] for p in pts]
+        md += ["", f"Spread over phi: step {min(s):.4g} .. {max(s):.4g}; from_closure {min(c):.4g} .. "
+               f"{max(c):.4g}.", ""]
+    return "\n".join(md) + "\n"
 
 
 def main():
@@ -112,37 +160,14 @@ def main():
             result["angles"].append(entry)
     write_json_atomic(os.path.join(a.out, "stick_threshold.json"), result)
 
-    fig, axes = plt.subplots(1, len(result["angles"]), figsize=(5.5 * len(result["angles"]), 4.2), squeeze=False)
-    md = ["# Discrete stick threshold of the closure step against the closure phase", "",
-          f"Made by `{command}` with beamimpact {version}.", "",
-          "phi: fraction of the closure step before the contact closes (linear in time). Threshold: the "
-          "smallest mu (bisected to 1e-4) at which the first closed step sticks.", ""]
-    for ax, e in zip(axes[0], result["angles"]):
-        pts = sorted(e["points"], key=lambda p: p["phi"])
-        ax.plot([p["phi"] for p in pts], [p["step"] for p in pts], "o-", label='paper: "step"')
-        ax.plot([p["phi"] for p in pts], [p["from_closure"] for p in pts], "s-", label='"from_closure"')
-        ax.axhline(e["cot_alpha0"], color="k", ls="--", lw=0.8, label="cot(alpha0)")
-        phis = [i / 200 for i in range(0, 196)]
-        ax.plot(phis, [e["cot_alpha0"] / (1 - f) for f in phis], color="gray", lw=0.8,
-                label="cot(alpha0) / (1 - phi)")
-        ax.set_ylim(0, 1.15 * max(p["step"] for p in pts if math.isfinite(p["step"])))
-        ax.set_xlabel("closure phase phi (fraction of the step before closure)")
-        ax.set_ylabel("stick threshold mu")
-        ax.set_title(f"{e['scene']} (dt = {e['dt']:.3g} s)", fontsize=9)
-        ax.legend(fontsize=8)
-        md += [f"## alpha0 = {e['alpha0_deg']} deg (`{e['scene']}`, dt = {e['dt']:.4g} s, cot alpha0 = "
-               f"{e['cot_alpha0']:.4g})", "", "| phi | threshold, step (paper) | threshold, from_closure |",
-               "|---|---|---|"]
-        md += [f"| {p['phi']:.3f} | {p['step']:.4g} | {p['from_closure']:.4g} |" for p in pts]
-        s = [p["step"] for p in pts]
-        c = [p["from_closure"] for p in pts]
-        md += ["", f"Spread over phi: step {min(s):.4g} .. {max(s):.4g}; from_closure {min(c):.4g} .. "
-               f"{max(c):.4g}.", ""]
-    fig.text(0.01, 0.01, f"{command} | beamimpact {version}", fontsize=7)
-    fig.tight_layout(rect=(0, 0.04, 1, 1))
+    fig = draw(result)
     save_figure_atomic(fig, os.path.join(a.out, "stick_threshold.png"), dpi=110)
-    write_text_atomic(os.path.join(a.out, "stick_threshold.md"), "\n".join(md) + "\n")
-    print(f"wrote {a.out}/stick_threshold.{{json,png,md}}")
+    plt.close(fig)
+    write_text_atomic(os.path.join(a.out, "stick_threshold.md"), markdown(result))
+    write_manifest(os.path.join(a.out, "stick_threshold_figures.json"), TITLE,
+                   [manifest_figure("stick_threshold.png", TITLE, command,
+                                    ", ".join(e["scene"] for e in result["angles"]), version, CAPTION)])
+    print(f"wrote {a.out}/stick_threshold.{{json,png,md}} and stick_threshold_figures.json")
 
 
 if __name__ == "__main__":

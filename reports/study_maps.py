@@ -13,13 +13,13 @@ from study.json) is said there once, as each figure's caption, not drawn into th
 Run with /usr/bin/python3 (matplotlib from Debian's python3-matplotlib).
 """
 import argparse
-import datetime
 import json
 import math
 import os
 import sys
 
-from report_files import save_figure_atomic, write_json_atomic
+from figure_sets import made_now, manifest_figure, write_manifest
+from report_files import save_figure_atomic
 
 import matplotlib
 
@@ -48,14 +48,13 @@ def provenance(args, meta):
 
 
 def manifest(args, meta, titles):
-    """@brief PREFIX_figures.json: each map's PNG, title, command, scene, version, date and caption.
+    """@brief Writes PREFIX_figures.json: each map's PNG, title, command, scene, version, date and caption.
     @param titles {kind: the figure's title}"""
-    made = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
-    return {"title": f"{meta['study']}: maps over {args.x} x {args.y}",
-            "about": provenance(args, meta),
-            "figures": [{"png": os.path.basename(f"{args.out}_{kind}.png"), "title": title, "command": args.command,
-                         "scene": meta["scene"], "version": meta["version"], "made": made,
-                         "caption": provenance(args, meta)} for kind, title in titles.items()]}
+    made = made_now()
+    write_manifest(f"{args.out}_figures.json", f"{meta['study']}: maps over {args.x} x {args.y}",
+                   [manifest_figure(os.path.basename(f"{args.out}_{kind}.png"), title, args.command, meta["scene"],
+                                    meta["version"], provenance(args, meta), made) for kind, title in titles.items()],
+                   about=provenance(args, meta))
 
 
 def panels(meta, args):
@@ -85,8 +84,8 @@ def edges(v):
 
 def draw(meta, args, kind):
     cases, facets = panels(meta, args)
-    fig, axes = plt.subplots(1, len(facets), figsize=(5.2 * len(facets), 4.6), squeeze=False, constrained_layout=False)
-    fig.subplots_adjust(left=0.07, right=0.84, top=0.86, bottom=0.13, wspace=0.25)
+    # Constrained layout: every label and the colour bar inside the image, whatever the facets' count.
+    fig, axes = plt.subplots(1, len(facets), figsize=(5.2 * len(facets) + 0.8, 4.6), squeeze=False, layout="constrained")
     mappable = None
     for ax, f in zip(axes[0], facets):
         sub = [c for c in cases if f is None or c["parameters"][args.facet] == f]
@@ -108,12 +107,11 @@ def draw(meta, args, kind):
         ax.set_xlabel(args.x)
         ax.set_ylabel(args.y)
         ax.set_title(f"{args.facet} = {f:g}" if f is not None else meta["study"], fontsize=9)
-    cax = fig.add_axes([0.86, 0.13, 0.015, 0.73])
     if kind == "error":
-        fig.colorbar(mappable, cax=cax, label=f"log10 {args.norm} ({args.method} vs {meta['reference']['method']})")
+        fig.colorbar(mappable, ax=axes[0].tolist(), fraction=0.03, label=f"log10 {args.norm} ({args.method} vs {meta['reference']['method']})")
         title = f"{meta['study']}: {args.norm} error of {args.method} against {meta['reference']['method']} (white: no value)"
     else:
-        cb = fig.colorbar(mappable, cax=cax, ticks=range(len(STATUS)))
+        cb = fig.colorbar(mappable, ax=axes[0].tolist(), fraction=0.03, ticks=range(len(STATUS)))
         cb.ax.set_yticklabels(STATUS, fontsize=7)
         rules = " or ".join(f"{r['metric']} > {r['above']:g}" for r in meta["breaks"])
         title = (f"{meta['study']}: stability of {args.method} (energy: created > "
@@ -144,7 +142,7 @@ def main():
     if args.norm not in meta["norms"]:
         sys.exit(f"study_maps: '{args.norm}' is not a norm of this study ({', '.join(meta['norms'])})")
     titles = {kind: draw(meta, args, kind) for kind in ("error", "stability")}
-    write_json_atomic(f"{args.out}_figures.json", manifest(args, meta, titles))
+    manifest(args, meta, titles)
     print(f"wrote {args.out}_figures.json (how the maps were made: their captions)")
 
 

@@ -1,5 +1,5 @@
-"""study_maps.py on a hand-made 2 x 2 grid study: the maps hold no provenance text (the version and
-the command are not drawn into the images); the manifest PREFIX_figures.json says how each map was
+"""study_maps.py on a hand-made 2 x 2 grid study: every label inside the saved maps, no provenance
+text in them (the version and the command are not drawn into the images); the manifest PREFIX_figures.json says how each map was
 made (command, version, scene, date) and its caption names the study and the reference."""
 import json
 import os
@@ -8,7 +8,7 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "reports"))
 import study_maps  # noqa: E402
-from matplotlib.text import Text  # noqa: E402
+from figure_checks import drawn_text, texts_outside  # noqa: E402
 
 STUDY = {"study": "fixture_study", "file": "verification/studies/fixture.toml", "scene": "s4_oblique_90",
          "set": ["paper.n=10"], "reference": {"method": "ida", "set": ["ida.rtol=1e-8"]},
@@ -23,7 +23,8 @@ def test_maps_draw_no_provenance_and_the_manifest_says_it(tmp_path, monkeypatch)
     drawn = []
 
     def capture(fig, path, **kwargs):
-        drawn.append(" ".join(t.get_text() for t in fig.findobj(Text)))
+        assert texts_outside(fig) == []  # every label inside the saved image
+        drawn.append(drawn_text(fig))
         fig.savefig(path, **kwargs)
 
     monkeypatch.setattr(study_maps, "save_figure_atomic", capture)

@@ -6,7 +6,8 @@ the start-up of each method measured apart)."""
 import json
 import os
 
-from report_files import save_figure_atomic, write_json_atomic, write_text_atomic
+from figure_sets import manifest_figure, write_manifest as write_set_manifest
+from report_files import save_figure_atomic, write_text_atomic
 
 import cost_grid
 import matplotlib
@@ -105,7 +106,7 @@ def plot(res, png, hero=False):
 
 
 def caption(res):
-    """@brief What the figure's footer used to say, as its caption: command, scene, overrides,
+    """@brief How the figure was made, as its caption: scene, overrides,
     reference, timings, load, start-up (the version is the manifest's own field; the report says
     beside the figure which ladders' errors do not fall, the legend marks them)."""
     loads = [x for p in res["points"] if "loadavg_1min" in p for x in p["loadavg_1min"]]
@@ -124,23 +125,21 @@ def write_manifest(out):
             continue
         with open(js) as f:
             res = json.load(f)
-        figs.append({"png": f"{name}/work_precision.png", "title": f"{name}: work-precision",
-                     "command": res["command"], "scene": res["scene"], "version": res["version"],
-                     "caption": caption(res)})
+        figs.append(manifest_figure(f"{name}/work_precision.png", f"{name}: work-precision", res["command"],
+                                    res["scene"], res["version"], caption(res)))
         rows += [[name, e["text"]] for e in res["equal_error"]]
         starts += [[name, s] for s in startup_text(res, per_set=True)]
         once.update({s.split(" (")[0]: s for s in startup_text(res, per_set=False)})
-    write_json_atomic(os.path.join(out, "figures.json"), {
-        "title": "Work-precision sets (what accuracy costs in CPU time)",
-        "about": "In-process methods (paper, IDA, exact): each point is beamimpact.run() called repeatedly in one "
-                 "process (at least 3 times and until 0.2 s have passed), CPU time from time.process_time, minimum "
-                 "and spread kept. Outside methods (FEniCSx, Siconos): `beamimpact run` as a child process, 3 "
-                 "times, CPU from wait4, start-up included and shown apart. Ratios at equal impulse error below "
-                 "(log-log interpolation along each method's front; range from the repeats' min and max).",
-        "tables": [{"title": "CPU time at equal impulse error", "columns": ["set", "finding"], "rows": rows},
-                   {"title": "Start-up per method (measured apart, not subtracted)", "columns": ["set", "start-up"],
-                    "rows": [["every set", s] for s in once.values()] + starts}],
-        "figures": figs})
+    write_set_manifest(
+        os.path.join(out, "figures.json"), "Work-precision sets (what accuracy costs in CPU time)",
+        figs, about="In-process methods (paper, IDA, exact): each point is beamimpact.run() called repeatedly in one "
+              "process (at least 3 times and until 0.2 s have passed), CPU time from time.process_time, minimum "
+              "and spread kept. Outside methods (FEniCSx, Siconos): `beamimpact run` as a child process, 3 "
+              "times, CPU from wait4, start-up included and shown apart. Ratios at equal impulse error below "
+              "(log-log interpolation along each method's front; range from the repeats' min and max).",
+        tables=[{"title": "CPU time at equal impulse error", "columns": ["set", "finding"], "rows": rows},
+                {"title": "Start-up per method (measured apart, not subtracted)", "columns": ["set", "start-up"],
+                 "rows": [["every set", s] for s in once.values()] + starts}])
     versions = ", ".join(sorted({fg["version"] for fg in figs}))
     write_text_atomic(os.path.join(out, "equal_error.md"), "".join(
         ["# CPU time at equal impulse error\n\nMade by `reports/work_precision.py` (beamimpact "

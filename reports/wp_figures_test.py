@@ -13,32 +13,10 @@ import pytest
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "reports"))
 import wp_figures  # noqa: E402
-from matplotlib.text import Text  # noqa: E402
+from figure_checks import drawn_text, texts_outside  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 
 SETS = sorted(glob.glob(os.path.join(ROOT, "reports", "work_precision", "*", "work_precision.json")))
-
-
-def texts_outside(fig):
-    """What the saved figure would clip: the tight box of everything drawn (tick labels within the
-    axes' view included, matplotlib's get_tightbbox) against the figure's box, and each visible
-    text but tick labels (titles, axis labels, legend) by its own drawn box (get_window_extent).
-    1 px of antialiasing allowed."""
-    fig.canvas.draw()
-    r = fig.canvas.get_renderer()
-    w, h = fig.bbox.width, fig.bbox.height
-    out = []
-    tight = fig.get_tightbbox(r).transformed(fig.dpi_scale_trans)  # inches -> pixels
-    if tight.x0 < -1 or tight.y0 < -1 or tight.x1 > w + 1 or tight.y1 > h + 1:
-        out.append(f"drawn content spans x {tight.x0:.0f}..{tight.x1:.0f}, y {tight.y0:.0f}..{tight.y1:.0f} of {w:.0f}x{h:.0f}")
-    ticks = {id(t) for ax in fig.axes for t in ax.get_xticklabels(which="both") + ax.get_yticklabels(which="both")}
-    for t in fig.findobj(Text):
-        if id(t) in ticks or not t.get_visible() or not t.get_text().strip():
-            continue
-        b = t.get_window_extent(r)
-        if b.x0 < -1 or b.y0 < -1 or b.x1 > w + 1 or b.y1 > h + 1:
-            out.append(f"{t.get_text()!r} at x {b.x0:.0f}..{b.x1:.0f}, y {b.y0:.0f}..{b.y1:.0f} of {w:.0f}x{h:.0f}")
-    return out
 
 
 @pytest.mark.parametrize("path", SETS, ids=[os.path.basename(os.path.dirname(p)) for p in SETS])
@@ -48,7 +26,7 @@ def test_every_label_inside_and_no_footer(path):
     fig = wp_figures.draw(res)
     try:
         assert texts_outside(fig) == []
-        drawn = " ".join(t.get_text() for t in fig.findobj(Text))
+        drawn = drawn_text(fig)
         assert res["version"] not in drawn and res["command"] not in drawn  # provenance is the caption's
     finally:
         plt.close(fig)
@@ -66,3 +44,21 @@ def test_hero_is_readable_small():
         assert min(sizes) >= 10  # pt; at 100 dpi, 10 pt is 14 px: 7 px at a half-size thumbnail
     finally:
         plt.close(fig)
+
+
+def test_manifest_says_how_each_figure_was_made(tmp_path):
+    # Two committed sets copied: figures.json names each one's command, scene and version (its
+    # work_precision.json's), the date and a caption; equal_error.md is written beside it.
+    import shutil
+    for name in ("s1_central", "s4_oblique_90"):
+        shutil.copytree(os.path.join(ROOT, "reports", "work_precision", name), tmp_path / name)
+    wp_figures.write_manifest(str(tmp_path))
+    with open(tmp_path / "figures.json") as f:
+        figs = json.load(f)["figures"]
+    assert [f["png"] for f in figs] == ["s1_central/work_precision.png", "s4_oblique_90/work_precision.png"]
+    for f in figs:
+        with open(tmp_path / os.path.dirname(f["png"]) / "work_precision.json") as g:
+            res = json.load(g)
+        assert (f["command"], f["scene"], f["version"]) == (res["command"], res["scene"], res["version"])
+        assert f["made"].endswith("Z") and f["caption"].startswith("Reference: ")
+    assert (tmp_path / "equal_error.md").is_file()

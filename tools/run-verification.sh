@@ -12,12 +12,10 @@
 #              out/figures/NAME (the committed reports/NAME are left as they are), and the report
 #              shows those instead: paper_figures, classical_benchmarks, beam_theories and
 #              work_precision at the paper scenes' own sizes. Each step prints its time and the total.
-#              Measured with beamimpact 0.1.0+3f2bc03 on 2 cores at load 11-13 (wall, each script
-#              as run below): paper_figures 3.6 min (a build running beside it), classical_benchmarks
-#              21 s (docs/user-guide.md, "Reading the report");
-#              beam_theories 13.9 min with 0.1.0+7a8559d under a concurrent build (docs/beam-theories.md: about 4 min on
-#              a quiet machine); work_precision not timed here
-#              (it times FEniCSx and Siconos as processes, 3 repeats of each point).
+#              Measured with beamimpact 0.1.0+048044f on 2 cores at load 11-13 (wall, each script
+#              as run below): paper_figures 142 s, classical_benchmarks 37 s, beam_theories 269 s,
+#              work_precision 2222 s; 2670 s for the four, 46 min with verify (docs/user-guide.md,
+#              "Reading the report").
 #              The sets that take hours keep their committed figures and say which build made them:
 #              the S4 study (1050 runs), the scorecards (every method on the benchmark set) and the
 #              work-precision sets at x22..x5000 (hours of IDA and Siconos).

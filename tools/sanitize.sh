@@ -42,5 +42,5 @@ skip='install_consumer|reports_scorecard_figures_test|docs_build'
 skip+='|CriticalStepLarge\..*|Signals/Resume\..*|ResumeBase\..*|FinishedRuns\.AnotherBuild.*'
 skip+='|Commands\.BaselineHolds.*|Score\.TheRatchet.*|Cli\.QuietPrints.*'
 skip+='|BallOnBeam\..*|RotatedSceneExact\..*|PaperScenes/ImpactCounts\..*'
-skip+='|siconos_reference|example_external_solver|example_ci_gate|report_render|reports_wp_figures_test'
+skip+='|siconos_reference|example_external_solver|example_ci_gate|report_render|reports_wp_figures_test|reports_figures_test'
 ctest --test-dir "$build" --output-on-failure -j"$jobs" -LE full -E "^($skip)\$"

@@ -94,6 +94,40 @@ TEST(Evaluate, OneVerdictForEveryReport) {
   EXPECT_EQ(norms_json(ctx, {item}).at("verdict"), "PASS");
 }
 
+/// report.md as write_markdown writes it for `items`.
+std::string markdown_of(const std::vector<ItemResult>& items) {
+  const auto md =
+      std::filesystem::temp_directory_path() / ("evaluate_test_ladder_" + std::to_string(::getpid()) + ".md");
+  write_markdown(md, ReportContext{}, items);
+  std::ifstream in(md);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::filesystem::remove(md);
+  return text;
+}
+
+TEST(Evaluate, ALadderSaysWhatItIsJudgedAgainst) {
+  // A ladder with a reference (names as Convergence::name() makes them) is judged against it; one
+  // without against its own next finer rung. report.md says which, in the run and reference cells.
+  ItemResult exact, self;
+  exact.kind = self.kind = "convergence";
+  exact.scene = self.scene = "s1_central";
+  exact.name = "s1_central paper dt=0.01/0.005/0.0025 vs exact";
+  exact.reference = "exact";
+  self.name = "s1_central paper dt=0.01/0.005/0.0025";
+  for (ItemResult* i : {&exact, &self})
+    i->gates.push_back(check_gate({"impulse", 0.01, std::nullopt, "t", std::nullopt}, with_impulse(0.0)));
+  const std::string with_ref = markdown_of({exact});
+  EXPECT_NE(with_ref.find("| paper dt=0.01/0.005/0.0025 (ladder: each rung against exact) | exact |"),
+            std::string::npos)
+      << with_ref;
+  EXPECT_EQ(with_ref.find("self-convergence"), std::string::npos);
+  const std::string own = markdown_of({self});
+  EXPECT_NE(
+      own.find("| paper dt=0.01/0.005/0.0025 (self-convergence: each rung against the next finer) | - |"),
+      std::string::npos)
+      << own;
+}
+
 // Run against reference, never the other way round: pairs whose swap changes the error. A
 // run whose contact force is (1 + e) times its reference's (the same shape, a sin^2 pulse on
 // [1, 2] s) has the relative errors |(1 + e) - 1| / 1 = e in impulse, peak force and R (L2);

@@ -1,9 +1,11 @@
 #include <verification/matrix/reports.hpp>
 
+#include <algorithm>
 #include <ctime>
 #include <fstream>
 #include <map>
 #include <set>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -74,6 +76,19 @@ std::string ladder_tables(const ItemResult& i) {
          "\nRichardson limits of the last three rungs (their own observed order; the reference not "
          "used):\n\n" +
          rich.markdown();
+}
+
+/// A gate row's run and reference cells. A ladder's run is its rungs and what they are judged
+/// against: its reference run (Convergence::name()'s " vs REFERENCE" said once, in words), or,
+/// without one, each rung against the next finer (self-convergence).
+std::pair<std::string, std::string> row_labels(const ItemResult& i) {
+  if (i.kind != "convergence") return {i.settings, i.reference};
+  std::string rungs = i.name.substr(std::min(i.name.size(), i.scene.size() + 1));
+  if (i.reference.empty()) return {rungs + " (self-convergence: each rung against the next finer)", "-"};
+  const std::string vs = " vs " + i.reference;
+  if (rungs.size() >= vs.size() && rungs.compare(rungs.size() - vs.size(), vs.size(), vs) == 0)
+    rungs.resize(rungs.size() - vs.size());
+  return {rungs + " (ladder: each rung against " + i.reference + ")", i.reference};
 }
 
 }  // namespace
@@ -186,13 +201,12 @@ void write_markdown(const std::filesystem::path& file, const ReportContext& ctx,
   for (const auto& [scene, list] : by_scene(items)) {
     Table gates({"run", "reference", "norm", "value", "limit", "result", "wall s"});
     for (const auto* i : list) {
-      const std::string run =
-          i->kind == "convergence" ? i->name.substr(scene.size() + 1) + " (self-convergence)" : i->settings;
+      const auto [run, reference] = row_labels(*i);
       for (const auto& g : i->gates) {
         const std::string res = g.status == GateStatus::kPass   ? "pass"
                                 : g.status == GateStatus::kFail ? "**FAIL**: " + g.message
                                                                 : "skipped: " + g.message;
-        gates.add({run, i->reference, g.gate.metric, value_text(g), g.limit(), res,
+        gates.add({run, reference, g.gate.metric, value_text(g), g.limit(), res,
                    fmt::format("{:.2f}", i->wall_seconds)});
       }
     }

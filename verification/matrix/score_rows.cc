@@ -84,7 +84,7 @@ ScoreQuantity single(const Gate& g, const Comparison& cmp, const std::optional<C
 /// and |a - v| for one in s, the uncertainty U / |v| or U in place of the reference's spread.
 ScoreQuantity against_settled(const Gate& g, const Comparison& cmp, const SettledValue& v,
                               const char* judged) {
-  ScoreQuantity q{g.metric, std::nullopt, g.tol,        std::nullopt, "fail",
+  ScoreQuantity q{g.metric, std::nullopt, g.tol,        std::nullopt, QuantityStatus::kFail,
                   "",       judged,       std::nullopt, v.value,      std::nullopt};
   const Norm* n = cmp.find(g.metric);
   if (!n || !n->a || n->difference) {
@@ -98,9 +98,9 @@ ScoreQuantity against_settled(const Gate& g, const Comparison& cmp, const Settle
   q.status = verdict(*q.error, *g.tol, q.uncertainty, n->unit == "1" ? 1.0 : std::abs(v.value));
   const std::string against = fmt::format("{} = {:.6g} against the settled {:.6g} +- {:.3g} ({})", g.metric,
                                           *n->a, v.value, v.uncertainty, v.why);
-  if (q.status == "pass")
+  if (q.status == QuantityStatus::kPass)
     q.note = g.why + "; " + against;
-  else if (q.status == "fail")
+  else if (q.status == QuantityStatus::kFail)
     q.note = fmt::format("error {:.4g} exceeds {:g} by more than the settled uncertainty {:.3g}: {}",
                          *q.error, *g.tol, *q.uncertainty, against);
   else

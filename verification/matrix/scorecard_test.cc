@@ -345,9 +345,11 @@ TEST(Scorecard, ASettledValueTakesThePlaceOfTheReferenceRun) {
   EXPECT_NEAR(*q.error, 0.23, 1e-12);
   EXPECT_NEAR(*q.uncertainty, 0.02, 1e-12);
   EXPECT_EQ(*q.exact, 0.5);
-  EXPECT_EQ(q.status, "pass");                            // 0.25 <= 0.26
-  EXPECT_EQ(judged(0.24).status, "reference uncertain");  // 0.21 <= 0.24 < 0.25: the uncertainty decides
-  EXPECT_EQ(judged(0.20).status, "fail");  // 0.21 > 0.20 (swapped: 0.171 <= 0.20 < 0.203, uncertain)
+  EXPECT_EQ(q.status, QuantityStatus::kPass);  // 0.25 <= 0.26
+  EXPECT_EQ(judged(0.24).status,
+            QuantityStatus::kReferenceUncertain);  // 0.21 <= 0.24 < 0.25: the uncertainty decides
+  EXPECT_EQ(judged(0.20).status,
+            QuantityStatus::kFail);  // 0.21 > 0.20 (swapped: 0.171 <= 0.20 < 0.203, uncertain)
 }
 
 TEST(Scorecard, ABiasCannotHideInTheDiscretisationError) {

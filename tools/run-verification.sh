@@ -17,7 +17,7 @@
 #              work_precision 2222 s; 2670 s for the four, 46 min with verify (docs/user-guide.md,
 #              "Reading the report").
 #              The sets that take hours keep their committed figures and say which build made them:
-#              the S4 study (1050 runs), the scorecards (every method on the benchmark set) and the
+#              the S4 study (1050 runs, 15 min on 2 MPI ranks), the scorecards (every method on the benchmark set) and the
 #              work-precision sets at x22..x5000 (hours of IDA and Siconos).
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -34,7 +34,9 @@ limit's uncertainty + tol / 10), so a bias cannot hide in the discretisation err
 differences do not shrink (observed order below 0.5) is `not converged`. Elsewhere the reference
 is IDA converged beyond its defaults (rtol 1e-10, atol 1e-13, friction regularised at 1e-5 m/s,
 penalty 1e4 EA/le), with its own uncertainty (`± spread`: its difference from the same IDA run at
-the penalty of 1e3 EA/le); a verdict the spread could reverse is `reference uncertain`. IDA is
+the penalty of 1e3 EA/le); a verdict the spread could reverse is `reference uncertain`. Where a
+card carries a settled value (S4's impulse: [docs/s4.md](../../docs/s4.md)), the quantity is judged
+against it and its uncertainty takes the place of the spread. IDA is
 never its own reference: on the scenes without an exact answer its row shows how far its defaults
 are from converged. `not applicable`: the method refused the scene (exit 2 with its reason);
 `skipped`: the run or its reference did not finish within `--timeout`. The rules are in

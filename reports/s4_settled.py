@@ -9,7 +9,11 @@ run; the shipped corotational striker is measured against it by the paper integr
 - siconos (Moreau-Jean, Coulomb friction, on the exported model): the same steps, 1/2 ... 1/64;
 - ida (penalty contact, adaptive BDF): penalty 1e3 ... 1e6 EA/le, rtol 1e-10, atol 1e-13,
   friction regularised at 1e-5 m/s; converged at an observed order in kn of 0.25 or more (half the
-  penalty's order 1/2: its error follows the contact's time scale sqrt(m_red / kn)).
+  penalty's order 1/2: its error follows the contact's time scale sqrt(m_red / kn));
+- fenicsx (the 2D plane-stress continuum, the continuum's view): Q2 elements through the depth
+  1, 2, 4, 8 (square elements, so each rung halves the element), its own stable step. A different
+  model (the beam's depth, shear and local indentation resolved), so its limit is shown beside the
+  settled value and is never a part of it.
 Each ladder is read in its asymptotic range (ladder_limit): an observed order and a Richardson limit
 of its last three rungs with 1.25 times that correction as its uncertainty, or, where the rungs do
 not converge monotonically, the last rung with the larger of the last two differences.
@@ -42,6 +46,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PAPER_FRACTIONS = [1 / 2 ** k for k in range(1, 8)]    # 1/2 ... 1/128 of the critical step
 SICONOS_FRACTIONS = [1 / 2 ** k for k in range(1, 7)]  # 1/2 ... 1/64
 IDA_PENALTIES = [1e3, 1e4, 1e5, 1e6]                   # EA/le
+FENICSX_DEPTHS = [1, 2, 4, 8]                          # Q2 elements through the depth
 IDA_TIGHT = ["ida.rtol=1e-10", "ida.atol=1e-13", "ida.friction_velocity=1e-5"]
 LINEAR = 'model.kinematics="linear"'
 # The least observed order of a converged ladder: half the order the ladder's error is expected to
@@ -153,7 +158,7 @@ def ladders(exe, angle, runs, pool):
     """Every run of one angle, submitted to the pool; returns {reference: [futures]}."""
     scene = scene_path(angle)
     d = os.path.join(runs, f"s4_{angle}")
-    jobs = {"paper": [], "paper_corotational": [], "siconos": [], "ida": []}
+    jobs = {"paper": [], "paper_corotational": [], "siconos": [], "ida": [], "fenicsx": []}
     for f in PAPER_FRACTIONS:
         jobs["paper"].append(pool.submit(run, exe, scene, "paper", f"{d}/paper_{f:g}",
                                          [LINEAR, f"time.fraction={f!r}"]))
@@ -165,6 +170,9 @@ def ladders(exe, angle, runs, pool):
     for k in IDA_PENALTIES:
         jobs["ida"].append(pool.submit(run, exe, scene, "ida", f"{d}/ida_{k:g}",
                                        [LINEAR, f"ida.kn_factor={k:g}"] + IDA_TIGHT))
+    for n in FENICSX_DEPTHS:
+        jobs["fenicsx"].append(pool.submit(run, exe, scene, "fenicsx", f"{d}/fenicsx_{n}",
+                                           [LINEAR, f"fenicsx.elements_depth={n}"]))
     return jobs
 
 
@@ -188,6 +196,10 @@ def settle(ladder_values):
             if paper.get("converged"):
                 entry["paper_within"] = abs(paper["limit"] - entry["value"]) <= (
                     entry["uncertainty"] + paper["uncertainty"])
+            # The continuum's view: how far its finest mesh lies from the beam model's settled value.
+            finest = entry["references"]["fenicsx"]["ladder"][-1]
+            if entry["value"] != 0.0:
+                entry["continuum_finest_offset"] = (finest - entry["value"]) / abs(entry["value"])
         entry["gated"] = ok
         if not ok:
             entry["why_not_gated"] = ("a count of chatter bounces: it changes with every step and penalty"
@@ -197,18 +209,21 @@ def settle(ladder_values):
 
 
 def figure(angle, ladder_values, settled, out):
-    """Top row: the step ladders against the step (a fraction of the critical step); bottom row:
-    IDA's penalty ladder. The grey band is the settled value with its uncertainty."""
+    """Top row: the step ladders against the step (a fraction of the critical step); middle row:
+    IDA's penalty ladder; bottom row: the continuum's mesh ladder. The grey band is the settled
+    value with its uncertainty."""
     quantities = ("impulse_normal", "impulse_tangential", "ub_max", "energy_final")
-    fig, axes = plt.subplots(2, 4, figsize=(15, 6.2), constrained_layout=True)
+    fig, axes = plt.subplots(3, 4, figsize=(15, 9), constrained_layout=True)
     for col, q in enumerate(quantities):
-        top, bottom = axes[0][col], axes[1][col]
+        top, bottom, continuum = axes[0][col], axes[1][col], axes[2][col]
         for ref, xs in (("paper", PAPER_FRACTIONS), ("paper_corotational", PAPER_FRACTIONS),
                         ("siconos", SICONOS_FRACTIONS)):
             top.semilogx(xs, [r[q] for r in ladder_values[ref]], "o-", label=ref)
         bottom.semilogx(IDA_PENALTIES, [r[q] for r in ladder_values["ida"]], "k^-", label="ida")
+        continuum.semilogx(FENICSX_DEPTHS, [r[q] for r in ladder_values["fenicsx"]], "rs-",
+                           label="fenicsx (2D continuum)")
         s = settled[q]
-        for ax in (top, bottom):
+        for ax in (top, bottom, continuum):
             if "value" in s:
                 ax.axhspan(s["value"] - s["uncertainty"], s["value"] + s["uncertainty"], color="0.85")
                 ax.axhline(s["value"], color="0.4", lw=0.8)
@@ -216,8 +231,11 @@ def figure(angle, ladder_values, settled, out):
         top.set_xlabel("step / critical step")
         top.invert_xaxis()
         bottom.set_xlabel("IDA penalty (EA/le)")
-    axes[0][0].legend(fontsize=7)
-    axes[1][0].legend(fontsize=7)
+        continuum.set_xlabel("FEniCSx Q2 elements through the depth")
+        continuum.set_xticks(FENICSX_DEPTHS, [str(n) for n in FENICSX_DEPTHS])
+        continuum.minorticks_off()
+    for row in axes:
+        row[0].legend(fontsize=7)
     fig.suptitle(f"S4 at {angle} deg, linear kinematics (paper_corotational: as shipped): "
                  "ladders and the settled value (grey band)")
     save_figure_atomic(fig, os.path.join(out, f"s4_{angle}.png"), dpi=80)
@@ -266,9 +284,11 @@ def main():
            "kinematics": "linear (every ladder); paper_corotational: the shipped kinematics",
            "ladders": {"paper": PAPER_FRACTIONS, "paper_corotational": PAPER_FRACTIONS,
                        "siconos": SICONOS_FRACTIONS, "ida_penalty_EA_per_le": IDA_PENALTIES,
+                       "fenicsx_elements_depth": FENICSX_DEPTHS,
                        "ida_settings": IDA_TIGHT},
            "rule": ("value = midpoint of the siconos and ida limits; uncertainty = max(half their spread, "
-                    "their own Richardson uncertainties); paper's limit is a check"),
+                    "their own Richardson uncertainties); paper's limit is a check; fenicsx (a 2D continuum, "
+                    "a different model) is shown beside it as continuum_finest_offset"),
            "angles": {}}
     for x in angles:
         settled = settle(values[x])
@@ -283,7 +303,8 @@ def main():
         for q, s in doc["angles"][x]["quantities"].items():
             if "value" in s:
                 print(f"S4-{x} {q}: {s['value']:.6g} +- {s['uncertainty']:.3g} {s['unit']}"
-                      f" (paper's limit within: {s.get('paper_within')})")
+                      f" (paper's limit within: {s.get('paper_within')};"
+                      f" continuum's finest mesh {100 * s.get('continuum_finest_offset', 0.0):+.1f} %)")
             else:
                 print(f"S4-{x} {q}: not gated ({s['why_not_gated']})")
 

@@ -113,6 +113,15 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
   net_force(U_, fint_U_);
   fused_ = fused_step(model, damped_);
   start_team(threads);
+  // Each momentum covector's support: its dot product reads only the equations of its body.
+  for (int b = 0; b < model.num_bodies(); ++b)
+    for (int c = 0; c < 2; ++c) {
+      const Eigen::VectorXd& p = model.momentum_covector(b, c);
+      long long lo = 0, hi = p.size();
+      while (lo < hi && p[lo] == 0.0) ++lo;
+      while (hi > lo && p[hi - 1] == 0.0) --hi;
+      momentum_support_.push_back({lo, hi});
+    }
   // Room for every equation a contact force can touch (a surface contact's rows move with the
   // struck point, so their size now is no bound): no allocation while stepping.
   fc_dofs_.reserve(solver_.max_touched());
@@ -358,8 +367,45 @@ void ExplicitContactIntegrator::gather_contact_force() {
 
 double ExplicitContactIntegrator::kinetic_energy() const {
   const Eigen::VectorXd& v = V();
-  if (model_.lumped()) return 0.5 * v.dot(model_.lumped_mass().cwiseProduct(v));
-  return 0.5 * v.dot(mass() * v);
+  if (!model_.lumped()) return 0.5 * v.dot(mass() * v);
+  const Eigen::VectorXd& m = model_.lumped_mass();
+  return 0.5 * ordered_sum(team_.get(), v.size(), sum_chunks_, [&](long long first, long long last) {
+           const auto vs = v.segment(first, last - first);
+           return vs.dot(m.segment(first, last - first).cwiseProduct(vs));
+         });
+}
+
+double ExplicitContactIntegrator::velocity_along(const std::vector<DofTerm>& row) const {
+  if (!fused_ || !v_stale_) return ContactPair::eval(row, V());
+  // V_i = Vbar_i + dt/2 (M^-1 f_c)_i, each entry as form_velocity() forms it (M^-1 diagonal).
+  const Eigen::VectorXd& inv = minv_.inverse_diagonal();
+  const double h = 0.5 * dt_;
+  double s = 0.0;
+  for (const DofTerm& t : row) s += t.coeff * (Vbar_[t.eq] + h * (inv[t.eq] * fc_[t.eq]));
+  return s;
+}
+
+double ExplicitContactIntegrator::strain_energy() const {
+  if (!fused_ || fint_.nonlinear()) return fint_.strain_energy(U_, team_.get());
+  // Linear elements: the step has formed f_int(U^p) - F^P already (fint_U_), so 1/2 U^T K U is a
+  // dot product with it, not a second product with K.
+  const Eigen::VectorXd& U = U_;
+  return 0.5 * ordered_sum(team_.get(), U.size(), sum_chunks_, [&](long long first, long long last) {
+           const auto u = U.segment(first, last - first);
+           double s = u.dot(fint_U_.segment(first, last - first));
+           if (load_.size()) s += u.dot(load_.segment(first, last - first));
+           return s;
+         });
+}
+
+double ExplicitContactIntegrator::momentum(int b, int c) const {
+  const Eigen::VectorXd& v = V();
+  if (cmass_) return cmass_->momentum(b, c, v);
+  const Eigen::VectorXd& p = model_.momentum_covector(b, c);
+  const auto [lo, hi] = momentum_support_[2 * b + c];
+  return ordered_sum(team_.get(), hi - lo, sum_chunks_, [&](long long first, long long last) {
+    return p.segment(lo + first, last - first).dot(v.segment(lo + first, last - first));
+  });
 }
 
 }  // namespace beamimpact::paper

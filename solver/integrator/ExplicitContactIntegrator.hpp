@@ -12,6 +12,7 @@
 /// Cost per step: one f_int (one sparse K U product when linear) and O(n) vector work (one fused
 /// sweep for lumped, undamped models); no allocation in the loop.
 
+#include <array>
 #include <vector>
 
 #include <memory>
@@ -104,6 +105,11 @@ class ExplicitContactIntegrator {
     if (v_stale_) form_velocity();
     return V_;
   }
+  /// @brief The physical velocity along a row of equations, sum of coeff V^p_i: what
+  /// ContactPair::eval(row, V()) gives, without forming the whole V^p on a lumped model (a step
+  /// in contact then reads O(row) entries, not every equation).
+  /// @param row the equations and their coefficients (a contact row)
+  double velocity_along(const std::vector<DofTerm>& row) const;
   /// @brief Half-step velocity Vbar^p (for the discrete energy identity).
   const Eigen::VectorXd& Vbar() const { return Vbar_; }
   /// @brief Forces of the last solve, per contact.
@@ -116,17 +122,17 @@ class ExplicitContactIntegrator {
   /// velocities at U = 0, before any contact force (V^0 carries the step-0 contact force when a
   /// contact closes in the first step).
   double initial_energy() const { return initial_energy_; }
-  /// @brief Kinetic 1/2 V^T M V and strain energy at step p (J).
+  /// @brief Kinetic 1/2 V^T M V and strain energy at step p (J). Both, and momentum(), are sums
+  /// over the equations in fixed chunks (ordered_sum) shared by the step's threads: an output row
+  /// costs what its share of the step costs, with the same bits on any thread count.
   double kinetic_energy() const;
-  double strain_energy() const { return fint_.strain_energy(U_); }
+  double strain_energy() const;
   /// @brief Work of the external loads up to step p, F^P . U^p (J; 0 without loads).
   double load_work() const { return load_.size() ? load_.dot(U_) : 0.0; }
   /// @brief Energy stored in the Hertz contact springs at step p (J; 0 with the hard law).
   double contact_energy() const { return hertz_energy_; }
   /// @brief Linear momentum of body b along global axis c (0 = x, 1 = y) at step p (N s).
-  double momentum(int b, int c) const {
-    return cmass_ ? cmass_->momentum(b, c, V()) : model_.momentum_covector(b, c).dot(V());
-  }
+  double momentum(int b, int c) const;
   /// @brief The current mass: the model's, or M_A(t) when a rotating body has consistent mass.
   const SparseMatrix& mass() const { return cmass_ ? cmass_->M() : model_.M(); }
   /// @brief Cumulative energy removed by contact forces (closures, friction) and damping (J).
@@ -207,7 +213,10 @@ class ExplicitContactIntegrator {
   double initial_energy_ = 0.0;
   std::unique_ptr<ThreadTeam> team_;  ///< the sweep's threads when split (set_threads)
   std::string threads_note_;
-  mutable bool v_stale_ = false;  ///< V_ is still to be formed from Vbar_ and fc_
+  mutable bool v_stale_ = false;            ///< V_ is still to be formed from Vbar_ and fc_
+  mutable std::vector<double> sum_chunks_;  ///< the energies' and momentum's chunk sums
+  std::vector<std::array<long long, 2>>
+      momentum_support_;  ///< [lo, hi) of each covector's non-zeros, 2 b + c
 };
 
 }  // namespace beamimpact::paper

@@ -66,9 +66,13 @@ class InternalForce {
   ///        this thread alone; the values do not depend on it
   void end_forces(const Eigen::VectorXd& U, std::vector<std::array<double, 3>>& out,
                   ThreadTeam* team = nullptr) const;
-  /// @brief Strain energy (J) at U. K U goes into a scratch vector kept between calls (a history
-  /// row allocates nothing), so calls on one object must not run concurrently.
-  double strain_energy(const Eigen::VectorXd& U) const;
+  /// @brief Strain energy (J) at U: 1/2 U^T K U summed column by column of K in fixed chunks
+  /// (ordered_sum), so the bits do not depend on the threads. The chunks' sums go into a scratch
+  /// kept between calls (a history row allocates nothing): calls on one object must not run
+  /// concurrently.
+  /// @param U displacement
+  /// @param team threads for the chunks, or null for this thread alone
+  double strain_energy(const Eigen::VectorXd& U, ThreadTeam* team = nullptr) const;
   /// @brief True when some body is corotational.
   bool nonlinear() const { return !corot_elements_.empty(); }
   /// @brief Current chord direction (cos, sin) of element e at U (the corotational frame).
@@ -140,7 +144,7 @@ class InternalForce {
   bool use_blocks_ = false;
   SparseMatrix K_linear_;  ///< used only when some elements are corotational
   std::vector<int> corot_elements_;
-  mutable Eigen::VectorXd ku_;  ///< strain_energy's K U, sized at its first call
+  mutable std::vector<double> energy_chunks_;  ///< strain_energy's chunk sums (ordered_sum)
 };
 
 }  // namespace beamimpact::paper

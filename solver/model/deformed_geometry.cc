@@ -94,6 +94,10 @@ RealGap DeformedSurface::gap(const Eigen::VectorXd& U) {
     return r;
   }
   int k = std::clamp(hint_, 0, last);
+  // The walk moves one element at a time towards the closest point and stops where it would turn
+  // back: at a node shared by two elements the roundoff of each one's xi can point to the other
+  // (xi just below 0 on the right one, just above 1 on the left), and the node is the closest point.
+  int came_from = -1;
   for (int guard = 0; guard <= last + 1; ++guard) {
     const Shape s = shape(U, k);
     // Closest point on the element's cubic: Newton on (p(xi) - x) . p'(xi) = 0 from the chord's foot.
@@ -111,12 +115,12 @@ RealGap DeformedSurface::gap(const Eigen::VectorXd& U) {
       xi = q - step;
       if (std::abs(step) < 1e-14) break;
     }
-    if (xi < 0.0 && k > 0) {
-      --k;
+    if (xi < 0.0 && k > 0 && k - 1 != came_from) {
+      came_from = k--;
       continue;
     }
-    if (xi > 1.0 && k < last) {
-      ++k;
+    if (xi > 1.0 && k < last && k + 1 != came_from) {
+      came_from = k++;
       continue;
     }
     hint_ = k;

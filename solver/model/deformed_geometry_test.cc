@@ -116,5 +116,38 @@ TEST(DeformedGeometry, EndOnGapIsTheDistanceBeyondTheEnd) {
   EXPECT_NEAR(surf.gap(U).gap, -0.2, 1e-14);
 }
 
+// A striker node above a node of the target that has risen towards it (every other node in
+// place): the closest point is that node, shared by two elements, and the walk along the target
+// meets both. On the chords (Centreline::kChord) the two elements form a peak whose sides each
+// have their foot point beyond the node (xi > 1 on the left one, xi < 0 on the right one); on the
+// frame's cubics (all rotations 0, so both have zero slope at the node) the foot is the node to
+// roundoff, which may point either way. The gap is the distance to the node from a walk that starts at either
+// end of the target, and the walk ends (the second call starts where the first ended).
+TEST(DeformedGeometry, StrikerAboveARisenNodeGivesTheDistanceToIt) {
+  constexpr int kElements = 300;
+  constexpr double kLength = 7.0, kHeight = 0.25, kRise = 0.01;  // m
+  for (const Centreline line : {Centreline::kChord, Centreline::kBeam}) {
+    for (const int i : {1, 2, 150, 151, 298, 299}) {
+      const double x = kLength * i / kElements;
+      Scene s;
+      s.bodies = {soft_body("A", {x, kHeight + 1.0}, {x, kHeight}, 1),
+                  soft_body("B", {0, 0}, {kLength, 0}, kElements)};
+      const Model m(s, true);
+      Eigen::VectorXd U = Eigen::VectorXd::Zero(m.size());
+      const int node = m.node_id(1, i);
+      U(m.equation(node, 1)) = kRise;
+      const double x_node = m.node_position(node)[0];
+      const double expected = std::hypot(x - x_node, kHeight - kRise);
+      DeformedSurface surf(m, 1, m.node_id(0, 1), line);
+      // Roundoff of positions of order 10 m: 1e-14.
+      ASSERT_NEAR(surf.gap(U).gap, expected, 1e-14)
+          << "node " << i << (line == Centreline::kChord ? ", chords" : ", cubics");
+      const RealGap g = surf.gap(U);
+      EXPECT_NEAR(g.gap, expected, 1e-14) << "node " << i << ", second call";
+      EXPECT_NEAR(g.element + g.xi, i, 1e-9) << "node " << i;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace beamimpact

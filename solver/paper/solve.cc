@@ -198,7 +198,7 @@ void track_turn(const ExplicitContactIntegrator& in, const std::vector<int>& gro
     if (g.beyond_end) continue;
     const double turn = surfaces[q].turn(in.U(), g.element, g.xi);
     slide.turn_max = std::max(slide.turn_max, std::abs(turn));
-    slide.work += R * std::tan(turn) * ContactPair::eval(pair.tangent_row(), in.V()) * in.dt();
+    slide.work += R * std::tan(turn) * in.velocity_along(pair.tangent_row()) * in.dt();
     slide.work_max = std::max(slide.work_max, std::abs(slide.work));
   }
 }

@@ -8,6 +8,7 @@
 /// loop that runs up to millions of short jobs: no allocation and no thread creation per job, and
 /// a wait that spins briefly and then sleeps (std::atomic::wait, a futex on Linux).
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <thread>
@@ -74,6 +75,39 @@ void run_ranges(ThreadTeam* team, int n, const Range& range) {
     range(static_cast<long long>(n) * t / parts, static_cast<long long>(n) * (t + 1) / parts);
   };
   team->run(part);
+}
+
+/// @brief The length of a chunk of ordered_sum (entries): the chunks, and so the bits of the sum,
+/// depend on the length summed only.
+inline constexpr long long kSumChunk = 8192;
+
+/// @brief A sum over [0, n) whose bits do not depend on the threads: the range is cut into fixed
+/// chunks of kSumChunk, chunk k's terms are summed by sum(first, last) (in the order that callable
+/// keeps), the chunks' sums are added in chunk order on this thread. With a team the chunks are
+/// shared among its threads (part t takes chunks t, t + size, ...); without one (null) this
+/// thread sums them all, in the same chunks: the same bits at any thread count.
+/// @param team the threads, or null
+/// @param n the length of the range
+/// @param partial scratch for the chunks' sums (resized to the chunk count; no allocation once
+///        it has that size)
+/// @param sum callable (long long first, long long last) -> double; must not throw
+template <class Sum>
+double ordered_sum(ThreadTeam* team, long long n, std::vector<double>& partial, const Sum& sum) {
+  const long long chunks = (n + kSumChunk - 1) / kSumChunk;
+  partial.resize(static_cast<std::size_t>(chunks));
+  auto chunk = [&](long long k) { partial[k] = sum(k * kSumChunk, std::min(n, (k + 1) * kSumChunk)); };
+  if (!team || chunks < 2) {
+    for (long long k = 0; k < chunks; ++k) chunk(k);
+  } else {
+    const int parts = team->size();
+    auto part = [&](int t) {
+      for (long long k = t; k < chunks; k += parts) chunk(k);
+    };
+    team->run(part);
+  }
+  double total = 0.0;
+  for (long long k = 0; k < chunks; ++k) total += partial[k];
+  return total;
 }
 
 }  // namespace beamimpact

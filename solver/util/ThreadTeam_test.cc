@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <mutex>
 #include <thread>
 #include <utility>
@@ -128,6 +129,30 @@ TEST(ThreadTeam, RangesCoverEveryIndexOnceInNearlyEqualParts) {
   run_ranges(nullptr, 5, [&](long long a, long long b) { first = a, last = b; });
   EXPECT_EQ(first, 0);
   EXPECT_EQ(last, 5);
+}
+
+// ordered_sum's bits depend on the length only: without a team and on teams of 2 and 3 threads
+// (parts taking the chunks in different orders) the same bits, for lengths inside one chunk, at
+// a chunk's edge and over several; and the sum is the sum (against a long double sum of the
+// same terms: roundoff of 1e5 terms of order 1, 1e-11).
+TEST(ThreadTeam, OrderedSumHasTheSameBitsOnEveryTeam) {
+  std::vector<double> x(5 * kSumChunk + 17);
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = std::sin(0.37 * static_cast<double>(i)) + 1e-3 * i;
+  ThreadTeam two(2), three(3);
+  std::vector<double> scratch;
+  for (const long long n : {100LL, kSumChunk, kSumChunk + 1, static_cast<long long>(x.size())}) {
+    auto sum = [&](long long first, long long last) {
+      double s = 0.0;
+      for (long long i = first; i < last; ++i) s += x[i];
+      return s;
+    };
+    const double alone = ordered_sum(nullptr, n, scratch, sum);
+    EXPECT_EQ(ordered_sum(&two, n, scratch, sum), alone) << n;
+    EXPECT_EQ(ordered_sum(&three, n, scratch, sum), alone) << n;
+    long double exact = 0.0L;
+    for (long long i = 0; i < n; ++i) exact += x[i];
+    EXPECT_NEAR(alone, static_cast<double>(exact), 1e-11 * std::abs(static_cast<double>(exact))) << n;
+  }
 }
 
 }  // namespace

@@ -402,7 +402,7 @@ double ExplicitContactIntegrator::momentum(int b, int c) const {
   const Eigen::VectorXd& v = V();
   if (cmass_) return cmass_->momentum(b, c, v);
   const Eigen::VectorXd& p = model_.momentum_covector(b, c);
-  const auto [lo, hi] = momentum_support_[2 * b + c];
+  const long long lo = momentum_support_[2 * b + c][0], hi = momentum_support_[2 * b + c][1];
   return ordered_sum(team_.get(), hi - lo, sum_chunks_, [&](long long first, long long last) {
     return p.segment(lo + first, last - first).dot(v.segment(lo + first, last - first));
   });

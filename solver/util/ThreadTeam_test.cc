@@ -137,7 +137,8 @@ TEST(ThreadTeam, RangesCoverEveryIndexOnceInNearlyEqualParts) {
 // same terms: roundoff of 1e5 terms of order 1, 1e-11).
 TEST(ThreadTeam, OrderedSumHasTheSameBitsOnEveryTeam) {
   std::vector<double> x(5 * kSumChunk + 17);
-  for (std::size_t i = 0; i < x.size(); ++i) x[i] = std::sin(0.37 * static_cast<double>(i)) + 1e-3 * i;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    x[i] = std::sin(0.37 * static_cast<double>(i)) + 1e-3 * static_cast<double>(i);
   ThreadTeam two(2), three(3);
   std::vector<double> scratch;
   for (const long long n : {100LL, kSumChunk, kSumChunk + 1, static_cast<long long>(x.size())}) {

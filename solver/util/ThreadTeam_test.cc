@@ -47,14 +47,15 @@ TEST(ThreadTeam, EveryPartRunsOncePerJob) {
 }
 
 TEST(ThreadTeam, PartsRunAtTheSameTimeOnDifferentThreads) {
-  // The caller claims part 0 first and holds it until part 1 has started: only a worker can have
-  // started it.
+  // Part 0 holds its thread until part 1 has started, so part 1 can only start on the other
+  // thread, whichever of the caller and the worker claims part 0 (either may be first).
   ThreadTeam team(2);
   std::atomic<bool> started{false};
-  std::thread::id caller = std::this_thread::get_id(), part1;
+  std::thread::id part0, part1;
   bool seen = false;
   auto job = [&](int t) {
     if (t == 0) {
+      part0 = std::this_thread::get_id();
       seen = wait_for(started);
     } else {
       part1 = std::this_thread::get_id();
@@ -63,7 +64,7 @@ TEST(ThreadTeam, PartsRunAtTheSameTimeOnDifferentThreads) {
   };
   team.run(job);
   EXPECT_TRUE(seen) << "part 1 did not start while part 0 ran";
-  EXPECT_NE(part1, caller);
+  EXPECT_NE(part0, part1);
 }
 
 TEST(ThreadTeam, RunReturnsOnlyWhenEveryPartHasReturned) {

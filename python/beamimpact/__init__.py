@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import json
 import os
-import shutil
 import sys
 import warnings
 from pathlib import Path
@@ -253,9 +252,9 @@ def verify(matrix: Union[str, os.PathLike] = "verification/matrix.toml", out: Un
            tier: str = "quick", only: str = "", jobs: int = 1, exe: Optional[Union[str, os.PathLike]] = None,
            fresh: bool = False) -> dict:
     """`beamimpact verify` as a call: runs the matrix's `tier` (items whose name contains `only`)
-    with `jobs` runs in parallel, each a process of the `beamimpact` executable `exe` (default
-    $BEAMIMPACT_EXE, else the program installed with this package, else `beamimpact` on PATH),
-    writes runs/, junit.xml, norms.json and report.md
+    with `jobs` runs in parallel, each in this process (the library's beamimpact::run; an outside
+    method's program is its own process), or, with `exe` (a `beamimpact` program), each as a
+    process of it (`--isolate`), writes runs/, junit.xml, norms.json and report.md
     under `out`, and returns norms.json's dict: result["verdict"] is "PASS" or "FAIL" by the
     library's one pass rule (complete, no gate failed); each gate has "passed" and "margin".
     A run recorded as finished under `out`/runs with the same input (an interrupted verify's) is
@@ -263,17 +262,7 @@ def verify(matrix: Union[str, os.PathLike] = "verification/matrix.toml", out: Un
     (`--fresh`). A relative `matrix` that does not exist here is the shipped one (data_root()),
     so the default works from any folder."""
     return _core.verify(str(_core.resolve_data_file(os.fspath(matrix))), str(out), tier, only, jobs,
-                        _exe("verify", exe), fresh)
-
-
-def _exe(command: str, exe: Optional[Union[str, os.PathLike]]) -> str:
-    """The beamimpact program a command's runs start: `exe`, else $BEAMIMPACT_EXE, else the program
-    installed with this package, else `beamimpact` on PATH."""
-    exe = exe or os.environ.get("BEAMIMPACT_EXE") or _program() or shutil.which("beamimpact")
-    if not exe:
-        raise FileNotFoundError(f"{command}: no beamimpact program found beside this package nor on PATH "
-                                "(pass exe= or set BEAMIMPACT_EXE)")
-    return str(exe)
+                        os.fspath(exe) if exe is not None else "", fresh)
 
 
 def load_methods(*files: Union[str, os.PathLike]) -> None:
@@ -296,8 +285,8 @@ def score(method: Union[str, Sequence[str]], out: Optional[Union[str, os.PathLik
     ("converged" or "matrix"), `ladder` (False: --no-ladder), `rungs`, `cards` (default the shipped
     verification/cards.toml), `cache` (the reference cache; default as the command's), `baseline`
     (an earlier scorecard.json: the ratchet), `jobs`, `timeout` (s per run); `methods`: methods
-    files to read first (load_methods). Each run is a process of the `beamimpact` program `exe`
-    (found as verify() finds it). No page is rendered (reports/render.py scorecard DIR makes it).
+    files to read first (load_methods). Each run goes in this process, or, with `exe` (a
+    `beamimpact` program), is a process of it, as verify() does. No page is rendered (reports/render.py scorecard DIR makes it).
 
     Returns {"passed": bool, "exit_code": the command's (0, 1, or 128 + a signal), "command",
     "cache" and "paths" (the scorecard.json files written; pathlib.Path), "scorecards": {name:
@@ -312,7 +301,8 @@ def score(method: Union[str, Sequence[str]], out: Optional[Union[str, os.PathLik
     o.cache = os.fspath(cache) if cache is not None else ""
     o.baseline = os.fspath(baseline) if baseline is not None else ""
     o.jobs, o.timeout = jobs, float(timeout)
-    return _core.score(o, _exe("score", exe))
+    o.exe = os.fspath(exe) if exe is not None else ""
+    return _core.score(o)
 
 
 def conform(method: str, out: Optional[Union[str, os.PathLike]] = None, *, scenes: Sequence[str] = (),
@@ -330,13 +320,6 @@ def conform(method: str, out: Optional[Union[str, os.PathLike]] = None, *, scene
     o.out = os.fspath(out) if out is not None else ""
     o.scenes, o.timeout = list(scenes), float(timeout)
     return _core.conform(o)
-
-
-def _program() -> Optional[str]:
-    """The beamimpact program installed with this package (bin/ of its environment) or of the
-    build tree it was built in, else None."""
-    p = _core.program_path()
-    return str(p) if p.name == "beamimpact" and os.access(p, os.X_OK) else None
 
 
 def data_root() -> Optional[Path]:

@@ -155,6 +155,7 @@ py::object compare(const std::map<std::string, std::vector<double>>& a, const py
 py::object verify(const std::filesystem::path& matrix, const std::filesystem::path& out,
                   const std::string& tier, const std::string& only, int jobs,
                   const std::filesystem::path& exe, bool fresh) {
+  // exe "": every run in this process; a program: each run a process of it (isolation).
   verification::VerifyOptions o;
   o.matrix = matrix;
   o.out = out;
@@ -162,10 +163,11 @@ py::object verify(const std::filesystem::path& matrix, const std::filesystem::pa
   o.only = only;
   o.jobs = jobs;
   o.fresh = fresh;
+  o.exe = exe;
   std::optional<verification::VerifyResult> r;
   {
     py::gil_scoped_release release;
-    r = verification::verify(o, exe);
+    r = verification::verify(o);
   }
   verification::write_verify_reports(o, *r);
   return to_python(verification::norms_json(r->context, r->items));
@@ -174,12 +176,12 @@ py::object verify(const std::filesystem::path& matrix, const std::filesystem::pa
 /// The score command (verification::score) with the GIL released; writes each scorecard.json and
 /// returns the verdict, the exit code, the command, the cache, the files written and each method's
 /// scorecard (scorecard.json's dict, with its ratchet against the baseline when one was given).
-py::dict score(const verification::ScoreOptions& o, const std::filesystem::path& exe) {
+py::dict score(const verification::ScoreOptions& o) {
   verification::ScoreResult r;
   std::vector<std::filesystem::path> written;
   {
     py::gil_scoped_release release;
-    r = verification::score(o, exe);
+    r = *verification::score(o);  // one rank in this process: always a result
     written = verification::write_score_reports(o, r);
   }
   py::dict cards;
@@ -251,13 +253,15 @@ void add_protocol(py::module_& m) {
       .def_readwrite("baseline", &verification::ScoreOptions::baseline)
       .def_readwrite("jobs", &verification::ScoreOptions::jobs)
       .def_readwrite("timeout", &verification::ScoreOptions::timeout)
+      .def_readwrite("exe", &verification::ScoreOptions::exe)
       .def_readwrite("sets", &verification::ScoreOptions::sets)
       .def_readwrite("scenes", &verification::ScoreOptions::scenes)
       .def_readwrite("references", &verification::ScoreOptions::references)
       .def_readwrite("ladder", &verification::ScoreOptions::ladder)
       .def_readwrite("rungs", &verification::ScoreOptions::rungs);
-  m.def("score", &score, py::arg("options"), py::arg("exe"),
-        "The score command as a library call (runs started with exe); writes each scorecard.json");
+  m.def("score", &score, py::arg("options"),
+        "The score command as a library call (runs in this process unless options.exe isolates them); "
+        "writes each scorecard.json");
   py::class_<verification::ConformOptions>(m, "ConformOptions", "verification::ConformOptions (conform.hpp)")
       .def(py::init<>())
       .def_readwrite("method", &verification::ConformOptions::method)

@@ -99,11 +99,11 @@ def fenicsx_keys(root):
     """The [fenicsx] keys, as the FEniCSx reference's option reader names them for an unknown key."""
     sys.path.insert(0, str(Path(root) / "references" / "fenicsx"))
     import options  # noqa: E402 (the reference's own module)
-    from scene import SceneError  # noqa: E402
+    from scene import InputError  # noqa: E402
     scene = types.SimpleNamespace(file="<check>", fenicsx={"?": 1}, bodies=[], dt=0.01, output_every=1)
     try:
         options.resolve_options(scene, {})
-    except SceneError as e:
+    except InputError as e:
         listed = str(e).split("expected one of ", 1)
         if len(listed) == 2:
             return {"fenicsx"} | {"fenicsx." + k.strip() for k in listed[1].split(",")}

@@ -137,14 +137,16 @@ def ladder_limit(values, ratio, from_fine_end=True, min_order=STEP_MIN_ORDER):
     """The limit of a ladder and its uncertainty. With three or more rungs converging monotonically
     in the asymptotic range: the Richardson limit of the last three, the uncertainty 1.25 times its
     last correction (Roache's grid convergence index for three rungs); else the
-    last rung, the uncertainty the larger of the last two differences. `converged` is false when
-    the asymptotic range has fewer than two rungs or an observed order below `min_order`
+    last rung, the uncertainty the larger of the last two differences. `converged` is true only
+    when the asymptotic range has three rungs or more (two differences or more, each smaller in
+    size than the one before: one difference shows no contraction, so a ladder that wanders
+    converges nowhere) and, where three rungs give an observed order, it is above `min_order`
     (STEP_MIN_ORDER for a step ladder, PENALTY_MIN_ORDER for a penalty ladder)."""
     rungs = contracting(values, from_fine_end)
     if len(rungs) < 2:
         return {"order": None, "limit": None, "uncertainty": None, "converged": False, "rungs_used": len(rungs)}
     diffs = [abs(b - a) for a, b in zip(rungs, rungs[1:])]
-    out = {"order": None, "limit": rungs[-1], "uncertainty": max(diffs[-2:]), "converged": True,
+    out = {"order": None, "limit": rungs[-1], "uncertainty": max(diffs[-2:]), "converged": len(rungs) >= 3,
            "rungs_used": len(rungs)}
     last = extrapolate(*rungs[-3:], ratio) if len(rungs) >= 3 else None
     if last is not None:

@@ -6,7 +6,7 @@
 #                                 BEAMIMPACT_FUZZ_RUNS executions (default 1000000) or
 #                                 BEAMIMPACT_FUZZ_SECONDS (default 10800), whichever comes first
 # Prints the executions reached per target; exits non-zero on a finding (crash, sanitizer report,
-# an exception other than SceneError, a timeout or an out-of-memory), saved in build-asan/findings/.
+# an exception other than InputError, a timeout or an out-of-memory), saved in build-asan/findings/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${BEAMIMPACT_ASAN_DIR:-build-asan}

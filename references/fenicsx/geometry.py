@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from scene import SceneError
+from scene import InputError
 
 
 @dataclass
@@ -72,7 +72,7 @@ class ContactGeom:
 
 
 def build_geometry(scene, opts):
-    """Rectangles (with striker translations) and contact geometries; raises SceneError."""
+    """Rectangles (with striker translations) and contact geometries; raises InputError."""
     rects = []
     for b in scene.bodies:
         h = math.sqrt(12.0 * b.inertia / b.area) if b.inertia > 0 else math.sqrt(b.area)
@@ -92,7 +92,7 @@ def build_geometry(scene, opts):
         corners = [S.point(face_s, -S.h / 2), S.point(face_s, S.h / 2)]
         if 0.0 < s_t < T.L:
             if abs(d_t) <= 1e-12 * T.L:
-                raise SceneError(scene.file, c.key + ".node", "the striker node lies on the target's "
+                raise InputError(scene.file, c.key + ".node", "the striker node lies on the target's "
                                  "axis; expected it on one side of the target (a positive gap)")
             side = math.copysign(1.0, d_t)
             n_out = side * T.n
@@ -105,7 +105,7 @@ def build_geometry(scene, opts):
             for q in corners:
                 sq = float((q - T.p0) @ T.e)
                 if not 0.0 < sq < T.L:
-                    raise SceneError(scene.file, c.key + ".node", "the striker's end face (depth "
+                    raise InputError(scene.file, c.key + ".node", "the striker's end face (depth "
                                      f"{S.h:.4g} m) reaches past the target's end; expected it to "
                                      "meet the target's side within its length")
         else:
@@ -113,19 +113,19 @@ def build_geometry(scene, opts):
             n_out = -T.e if surf_kind == "start" else T.e
             gap0 = -s_t if surf_kind == "start" else s_t - T.L
             if abs(d_t) + S.h / 2 > T.h / 2 + 1e-12 or abs(float(S.e @ T.e)) < 1 - 1e-9:
-                raise SceneError(scene.file, c.key + ".node", "an end-on contact needs the striker "
+                raise InputError(scene.file, c.key + ".node", "an end-on contact needs the striker "
                                  "coaxial with the target and its end face within the target's "
                                  "end face; expected that")
             side, kind, target_s = 0.0, "end_to_end", 0.0 if surf_kind == "start" else T.L
             lowest = min(float((q - T.point(target_s, 0.0)) @ n_out) for q in corners)
             gap0 = lowest
         if gap0 <= 0:
-            raise SceneError(scene.file, c.key + ".node", "the bodies touch or overlap at t = 0; "
+            raise InputError(scene.file, c.key + ".node", "the bodies touch or overlap at t = 0; "
                              "expected a positive initial gap")
         # The face is resolved only if the target's surface elements are no longer than it.
         seg = T.L / T.nx if surf_kind == "side" else T.h / T.ny
         if seg > S.h * (1 + 1e-9):
-            raise SceneError(scene.file, f"fenicsx.elements_length.{T.name}",
+            raise InputError(scene.file, f"fenicsx.elements_length.{T.name}",
                              f"the target's surface elements ({seg:.4g} m) are longer than the "
                              f"striker's contact face ({S.h:.4g} m), which would not be resolved; "
                              f"expected at least {math.ceil(T.L / S.h)} elements along {T.name}")
@@ -137,6 +137,6 @@ def build_geometry(scene, opts):
             pts = np.array([A.point(s, r) for s in np.linspace(0, A.L, 4 * A.nx + 1)
                             for r in np.linspace(-A.h / 2, A.h / 2, 5)])
             if np.any(B.contains(pts, -1e-12)):
-                raise SceneError(scene.file, "bodies", f"bodies {A.name} and {B.name} overlap at "
+                raise InputError(scene.file, "bodies", f"bodies {A.name} and {B.name} overlap at "
                                  "t = 0 as continua (depth sqrt(12 I/A)); expected disjoint bodies")
     return rects, contacts

@@ -45,7 +45,7 @@ def _floor_sig(x, digits=3):
 
 
 def setup(scene, opts, cont, contacts):
-    """Supports, initial velocity, step size and contact node sets. Raises SceneError."""
+    """Supports, initial velocity, step size and contact node sets. Raises InputError."""
     comm, rects, tol = cont.comm, cont.rects, cont.tol
     n2 = 2 * cont.n_own
     minv = 1.0 / cont.mass

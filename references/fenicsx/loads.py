@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from scene import SceneError, _Table
+from scene import InputError, _Table
 
 
 @dataclass
@@ -59,7 +59,7 @@ class Loads:
 
 
 def read_loads(doc, file, bodies):
-    """Reads the optional [loads] table of a parsed scene; raises SceneError naming the key."""
+    """Reads the optional [loads] table of a parsed scene; raises InputError naming the key."""
     if "loads" not in doc:
         return Loads()
     t = _Table(doc["loads"], file, "loads", {})
@@ -109,7 +109,7 @@ def section_weights(q, h, file, key, where):
     element (an odd count): l/6, 2l/3, l/6 per element stretch of length l, divided by h."""
     n = len(q)
     if n < 3 or n % 2 == 0 or abs(q[0] + h / 2) > 1e-9 * h or abs(q[-1] - h / 2) > 1e-9 * h:
-        raise SceneError(file, key, f"the point force's section at {where} is not a line of Q2 nodes "
+        raise InputError(file, key, f"the point force's section at {where} is not a line of Q2 nodes "
                          "through the whole depth; expected the node at a multiple of half a Q2 element "
                          "(change fenicsx.elements_length)")
     w = np.zeros(n)
@@ -137,5 +137,5 @@ def load_vector(scene, cont, loads):
         F[2 * loc] += w[mask] * p.force[0]
         F[2 * loc + 1] += w[mask] * p.force[1]
     if not all(math.isfinite(f) for f in F):
-        raise SceneError(scene.file, "loads", "the load vector is not finite; expected smaller loads")
+        raise InputError(scene.file, "loads", "the load vector is not finite; expected smaller loads")
     return F

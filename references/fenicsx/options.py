@@ -14,7 +14,7 @@ Keys (all optional; unknown keys are errors):
 
 from dataclasses import dataclass, field
 
-from scene import SceneError
+from scene import InputError
 
 PRESETS = {"coarse": 1, "default": 2, "fine": 4}
 
@@ -34,13 +34,13 @@ class Options:
 
 def _int(file, key, v, minimum=1):
     if isinstance(v, bool) or not isinstance(v, int) or v < minimum:
-        raise SceneError(file, key, f"expected an integer >= {minimum}, found {v!r}")
+        raise InputError(file, key, f"expected an integer >= {minimum}, found {v!r}")
     return v
 
 
 def _num(file, key, v, lo, hi, what):
     if isinstance(v, bool) or not isinstance(v, (int, float)) or not lo(v) or not hi(v):
-        raise SceneError(file, key, f"expected {what}, found {v!r}")
+        raise InputError(file, key, f"expected {what}, found {v!r}")
     return float(v)
 
 
@@ -50,7 +50,7 @@ def resolve_options(scene, cli):
     known = {"mesh", "elements_depth", "elements_length", "poisson", "fraction", "output_interval"}
     for k in table:
         if k not in known:
-            raise SceneError(file, f"fenicsx.{k}", "unknown key; expected one of " + ", ".join(sorted(known)))
+            raise InputError(file, f"fenicsx.{k}", "unknown key; expected one of " + ", ".join(sorted(known)))
     src = {k: ("--" + k.replace("_", "-"), v) for k, v in cli.items() if v is not None}
     for k, v in table.items():
         src.setdefault(k, (f"fenicsx.{k}", v))
@@ -66,7 +66,7 @@ def resolve_options(scene, cli):
     if (g := get("mesh", "default")):
         key, v = g
         if v not in PRESETS:
-            raise SceneError(file, key, f"expected one of {', '.join(PRESETS)}, found {v!r}")
+            raise InputError(file, key, f"expected one of {', '.join(PRESETS)}, found {v!r}")
         o.mesh = v
     o.elements_depth = PRESETS[o.mesh]
     if (g := get("elements_depth", o.elements_depth)):
@@ -76,7 +76,7 @@ def resolve_options(scene, cli):
         if isinstance(v, dict):
             for n, c in v.items():
                 if n not in names:
-                    raise SceneError(file, f"{key}.{n}", f"expected a body name ({', '.join(names)})")
+                    raise InputError(file, f"{key}.{n}", f"expected a body name ({', '.join(names)})")
                 o.elements_length[n] = _int(file, f"{key}.{n}", c)
         else:
             for n in names:

@@ -22,7 +22,7 @@ sys.path.insert(0, HERE)
 
 from options import PRESETS, resolve_options  # noqa: E402
 from output import CONTACT_COLUMNS, ContactStats, history_columns, merge_gap, merge_rule, remove_stale, write_run  # noqa: E402
-from scene import SceneError, load_scene     # noqa: E402
+from scene import InputError, load_scene     # noqa: E402
 
 try:
     from geometry import build_geometry      # needs numpy
@@ -94,7 +94,7 @@ def main(argv):
                "fraction": args.fraction, "output_interval": args.output_interval, "end": args.end}
         opts = resolve_options(scene, cli)
         rects, contacts = build_geometry(scene, opts)
-    except SceneError as e:
+    except InputError as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
     try:
@@ -113,7 +113,7 @@ def main(argv):
             remove_stale(args.out)
         cont = Continuum(comm, rects, opts.poisson)
         st = integrator.setup(scene, opts, cont, contacts)
-    except SceneError as e:
+    except InputError as e:
         if comm.rank == 0:
             print(f"error: {e}", file=sys.stderr)
         return 2

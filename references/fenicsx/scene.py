@@ -12,8 +12,10 @@ import tomllib
 from dataclasses import dataclass, field
 
 
-class SceneError(Exception):
-    """Bad input: names the file, the dotted key and what was expected (exit code 2)."""
+class InputError(Exception):
+    """Bad input: names the file, the dotted key and what was expected (exit code 2). The suite's
+    one name for bad input, as in the C++ code and the Python module, defined here on its own: the
+    reference shares nothing with them but the scene file."""
 
     def __init__(self, file, key, message):
         self.file, self.key = str(file), key
@@ -97,14 +99,14 @@ class _Table:
 
     def __init__(self, table, file, prefix, assumed):
         if not isinstance(table, dict):
-            raise SceneError(file, prefix, "expected a table")
+            raise InputError(file, prefix, "expected a table")
         self.t, self.file, self.prefix, self.assumed, self.seen = table, file, prefix, assumed, set()
 
     def path(self, key):
         return f"{self.prefix}.{key}" if self.prefix else key
 
     def fail(self, key, message):
-        raise SceneError(self.file, self.path(key), message)
+        raise InputError(self.file, self.path(key), message)
 
     def _get(self, key, default, shown):
         self.seen.add(key)
@@ -177,27 +179,27 @@ def load_scene(path, overrides=None):
         with open(path, "rb") as f:
             data = f.read()
     except OSError as e:
-        raise SceneError(file, "", f"cannot read the scene file ({e.strerror})")
+        raise InputError(file, "", f"cannot read the scene file ({e.strerror})")
     try:
         doc = tomllib.loads(data.decode("utf-8"))
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as e:
-        raise SceneError(file, "", f"not valid TOML ({e})")
+        raise InputError(file, "", f"not valid TOML ({e})")
     for k, v in (overrides or {}).items():
         table, _, key = k.partition(".")
         doc.setdefault(table, {})[key] = v
     assumed = {}
     for k in doc:
         if k not in _TOP:
-            raise SceneError(file, k, "unknown key (a typo must not fall back to a default)")
+            raise InputError(file, k, "unknown key (a typo must not fall back to a default)")
     name = doc.get("name")
     if not isinstance(name, str) or not name:
-        raise SceneError(file, "name", "missing; expected the scene's name (a string)")
+        raise InputError(file, "name", "missing; expected the scene's name (a string)")
     description = doc.get("description", "")
     if not isinstance(description, str):
-        raise SceneError(file, "description", "expected a string")
+        raise InputError(file, "description", "expected a string")
 
     if "time" not in doc:
-        raise SceneError(file, "time", "missing; expected a [time] table")
+        raise InputError(file, "time", "missing; expected a [time] table")
     t = _Table(doc["time"], file, "time", assumed)
     dt_raw = t.raw("dt")
     if dt_raw is None:
@@ -225,12 +227,12 @@ def load_scene(path, overrides=None):
     }
     m.finish()
     if model["rayleigh_mass"] or model["rayleigh_stiffness"]:
-        raise SceneError(file, "model.rayleigh_mass", "Rayleigh damping cannot be modelled by the "
+        raise InputError(file, "model.rayleigh_mass", "Rayleigh damping cannot be modelled by the "
                          "FEniCSx reference; expected 0 (an undamped scene)")
 
     bodies_raw = doc.get("bodies")
     if not isinstance(bodies_raw, list) or len(bodies_raw) < 2:
-        raise SceneError(file, "bodies", "expected an array of at least two [[bodies]] tables")
+        raise InputError(file, "bodies", "expected an array of at least two [[bodies]] tables")
     bodies = []
     for i, braw in enumerate(bodies_raw):
         b = _Table(braw, file, f"bodies[{i}]", assumed)
@@ -287,7 +289,7 @@ def load_scene(path, overrides=None):
 
     contacts_raw = doc.get("contacts")
     if not isinstance(contacts_raw, list) or not contacts_raw:
-        raise SceneError(file, "contacts", "expected an array of at least one [[contacts]] table")
+        raise InputError(file, "contacts", "expected an array of at least one [[contacts]] table")
     names = {bd.name: bd.index for bd in bodies}
     contacts = []
     for i, craw in enumerate(contacts_raw):
@@ -322,7 +324,7 @@ def load_scene(path, overrides=None):
     strikers = [c.striker for c in contacts]
     for c in contacts:
         if strikers.count(c.striker) > 1 or c.striker in [d.target for d in contacts]:
-            raise SceneError(file, c.key + ".striker", "the FEniCSx reference models one contact per "
+            raise InputError(file, c.key + ".striker", "the FEniCSx reference models one contact per "
                              "striker and a striker that is nobody's target; expected that")
 
     e = _Table(doc.get("effects", {}), file, "effects", {})
@@ -332,16 +334,16 @@ def load_scene(path, overrides=None):
     _check_rod_loads(file, bodies, loads)
     for c in contacts:
         if bodies[c.striker].rigid:
-            raise SceneError(file, c.key + ".striker", "the striker is an immovable rigid body and "
+            raise InputError(file, c.key + ".striker", "the striker is an immovable rigid body and "
                              "cannot strike; expected a deformable striker (the rigid body as the target)")
     if effects["damping"]:
-        raise SceneError(file, "effects.damping", "damping cannot be modelled by the FEniCSx reference")
+        raise InputError(file, "effects.damping", "damping cannot be modelled by the FEniCSx reference")
     if effects["friction"] is False:
         for c in contacts:
             c.friction = 0.0
     for tbl in ("paper", "ida", "exact"):
         if tbl in doc and not isinstance(doc[tbl], dict):
-            raise SceneError(file, tbl, "expected a table")
+            raise InputError(file, tbl, "expected a table")
     o = _Table(doc.get("output", {}), file, "output", assumed)
     fields = o.boolean("fields", False)
     # The beam methods' encoding and precision choices; dolfinx's VTKFile writes the continuum's
@@ -354,7 +356,7 @@ def load_scene(path, overrides=None):
     o.finish()
     fen = doc.get("fenicsx", {})
     if not isinstance(fen, dict):
-        raise SceneError(file, "fenicsx", "expected a table")
+        raise InputError(file, "fenicsx", "expected a table")
 
     return Scene(file=file, sha256=hashlib.sha256(data).hexdigest(), name=name,
                  description=description, dt=dt, fraction=fraction, end=end,
@@ -401,7 +403,7 @@ def _check_rods(file, bodies, effects, assumed):
         if bd.rigid:
             continue
         if not on_line or effects["bending"]:
-            raise SceneError(file, f"bodies[{bd.index}].inertia", "missing; expected a positive second "
+            raise InputError(file, f"bodies[{bd.index}].inertia", "missing; expected a positive second "
                              "moment of area (m^4): this scene bends, and the continuum's depth is "
                              "sqrt(12 I / A)")
     for bd in rods:
@@ -421,7 +423,7 @@ def _check_rod_loads(file, bodies, loads):
     e = ((b0.end[0] - b0.start[0]) / b0.length, (b0.end[1] - b0.start[1]) / b0.length)
     for key, a in [("loads.gravity", loads.gravity)] + [(p.key + ".force", p.force) for p in loads.point]:
         if abs(a[0] * e[1] - a[1] * e[0]) > 1e-12 * math.hypot(*a):
-            raise SceneError(file, key, f"this scene is of rods along ({e[0]:.6g}, {e[1]:.6g}) (a body "
+            raise InputError(file, key, f"this scene is of rods along ({e[0]:.6g}, {e[1]:.6g}) (a body "
                              f"without inertia), and the load ({a[0]:.6g}, {a[1]:.6g}) has a component "
                              "across that axis; expected a load along the axis, or give every body "
                              "its inertia")

@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from scene import SceneError
+from scene import InputError
 
 PARALLEL_TOL = 1e-9   # |sin| between two held directions below which they are one
 
@@ -50,7 +50,7 @@ def hold(scene, cont, tol, minv, v0):
             nodes, _ = cont.find_nodes(bi, lambda s, q, s0=sup.s: (abs(s - s0) < tol) & (abs(q) < tol),
                                        lambda s, q: s)
             if len(nodes) != 1:
-                raise SceneError(scene.file, sup.key + ".at", f"the support at {sup.s:.6g} m along "
+                raise InputError(scene.file, sup.key + ".at", f"the support at {sup.s:.6g} m along "
                                  f"{body.name} is not a node of the continuum mesh; expected a position "
                                  "at a multiple of half a Q2 element (change fenicsx.elements_length)")
             entry = at.setdefault(int(nodes[0]), [sup.key, nodes, []])
@@ -77,7 +77,7 @@ def refuse_roller_in_contact(scene, rollers, contact_nodes):
     component's inverse mass, which has no such constraint."""
     for key, node, _, _ in rollers:
         if node in set(int(n) for n in contact_nodes):
-            raise SceneError(scene.file, key + ".fix", "a roller in body axes on a node of the contact "
+            raise InputError(scene.file, key + ".fix", "a roller in body axes on a node of the contact "
                              "surface is not modelled by the FEniCSx method; expected the support away from "
                              "the contact, or fix in global x, y")
 

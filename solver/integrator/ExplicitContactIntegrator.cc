@@ -386,7 +386,8 @@ double ExplicitContactIntegrator::velocity_along(const std::vector<DofTerm>& row
 }
 
 double ExplicitContactIntegrator::strain_energy() const {
-  if (!fused_ || fint_.nonlinear()) return fint_.strain_energy(U_, team_.get());
+  // Not fused, or corotational: one thread (start_team: no team, or fint_ not split).
+  if (!fused_ || fint_.nonlinear()) return fint_.strain_energy(U_);
   // Linear elements: the step has formed f_int(U^p) - F^P already (fint_U_), so 1/2 U^T K U is a
   // dot product with it, not a second product with K.
   const Eigen::VectorXd& U = U_;

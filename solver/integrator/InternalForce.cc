@@ -470,11 +470,11 @@ std::array<double, 3> InternalForce::end_forces(int e, const Eigen::VectorXd& U)
   return section(el, el.c * du + el.s * dv, th1, th2);
 }
 
-double InternalForce::strain_energy(const Eigen::VectorXd& U, ThreadTeam* team) const {
+double InternalForce::strain_energy(const Eigen::VectorXd& U) const {
   // U^T K U = sum_j U_j (column j of K) . U, for any K: the columns read U where they are stored.
   const SparseMatrix& K = *K_;
   const double* u = U.data();
-  double e = 0.5 * ordered_sum(team, K.outerSize(), energy_chunks_, [&](long long first, long long last) {
+  double e = 0.5 * ordered_sum(nullptr, K.outerSize(), energy_chunks_, [&](long long first, long long last) {
                double s = 0.0;
                for (long long j = first; j < last; ++j) {
                  double column = 0.0;

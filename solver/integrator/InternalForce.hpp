@@ -67,12 +67,12 @@ class InternalForce {
   void end_forces(const Eigen::VectorXd& U, std::vector<std::array<double, 3>>& out,
                   ThreadTeam* team = nullptr) const;
   /// @brief Strain energy (J) at U: 1/2 U^T K U summed column by column of K in fixed chunks
-  /// (ordered_sum), so the bits do not depend on the threads. The chunks' sums go into a scratch
-  /// kept between calls (a history row allocates nothing): calls on one object must not run
-  /// concurrently.
+  /// (ordered_sum) on this thread, plus the corotational elements' energy. Only the runs that
+  /// step on one thread ask for it (a threaded step is linear and fused, and takes the energy
+  /// from its own force). The chunks' sums go into a scratch kept between calls (a history row
+  /// allocates nothing): calls on one object must not run concurrently.
   /// @param U displacement
-  /// @param team threads for the chunks, or null for this thread alone
-  double strain_energy(const Eigen::VectorXd& U, ThreadTeam* team = nullptr) const;
+  double strain_energy(const Eigen::VectorXd& U) const;
   /// @brief True when some body is corotational.
   bool nonlinear() const { return !corot_elements_.empty(); }
   /// @brief Current chord direction (cos, sin) of element e at U (the corotational frame).

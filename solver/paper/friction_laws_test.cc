@@ -29,6 +29,26 @@ constexpr double kHertzK = 1e6;                              // N/m^1.5
 constexpr double kDt = 1e-4, kEnd = 0.5;                     // s: the block stops at 1/3 s
 constexpr double kDrop = 1e-6;                               // m: the gap at t = 0
 
+/// @brief The tail of a scene that puts a striker on an immovable rigid floor along y = 0: the
+/// floor body (one element from x = -2 m to floor_end, held at its start) and the contact of the
+/// striker's node with it, Coulomb friction kMu, under the law (the Hertz law with kHertzK).
+/// @param striker the striking body's name
+/// @param node the contact node as TOML text: an index ("1") or a quoted end ("\"end\"")
+/// @param law "hard" (the paper's law) or "hertz"
+/// @param floor_end m, the x of the floor's end
+std::string on_rigid_floor(const std::string& striker, const std::string& node, const std::string& law,
+                           const std::string& floor_end) {
+  std::ostringstream t;
+  t.precision(17);
+  t << "[[bodies]]\nname = \"floor\"\nstart = [-2.0, 0.0]\nend = [" << floor_end
+    << ", 0.0]\nelements = 1\nE = 1e9\nrho = 1.0\narea = 1.0\nrigid = true\n"
+       "supports = [{ at = \"start\", fix = [\"x\", \"y\", \"theta\"] }]\n"
+    << "[[contacts]]\nstriker = \"" << striker << "\"\nnode = " << node
+    << "\ntarget = \"floor\"\nfriction = " << kMu << "\n";
+  if (law == "hertz") t << "law = \"hertz\"\nstiffness = " << kHertzK << "\n";
+  return t.str();
+}
+
 /// The block with its centre (and its axis) at height kDrop above the floor y = 0, under the law.
 std::string sliding_block(const std::string& law) {
   std::ostringstream t;
@@ -38,11 +58,7 @@ std::string sliding_block(const std::string& law) {
     << "[[bodies]]\nname = \"block\"\nstart = [-0.5, " << kDrop << "]\nend = [0.5, " << kDrop
     << "]\nelements = 2\nE = 1e9\nrho = " << kM << "\narea = 1.0\nvelocity = [" << kV0
     << ", 0.0]\nsupports = []\nrigid = true\n"
-    << "[[bodies]]\nname = \"floor\"\nstart = [-2.0, 0.0]\nend = [2.0, 0.0]\nelements = 1\nE = 1e9\n"
-       "rho = 1.0\narea = 1.0\nrigid = true\n"
-       "supports = [{ at = \"start\", fix = [\"x\", \"y\", \"theta\"] }]\n"
-    << "[[contacts]]\nstriker = \"block\"\nnode = 1\ntarget = \"floor\"\nfriction = " << kMu << "\n";
-  if (law == "hertz") t << "law = \"hertz\"\nstiffness = " << kHertzK << "\n";
+    << on_rigid_floor("block", "1", law, "2.0");
   return t.str();
 }
 
@@ -113,11 +129,7 @@ void check_tilted_rod_sliding(const std::string& law) {
     << "[[bodies]]\nname = \"rod\"\nstart = [0.0, " << kH + s << "]\nend = [" << s << ", " << kH
     << "]\nelements = 1\nE = 1e9\nrho = 1.0\narea = 1.0\nvelocity = [" << kVx << ", " << kVy
     << "]\nsupports = []\nrigid = true\n"
-    << "[[bodies]]\nname = \"floor\"\nstart = [-2.0, 0.0]\nend = [4.0, 0.0]\nelements = 1\nE = 1e9\n"
-       "rho = 1.0\narea = 1.0\nrigid = true\n"
-       "supports = [{ at = \"start\", fix = [\"x\", \"y\", \"theta\"] }]\n"
-    << "[[contacts]]\nstriker = \"rod\"\nnode = \"end\"\ntarget = \"floor\"\nfriction = " << kMu << "\n";
-  if (law == "hertz") t << "law = \"hertz\"\nstiffness = " << kHertzK << "\n";
+    << on_rigid_floor("rod", "\"end\"", law, "4.0");
   const SimulationResult r = solve(load_scene_text(t.str(), "tilted_rod.toml"));
   long slip_rows = 0;
   for (const HistoryRow& row : r.history) {

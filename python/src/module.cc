@@ -146,8 +146,8 @@ py::object compare(const std::map<std::string, std::vector<double>>& a, const py
   o.window = window;
   o.merge_gap = merge_gap;
   o.threshold = threshold;
-  return to_python(
-      verification::compare_runs(stored(a, summary_a, label_a), stored(b, summary_b, label_b), o).to_json());
+  const StoredRun run = stored(a, summary_a, label_a), reference = stored(b, summary_b, label_b);
+  return to_python(verification::compare_runs(run.view(), reference.view(), o).to_json());
 }
 
 /// The verify command (verification::verify) with the GIL released; writes the reports, returns

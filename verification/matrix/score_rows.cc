@@ -166,7 +166,7 @@ std::optional<Comparison> reference_spread(const ScoreItem& it, const JobOutcome
     return Comparison{};
   }
   try {
-    return compare_runs(*stored_run(ref), *stored_run(check));
+    return compare_runs(stored_run(ref)->view(), stored_run(check)->view());
   } catch (const std::exception& e) {
     note = label + " did not compare (spread unknown): " + e.what();
     return Comparison{};
@@ -201,7 +201,8 @@ void judge(ScoreRow& row, const JobOutcome& ref, const std::map<std::string, Job
   options.run_from_history = true;
   try {
     const auto reference = stored_run(ref);
-    for (const JobOutcome& o : row.rungs) cmps.push_back(compare_runs(*stored_run(o), *reference, options));
+    for (const JobOutcome& o : row.rungs)
+      cmps.push_back(compare_runs(stored_run(o)->view(), reference->view(), options));
   } catch (const std::exception& e) {
     not_judged(row, QuantityStatus::kFailed, e.what());
     return;

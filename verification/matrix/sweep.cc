@@ -143,7 +143,7 @@ std::optional<SweepResult> execute_sweep(const SweepOptions& o, Launcher launche
   for (const auto& s : specs) {
     SweepPoint p{outcomes.at(s.key()), std::nullopt};
     if (p.outcome.status == JobOutcome::Status::kOk)
-      p.comparison = compare_runs(*stored_run(p.outcome), *reference);
+      p.comparison = compare_runs(stored_run(p.outcome)->view(), reference->view());
     r.points.push_back(std::move(p));
   }
   finish(o, r);

@@ -15,6 +15,7 @@ Bad input raises beamimpact.InputError with the CLI's message (file, key, what w
 """
 from __future__ import annotations
 
+import copy
 import json
 import os
 import sys
@@ -58,7 +59,9 @@ def _plain(o):
 
 
 def _toml_value(v):
-    """A --set value as TOML: shortest round-trip numbers, true/false, quoted strings."""
+    """The text a run records for an override value (summary.json "overrides"), as --set would
+    show it: shortest round-trip numbers, true/false, quoted strings. The value itself reaches the
+    scene as a typed TOML value, not through this text."""
     if isinstance(v, (np.generic, np.ndarray)):
         v = _plain(v)  # a numpy repr is no TOML number
     if isinstance(v, bool):
@@ -76,23 +79,25 @@ class Scene:
     those of the C++ Scene.
     """
 
-    def __init__(self, source: Union[str, os.PathLike], overrides: Iterable[str] = (), *, _is_dict: bool = False):
+    def __init__(self, source: Union[str, os.PathLike, Mapping[str, Any]], overrides: Iterable = (), *,
+                 _is_dict: bool = False):
+        # overrides: "key=value" text (as --set) or (key, value, recorded text) triples.
         self._source, self._is_dict = source, _is_dict
         self._overrides = list(overrides)
         if _is_dict:
             self._scene = _core.load_scene_dict(source, "<dict>", self._overrides)
         else:
             self._source = source = _core.resolve_scene(os.fspath(source))
-            self._scene = _core.load_scene(str(source), self._overrides)
+            self._scene = _core.load_scene_with(str(source), self._overrides)
 
     @classmethod
     def from_dict(cls, tables: Mapping[str, Any]) -> Scene:
         """A scene from a dict of its TOML tables ({"name": ..., "time": {...}, "bodies": [...]})."""
-        return cls(json.dumps(tables, default=_plain), _is_dict=True)
+        return cls(copy.deepcopy(dict(tables)), _is_dict=True)  # later edits of `tables` do not reach it
 
     def with_overrides(self, settings: Optional[Overrides]) -> Scene:
         """This scene with more overrides ({"time.dt": 0.005} as --set time.dt=0.005)."""
-        extra = [f"{k}={_toml_value(v)}" for k, v in (settings or {}).items()]
+        extra = [(k, v, _toml_value(v)) for k, v in (settings or {}).items()]
         return Scene(self._source, self._overrides + extra, _is_dict=self._is_dict)
 
     def with_set(self, settings: Optional[Overrides]) -> Scene:

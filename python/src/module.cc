@@ -146,8 +146,8 @@ py::object compare(const std::map<std::string, std::vector<double>>& a, const py
   o.window = window;
   o.merge_gap = merge_gap;
   o.threshold = threshold;
-  return to_python(
-      verification::compare_runs(stored(a, summary_a, label_a), stored(b, summary_b, label_b), o).to_json());
+  const StoredRun run = stored(a, summary_a, label_a), reference = stored(b, summary_b, label_b);
+  return to_python(verification::compare_runs(run.view(), reference.view(), o).to_json());
 }
 
 /// The verify command (verification::verify) with the GIL released; writes the reports, returns
@@ -274,16 +274,8 @@ void add_protocol(py::module_& m) {
         "Adds a methods file's external methods to the registry (as --methods FILE)");
 }
 
-}  // namespace
-}  // namespace beamimpact::python
-
-PYBIND11_MODULE(_core, m) {
-  using namespace beamimpact;
-  using namespace beamimpact::python;
-  m.doc() = "beamimpact's compiled core; use the package `beamimpact`, not this module";
-  py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
-  m.attr("__version__") = kVersion;
-
+/// The scene class and the loaders: a file (with --set text or typed overrides) or a dict.
+void add_scene(py::module_& m) {
   py::class_<Scene>(m, "_Scene")
       .def_readonly("name", &Scene::name)
       .def_readonly("file", &Scene::file)
@@ -303,12 +295,33 @@ PYBIND11_MODULE(_core, m) {
   m.def("load_scene", &load_scene, py::arg("path"), py::arg("overrides") = std::vector<std::string>{},
         "Loads and validates a scene file (raises InputError as the CLI reports it)");
   m.def(
-      "load_scene_dict",
-      [](const std::string& json_text, const std::string& label, const std::vector<std::string>& overrides) {
-        return load_scene_text(toml_from_json(json_text, label), label, overrides);
+      "load_scene_with",
+      [](const std::string& path, const py::list& overrides) {
+        return load_scene_with(path, overrides_from_python(overrides, path));
       },
-      py::arg("json_text"), py::arg("label"), py::arg("overrides") = std::vector<std::string>{},
-      "Loads a scene given as JSON text of the scene's tables (Scene.from_dict)");
+      py::arg("path"), py::arg("overrides"),
+      "Loads a scene file with overrides given as \"key=value\" text or (key, value, text) triples");
+  m.def(
+      "load_scene_dict",
+      [](const py::dict& tables, const std::string& label, const py::list& overrides) {
+        return load_scene_table(table_from_dict(tables, label), label,
+                                overrides_from_python(overrides, label));
+      },
+      py::arg("tables"), py::arg("label"), py::arg("overrides") = py::list(),
+      "Loads a scene given as a dict of the scene's tables (Scene.from_dict), without TOML text");
+}
+
+}  // namespace
+}  // namespace beamimpact::python
+
+PYBIND11_MODULE(_core, m) {
+  using namespace beamimpact;
+  using namespace beamimpact::python;
+  m.doc() = "beamimpact's compiled core; use the package `beamimpact`, not this module";
+  py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
+  m.attr("__version__") = kVersion;
+
+  add_scene(m);
   m.attr("max_threads") = thread_limit();  // the largest `threads` a run takes (the registry's)
   m.def("run", &run_scene, py::arg("scene"), py::arg("method"), py::arg("out") = py::none(),
         py::arg("progress") = py::none(), py::arg("threads") = py::none(),

@@ -116,6 +116,31 @@ def test_from_dict_takes_numpy_values():
         assert np.array_equal(a.columns[name], b.columns[name])
 
 
+def test_dict_scene_is_the_file_scene_with_typed_overrides():
+    # The dict reaches the loader as TOML values (no text): the scene of the file, and overrides of
+    # it are typed values recorded as the --set text they always were.
+    path = PAPER / "s1_central.toml"
+    tables = tomllib.loads(path.read_text())
+    d = beamimpact.Scene.from_dict(tables).with_overrides({"time.dt": 0.005, "bodies.B.elements": np.int64(20)})
+    f = beamimpact.load_scene(path, overrides={"time.dt": 0.005, "bodies.B.elements": 20})
+    assert d.overrides == f.overrides == {"time.dt": "0.005", "bodies.B.elements": "20"}
+    assert d.assumed == f.assumed and d.bodies == f.bodies and d.end_time == f.end_time
+    a, b = beamimpact.run(d, progress=False), beamimpact.run(f, progress=False)
+    for name in b.columns:
+        assert np.array_equal(a.columns[name], b.columns[name]), name
+    s = beamimpact.Scene.from_dict(tables)
+    tables["time"]["dt"] = 0.02  # the scene took a copy: this edit is not in it
+    assert beamimpact.run(s, overrides={"time.end": 1.0}, progress=False).summary["dt"] == 0.01
+    with pytest.raises(beamimpact.InputError, match=r"<dict>: key 'time.dt'.*auto"):
+        beamimpact.Scene.from_dict(tomllib.loads(path.read_text())).with_overrides({"time.dt": "fast"})
+    with pytest.raises(beamimpact.InputError, match=r"<dict>: key 'bodies\[1\].elements'"):
+        tables = tomllib.loads(path.read_text())
+        tables["bodies"][1]["elements"] = 2**70
+        beamimpact.Scene.from_dict(tables)
+    with pytest.raises(TypeError, match="is not a scene value"):
+        beamimpact.Scene.from_dict({"name": object()})
+
+
 def test_bad_scene_raises_the_cli_message(tmp_path):
     path = PAPER / "s1_central.toml"
     p = cli("run", path, "--out", tmp_path / "bad", "--set", "bodies.A.area=-0.4")

@@ -59,7 +59,8 @@ void compare(const CompareArgs& a) {
   fs::path json = a.json.empty() ? fs::path(a.a) / "compare.json" : fs::path(a.json);
   if (std::error_code ec; fs::is_directory(json, ec)) json /= "compare.json";  // --json DIR
   const OutputLock lock = lock_output(json.has_parent_path() ? json.parent_path() : fs::path("."));
-  const Comparison c = compare_runs(StoredRun::read(a.a), StoredRun::read(a.b), a.options);
+  const StoredRun run = StoredRun::read(a.a), reference = StoredRun::read(a.b);
+  const Comparison c = compare_runs(run.view(), reference.view(), a.options);
   fmt::print("{}", c.to_text());
   write_file_atomic(json, c.to_json().dump(1) + "\n");
   fmt::print("wrote {}\n", json.string());

@@ -173,8 +173,8 @@ ItemResult evaluate_case(const Case& c, const std::map<std::string, jobs::JobOut
   apply_gates(
       r, c.gates,
       [&] {
-        return compare_runs(*jobs::stored_run(runs.at(c.run.key())),
-                            *jobs::stored_run(runs.at(c.reference.key())));
+        return compare_runs(jobs::stored_run(runs.at(c.run.key()))->view(),
+                            jobs::stored_run(runs.at(c.reference.key()))->view());
       },
       "comparison");
   return r;
@@ -184,7 +184,7 @@ ItemResult evaluate_check(const RunCheck& c, const std::map<std::string, jobs::J
   ItemResult r = item_for("check", c.run, c.name(), c.tier, c.required, c.note, runs);
   if (!runs_ok(r, {&c.run}, c.gates, runs)) return r;  // a crash, a NaN or a refusal fails every gate
   apply_gates(
-      r, c.gates, [&] { return check_run(*jobs::stored_run(runs.at(c.run.key()))); }, "health check");
+      r, c.gates, [&] { return check_run(jobs::stored_run(runs.at(c.run.key()))->view()); }, "health check");
   return r;
 }
 
@@ -215,10 +215,10 @@ void compare_rungs(const Convergence& v, const std::map<std::string, jobs::JobOu
   for (const auto& s : v.runs) rungs.push_back(jobs::stored_run(runs.at(s.key())));
   if (v.reference) {  // every rung against the reference
     const auto ref = jobs::stored_run(runs.at(v.reference->key()));
-    for (const auto& rung : rungs) r.comparisons.push_back(compare_runs(*rung, *ref));
+    for (const auto& rung : rungs) r.comparisons.push_back(compare_runs(rung->view(), ref->view()));
   } else {  // consecutive pairs
     for (std::size_t i = 0; i + 1 < rungs.size(); ++i)
-      r.comparisons.push_back(compare_runs(*rungs[i], *rungs[i + 1]));
+      r.comparisons.push_back(compare_runs(rungs[i]->view(), rungs[i + 1]->view()));
   }
 }
 

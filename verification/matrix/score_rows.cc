@@ -168,7 +168,7 @@ std::optional<Comparison> reference_spread(const ScoreItem& it, const jobs::JobO
     return Comparison{};
   }
   try {
-    return compare_runs(*jobs::stored_run(ref), *jobs::stored_run(check));
+    return compare_runs(jobs::stored_run(ref)->view(), jobs::stored_run(check)->view());
   } catch (const std::exception& e) {
     note = label + " did not compare (spread unknown): " + e.what();
     return Comparison{};
@@ -204,7 +204,7 @@ void judge(ScoreRow& row, const jobs::JobOutcome& ref, const std::map<std::strin
   try {
     const auto reference = jobs::stored_run(ref);
     for (const jobs::JobOutcome& o : row.rungs)
-      cmps.push_back(compare_runs(*jobs::stored_run(o), *reference, options));
+      cmps.push_back(compare_runs(jobs::stored_run(o)->view(), reference->view(), options));
   } catch (const std::exception& e) {
     not_judged(row, QuantityStatus::kFailed, e.what());
     return;

@@ -139,7 +139,7 @@ SweepResult judge_sweep(const SweepOptions& o, const SweepPlan& plan,
   for (const auto& s : plan.points) {
     SweepPoint p{outcomes.at(s.key()), std::nullopt};
     if (p.outcome.status == jobs::JobOutcome::Status::kOk)
-      p.comparison = compare_runs(*jobs::stored_run(p.outcome), *reference);
+      p.comparison = compare_runs(jobs::stored_run(p.outcome)->view(), reference->view());
     r.points.push_back(std::move(p));
   }
   finish(o, r);

@@ -237,14 +237,24 @@ std::string study_markdown(const Study& s, const StudyResult& r, const StudyTabl
   return md + t.broken.markdown();
 }
 
+/// Every table of the study's results, in design order.
+StudyTables tables_of(const Study& s, const StudyResult& r) {
+  StudyTables t = empty_tables(s);
+  for (std::size_t i = 0; i < r.points.size(); ++i)
+    for (const auto& c : r.results[i].cases) add_case(s, i, r.points[i], r.results[i], c, t);
+  return t;
+}
+
 }  // namespace
+
+nlohmann::json study_json(const StudyResult& r, const std::string& version) {
+  return study_json(r.study, version, tables_of(r.study, r).cases);
+}
 
 StudyCounts write_study(const Study& s, const StudyResult& r, const fs::path& out, const std::string& command,
                         const std::string& version) {
   fs::create_directories(out);
-  StudyTables t = empty_tables(s);
-  for (std::size_t i = 0; i < r.points.size(); ++i)
-    for (const auto& c : r.results[i].cases) add_case(s, i, r.points[i], r.results[i], c, t);
+  StudyTables t = tables_of(s, r);
   const std::size_t run_now = t.n_cases - r.resumed * s.methods.size();
   const double rate = r.wall_seconds > 0 ? static_cast<double>(run_now) / r.wall_seconds : 0.0;
   const nlohmann::json timing{

@@ -347,7 +347,7 @@ def study(file: Union[str, os.PathLike], out: Union[str, os.PathLike], *, keep_r
           fresh: bool = False) -> dict:
     """`beamimpact study` as a call (the same library function, study::run_study): runs the
     study file's every point (its scene over a grid or Latin hypercube of parameters, each
-    method compared with the point's reference; format: verification/studies/*.toml) and writes
+    method compared with the point's reference; format: ``verification/studies/*.toml``) and writes
     study.csv, study.json, study.md, timing.csv and timing.json under `out`, the points' records
     under `out`/points (a study interrupted in the same `out` with the same input is resumed;
     `fresh=True` runs every point again, as `--fresh`). keep_runs=True keeps every run's files

@@ -23,7 +23,7 @@ namespace {
 }
 
 void check_tables(const Scene& scene) {
-  for (const auto& [table, text] : scene.method_tables) {
+  for (const auto& [table, options] : scene.method_tables) {
     bool known = false;
     std::string tables;
     for (const Method& m : methods()) {

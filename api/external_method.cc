@@ -1,5 +1,6 @@
 #include <api/external_method.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -13,6 +14,7 @@
 #include <solver/scene/scene_io.hpp>
 #include <solver/util/InputError.hpp>
 #include <solver/util/Progress.hpp>
+#include <solver/util/RunLimit.hpp>
 #include <solver/util/write_file_atomic.hpp>
 
 namespace beamimpact {
@@ -105,7 +107,10 @@ SimulationResult run_external(const Method& m, const Scene& scene, const fs::pat
   }
   const fs::path log = out / "method.log";
   fs::remove(log, ec);
-  const ProcessResult p = spawn_and_wait(external_argv(m, run), log, 1e9);
+  // The program gets what is left of this thread's RunLimit (none: no limit) and its interruption.
+  const double budget = std::min(RunLimit::seconds_left(), 1e9);
+  const ProcessResult p = spawn_and_wait(external_argv(m, run), log, budget, RunLimit::interruption());
+  if (p.timed_out || (RunLimit::interruption() && RunLimit::interruption()())) RunLimit::check();
   const bool ok = p.error.empty() && p.exit_code == 0;
   if (!ok || Progress::enabled()) {  // quiet on success, as an in-process run
     std::ifstream text(log);

@@ -1,5 +1,7 @@
 #include <api/run.hpp>
 
+#include <cstdint>
+
 #include <fmt/format.h>
 
 #include <api/accepts.hpp>
@@ -7,6 +9,7 @@
 #include <api/registry.hpp>
 #include <solver/record/FieldWriter.hpp>
 #include <solver/record/output_files.hpp>
+#include <solver/scene/Override.hpp>
 #include <solver/scene/run_cost.hpp>
 #include <solver/scene/scene_io.hpp>
 #include <solver/util/InputError.hpp>
@@ -90,6 +93,24 @@ void check_threads(const std::optional<int>& threads, const std::string& file) {
         fmt::format("expected a whole number of threads 1..{}, got {}", thread_limit(), *threads));
 }
 
+/// The run's step as an override of time.dt, recorded as `--set time.dt=` with 17 digits would be
+/// (so that a run directory says the same whichever way the step was asked for).
+Override step_override(double dt, const std::string& file) {
+  if (!(dt > 0.0)) throw InputError(file, "--dt", fmt::format("expected a positive step (s), got {}", dt));
+  return make_override("time.dt", toml::value<double>(dt), fmt::format("{:.17g}", dt));
+}
+
+/// The element counts of the file's bodies times `factor`, one override of bodies[i].elements each.
+std::vector<Override> mesh_overrides(const Scene& file, int factor) {
+  std::vector<Override> out;
+  for (std::size_t i = 0; i < file.bodies.size(); ++i) {
+    const std::int64_t n = std::int64_t{file.bodies[i].elements} * factor;
+    out.push_back(make_override(fmt::format("bodies[{}].elements", i), toml::value<std::int64_t>(n),
+                                std::to_string(n)));
+  }
+  return out;
+}
+
 }  // namespace
 
 SimulationResult run(const Scene& scene, std::string_view method_name, const RunOptions& options) {
@@ -107,24 +128,17 @@ SimulationResult run(const std::filesystem::path& scene_file, std::string_view m
   const OutputLock lock(options.out.value_or(std::filesystem::path()));  // the only writer of the directory
   if (options.out) remove_run_outputs(*options.out);                     // before anything can refuse
   const Method& m = method(method_name, scene_file.string(), "--method");
-  std::vector<std::string> set = options.set;
   check_threads(options.threads, scene_file.string());
-  if (options.dt) {
-    if (!(*options.dt > 0.0))
-      throw InputError(scene_file.string(), "--dt",
-                       fmt::format("expected a positive step (s), got {}", *options.dt));
-    set.push_back(fmt::format("time.dt={:.17g}", *options.dt));
-  }
+  std::vector<Override> edits = parse_overrides(options.set, scene_file.string());
+  if (options.dt) edits.push_back(step_override(*options.dt, scene_file.string()));
   // An in-process method refines by element overrides (recorded in summary.json), the file's
   // element counts times the factor, applied last; an external one gets the mesh as {mesh}.
   if (!options.mesh.empty() && m.in_process() && m.accepts.mesh_factor) {
     const int f = mesh_factor(options.mesh, scene_file.string(), m.name);
-    const Scene file = load_scene(scene_file);
-    for (std::size_t i = 0; i < file.bodies.size(); ++i)
-      set.push_back(fmt::format("bodies[{}].elements={}", i, file.bodies[i].elements * f));
-    return run_method(load_scene(scene_file, set), m, options, "");
+    for (Override& o : mesh_overrides(load_scene(scene_file), f)) edits.push_back(std::move(o));
+    return run_method(load_scene_with(scene_file, edits), m, options, "");
   }
-  return run_method(load_scene(scene_file, set), m, options, options.mesh);
+  return run_method(load_scene_with(scene_file, edits), m, options, options.mesh);
 }
 
 }  // namespace beamimpact

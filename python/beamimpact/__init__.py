@@ -1,6 +1,6 @@
 """beamimpact from Python: scenes, runs through the method registry, run directories, the
-compare command's norms, and the verify, score and conform commands, over the C++ library
-(beamimpact._core).
+compare command's norms, and the verify, sweep, study, score and conform commands, over the C++
+library (beamimpact._core).
 
     import beamimpact
     scene = beamimpact.load_scene("s1_central")   # a shipped scene by name, or any scene file
@@ -15,10 +15,13 @@ Bad input raises beamimpact.InputError with the CLI's message (file, key, what w
 """
 from __future__ import annotations
 
+import contextlib
+import copy
 import json
 import os
-import shutil
+import re
 import sys
+import tempfile
 import warnings
 from pathlib import Path
 from typing import Any, Callable, Iterable, Mapping, Optional, Sequence, Union
@@ -30,7 +33,7 @@ from ._core import InputError
 from .fields import read_fields
 
 __all__ = ["InputError", "Scene", "Run", "load_scene", "run", "read_run", "read_fields", "compare",
-           "norm", "sweep", "verify", "score", "conform", "load_methods", "methods", "scenes", "data_root"]
+           "norm", "sweep", "verify", "study", "score", "conform", "load_methods", "methods", "scenes", "data_root"]
 __version__ = _core.__version__
 
 #: A scene given as a loaded Scene or as the path of its TOML file.
@@ -59,7 +62,9 @@ def _plain(o):
 
 
 def _toml_value(v):
-    """A --set value as TOML: shortest round-trip numbers, true/false, quoted strings."""
+    """The text a run records for an override value (summary.json "overrides"), as --set would
+    show it: shortest round-trip numbers, true/false, quoted strings. The value itself reaches the
+    scene as a typed TOML value, not through this text."""
     if isinstance(v, (np.generic, np.ndarray)):
         v = _plain(v)  # a numpy repr is no TOML number
     if isinstance(v, bool):
@@ -77,23 +82,25 @@ class Scene:
     those of the C++ Scene.
     """
 
-    def __init__(self, source: Union[str, os.PathLike], overrides: Iterable[str] = (), *, _is_dict: bool = False):
+    def __init__(self, source: Union[str, os.PathLike, Mapping[str, Any]], overrides: Iterable = (), *,
+                 _is_dict: bool = False):
+        # overrides: "key=value" text (as --set) or (key, value, recorded text) triples.
         self._source, self._is_dict = source, _is_dict
         self._overrides = list(overrides)
         if _is_dict:
             self._scene = _core.load_scene_dict(source, "<dict>", self._overrides)
         else:
             self._source = source = _core.resolve_scene(os.fspath(source))
-            self._scene = _core.load_scene(str(source), self._overrides)
+            self._scene = _core.load_scene_with(str(source), self._overrides)
 
     @classmethod
     def from_dict(cls, tables: Mapping[str, Any]) -> Scene:
         """A scene from a dict of its TOML tables ({"name": ..., "time": {...}, "bodies": [...]})."""
-        return cls(json.dumps(tables, default=_plain), _is_dict=True)
+        return cls(copy.deepcopy(dict(tables)), _is_dict=True)  # later edits of `tables` do not reach it
 
     def with_overrides(self, settings: Optional[Overrides]) -> Scene:
         """This scene with more overrides ({"time.dt": 0.005} as --set time.dt=0.005)."""
-        extra = [f"{k}={_toml_value(v)}" for k, v in (settings or {}).items()]
+        extra = [(k, v, _toml_value(v)) for k, v in (settings or {}).items()]
         return Scene(self._source, self._overrides + extra, _is_dict=self._is_dict)
 
     def with_set(self, settings: Optional[Overrides]) -> Scene:
@@ -120,10 +127,13 @@ def load_scene(path: Union[str, os.PathLike], overrides: Optional[Overrides] = N
 
 class Run:
     """One run: `summary` (the summary.json dict) and `history` (history.csv's columns as numpy
-    arrays, or a pandas DataFrame when pandas is installed; `columns` is always the dict)."""
+    arrays, or a pandas DataFrame when pandas is installed; `columns` is always the dict);
+    `directory`: its run directory (read_run(), run(out=...)), or None when it has none."""
 
-    def __init__(self, summary: dict, columns: dict[str, np.ndarray], label: str):
+    def __init__(self, summary: dict, columns: dict[str, np.ndarray], label: str,
+                 directory: Optional[Union[str, os.PathLike]] = None):
         self.summary, self.columns, self.label = summary, columns, label
+        self.directory = Path(directory) if directory is not None else None
         try:
             import pandas
             self.history = pandas.DataFrame(columns)
@@ -173,9 +183,7 @@ def run(scene: SceneLike, method: str = "paper", overrides: Optional[Overrides] 
     """
     s = _as_scene(scene)
     settings = dict(_overrides(overrides, set, "run") or {})
-    if threads is not None and (isinstance(threads, bool) or not isinstance(threads, int)
-                                or not 1 <= threads <= _core.max_threads):
-        raise InputError(f"threads: expected a whole number of threads 1..{_core.max_threads}, got {threads!r}")
+    _check_threads(threads)
     if not history:
         settings["output.history"] = False
     if fields:
@@ -189,13 +197,20 @@ def run(scene: SceneLike, method: str = "paper", overrides: Optional[Overrides] 
         if isinstance(callback, _Progress):
             callback.close()
     columns = {n: rows[:, i] for i, n in enumerate(names)}
-    return Run(summary, columns, f"{method}:{s.name}")
+    return Run(summary, columns, f"{method}:{s.name}", out)
+
+
+def _check_threads(threads: Optional[int]) -> None:
+    """InputError naming `threads` unless it is None or a whole number 1..max_threads."""
+    if threads is not None and (isinstance(threads, bool) or not isinstance(threads, int)
+                                or not 1 <= threads <= _core.max_threads):
+        raise InputError(f"threads: expected a whole number of threads 1..{_core.max_threads}, got {threads!r}")
 
 
 def read_run(directory: Union[str, os.PathLike]) -> Run:
     """Reads a run directory written by `beamimpact run` (or run(out=...)) as a Run."""
     summary, columns = _core.read_run(str(directory))
-    return Run(summary, columns, str(directory))
+    return Run(summary, columns, str(directory), directory)
 
 
 def _stored(r):
@@ -221,41 +236,103 @@ def norm(comparison: dict, name: str) -> Optional[float]:
     raise KeyError(f"no norm {name!r} in the comparison")
 
 
-def sweep(scene: SceneLike, dts: Sequence[float], method: str = "paper",
-          reference: Optional[Union[Run, str, os.PathLike]] = None, overrides: Optional[Overrides] = None,
-          progress: Union[bool, ProgressFn] = False, *, set: Optional[Overrides] = None) -> list[dict]:
-    """A dt ladder: runs `scene` at each dt (s) and compares each run with `reference` (a Run,
-    a run directory, or a method name run at the scene's own settings; default: the smallest
-    dt's run, whose own errors are then 0 - unlike `beamimpact sweep`'s reference "self", a
-    separate run at the finest dt / 4). Returns one dict per dt: dt, steps, wall_seconds and
-    the norms `beamimpact sweep` tabulates."""
-    s = _as_scene(scene)
-    overrides = _overrides(overrides, set, "sweep")
+@contextlib.contextmanager
+def _output_folder(out: Optional[Union[str, os.PathLike]], command: str):
+    """`out` as a Path, or a temporary folder removed when the block ends."""
+    if out is not None:
+        yield Path(out)
+        return
+    with tempfile.TemporaryDirectory(prefix=f"beamimpact-{command}-") as folder:
+        yield Path(folder)
+
+
+def _scene_file(scene: SceneLike, overrides: Optional[Overrides], folder: Path) -> str:
+    """The file a command reads for `scene`: the scene's own file when it has no overrides, else
+    the scene with its overrides (or a dict scene) written as TOML to folder/scene/NAME.toml."""
+    if not isinstance(scene, Scene) and not overrides:
+        return _core.resolve_scene(os.fspath(scene))
+    s = _as_scene(scene)  # loaded and validated here: a bad scene or override raises InputError now
     if overrides:
         s = s.with_overrides(overrides)
-    runs = [run(s, method, {"time.dt": dt}, progress=progress) for dt in dts]
+    if not s._is_dict and not s._overrides:
+        return os.fspath(s._source)
+    stem = Path(s._source).stem if not s._is_dict else (re.sub(r"[^A-Za-z0-9_.-]", "_", s.name) or "scene")
+    path = folder / "scene" / f"{stem}.toml"
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(_core.scene_toml(s._source, s._is_dict, s._overrides))
+    return os.fspath(path)
+
+
+def _sweep_reference(reference: Optional[Union[Run, str, os.PathLike]]) -> str:
+    """The sweep's --reference: "self", a method name, or a run directory (a Run's own)."""
     if reference is None:
-        ref = runs[min(range(len(dts)), key=lambda i: dts[i])]
-    elif isinstance(reference, str) and reference in methods():
-        ref = run(s, reference, progress=progress)
-    else:
-        ref = reference
-    table = []
-    for dt, r in zip(dts, runs):
-        c = compare(r, ref)
-        row = {"dt": dt, "steps": r.summary["steps"], "wall_seconds": r.summary["wall_seconds"]}
-        row.update({n: norm(c, n) for n in _core.sweep_norms() if any(x["name"] == n for x in c["norms"])})
-        table.append(row)
-    return table
+        return "self"
+    if isinstance(reference, Run):
+        if reference.directory is None:
+            raise InputError("reference: a Run without a run directory (give run(..., out=DIR) or read_run(DIR)), "
+                             "or \"self\", a method name or a run directory")
+        return os.fspath(reference.directory)
+    return os.fspath(reference)
+
+
+def sweep(scene: SceneLike, dts: Optional[Sequence[float]] = None, method: str = "paper",
+          reference: Optional[Union[Run, str, os.PathLike]] = None, overrides: Optional[Overrides] = None,
+          progress: Any = None, *, set: Optional[Overrides] = None, fractions: Sequence[float] = (),
+          meshes: Sequence[Union[int, str]] = (), out: Optional[Union[str, os.PathLike]] = None,
+          jobs: int = 1, timeout: float = 3600.0, threads: Optional[int] = None,
+          exe: Optional[Union[str, os.PathLike]] = None) -> list[dict]:
+    """`beamimpact sweep` as a call (the same library function, verification::sweep): runs
+    `scene` with `method` at each dt in `dts` (s; or, for scenes with dt = "auto", at each
+    fraction of the critical step in `fractions`) on each of `meshes` (element multipliers or
+    presets; default the scene's), compares every run with one reference and writes runs/,
+    sweep.md, sweep.csv and sweep.json under `out` (default: a temporary folder, removed when the
+    call returns).
+
+    reference: None or "self" (the method at the finest dt / 4 on the finest mesh: a separate
+    run, so the finest point's errors are not 0), a method name (run at the scene's own
+    settings), a run directory, or a Run with a directory (read_run(), run(out=...); a Run
+    without one raises InputError naming `reference`).
+    overrides: {"time.dt": 0.005} as --set (`set` is its deprecated name): a scene with overrides,
+    or a dict scene (Scene.from_dict), is written as TOML to `out`/scene/NAME.toml and that
+    file is swept (its runs record no overrides: they are in the file).
+    jobs: runs in parallel; timeout: s per run; threads: the paper integrator's threads of each
+    run (None: each run's default); exe: a `beamimpact` program each run is a process of
+    (`--isolate`); default every run goes in this process. The GIL is released meanwhile.
+    progress: not taken: as the command does, the sweep prints one line on stderr per finished
+    run (its runs' own progress is silenced); giving it warns (DeprecationWarning).
+
+    Returns one dict per point, in the order dts x meshes: "dt" (s, as asked; for `fractions`
+    "fraction" and "dt", the step used, s, or None), "mesh" (when `meshes` are given), "steps",
+    "wall_seconds" (s, the method's own time), the norms `beamimpact sweep` tabulates
+    (_core.sweep_norms()) that the comparison
+    has (sweep.json's numbers), and "status" and "message" for a point that did not run
+    ("not applicable", "failed", ...). Bad options raise InputError, as the command exits 2."""
+    overrides = _overrides(overrides, set, "sweep")
+    if progress is not None:
+        warnings.warn("beamimpact.sweep(progress=...) is ignored: the sweep prints one line per finished run "
+                      "on stderr, as the command does", DeprecationWarning, stacklevel=2)
+    if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1:
+        raise InputError(f"jobs: expected a whole number of runs in parallel >= 1, got {jobs!r}")
+    _check_threads(threads)
+    o = _core.SweepOptions()
+    o.method, o.reference = method, _sweep_reference(reference)
+    o.dts = [float(d) for d in (dts if dts is not None else ())]
+    o.fractions = [float(f) for f in fractions]
+    o.meshes = [str(m) for m in meshes]
+    o.jobs, o.timeout, o.threads = jobs, float(timeout), threads or 0
+    o.exe = os.fspath(exe) if exe is not None else ""
+    with _output_folder(out, "sweep") as folder:
+        o.scene, o.out = _scene_file(scene, overrides, folder), os.fspath(folder)
+        return _core.sweep(o)
 
 
 def verify(matrix: Union[str, os.PathLike] = "verification/matrix.toml", out: Union[str, os.PathLike] = "out/verify", *,
            tier: str = "quick", only: str = "", jobs: int = 1, exe: Optional[Union[str, os.PathLike]] = None,
            fresh: bool = False) -> dict:
     """`beamimpact verify` as a call: runs the matrix's `tier` (items whose name contains `only`)
-    with `jobs` runs in parallel, each a process of the `beamimpact` executable `exe` (default
-    $BEAMIMPACT_EXE, else the program installed with this package, else `beamimpact` on PATH),
-    writes runs/, junit.xml, norms.json and report.md
+    with `jobs` runs in parallel, each in this process (the library's beamimpact::run; an outside
+    method's program is its own process), or, with `exe` (a `beamimpact` program), each as a
+    process of it (`--isolate`), writes runs/, junit.xml, norms.json and report.md
     under `out`, and returns norms.json's dict: result["verdict"] is "PASS" or "FAIL" by the
     library's one pass rule (complete, no gate failed); each gate has "passed" and "margin".
     A run recorded as finished under `out`/runs with the same input (an interrupted verify's) is
@@ -263,17 +340,28 @@ def verify(matrix: Union[str, os.PathLike] = "verification/matrix.toml", out: Un
     (`--fresh`). A relative `matrix` that does not exist here is the shipped one (data_root()),
     so the default works from any folder."""
     return _core.verify(str(_core.resolve_data_file(os.fspath(matrix))), str(out), tier, only, jobs,
-                        _exe("verify", exe), fresh)
+                        os.fspath(exe) if exe is not None else "", fresh)
 
 
-def _exe(command: str, exe: Optional[Union[str, os.PathLike]]) -> str:
-    """The beamimpact program a command's runs start: `exe`, else $BEAMIMPACT_EXE, else the program
-    installed with this package, else `beamimpact` on PATH."""
-    exe = exe or os.environ.get("BEAMIMPACT_EXE") or _program() or shutil.which("beamimpact")
-    if not exe:
-        raise FileNotFoundError(f"{command}: no beamimpact program found beside this package nor on PATH "
-                                "(pass exe= or set BEAMIMPACT_EXE)")
-    return str(exe)
+def study(file: Union[str, os.PathLike], out: Union[str, os.PathLike], *, keep_runs: bool = False,
+          fresh: bool = False) -> dict:
+    """`beamimpact study` as a call (the same library function, study::run_study): runs the
+    study file's every point (its scene over a grid or Latin hypercube of parameters, each
+    method compared with the point's reference; format: ``verification/studies/*.toml``) and writes
+    study.csv, study.json, study.md, timing.csv and timing.json under `out`, the points' records
+    under `out`/points (a study interrupted in the same `out` with the same input is resumed;
+    `fresh=True` runs every point again, as `--fresh`). keep_runs=True keeps every run's files
+    under `out`/runs (`--keep-runs`). A relative `file` that does not exist here is looked for
+    under data_root(). One line per finished point goes to stderr; the GIL is released meanwhile.
+
+    Returns study.json's dict: the study's definition and "cases", one per point and method
+    ("parameters", "method", "status", "steps", "dt" in s, "norms" by name, "energy_growth",
+    "broke"); it has no timing field (timing.json has: s). Bad files raise InputError naming the
+    file and key, as the command exits 2."""
+    o = _core.StudyOptions()
+    o.file = _core.resolve_data_file(os.fspath(file))
+    o.out, o.keep_runs, o.fresh = os.fspath(out), bool(keep_runs), bool(fresh)
+    return _core.study(o)
 
 
 def load_methods(*files: Union[str, os.PathLike]) -> None:
@@ -296,8 +384,8 @@ def score(method: Union[str, Sequence[str]], out: Optional[Union[str, os.PathLik
     ("converged" or "matrix"), `ladder` (False: --no-ladder), `rungs`, `cards` (default the shipped
     verification/cards.toml), `cache` (the reference cache; default as the command's), `baseline`
     (an earlier scorecard.json: the ratchet), `jobs`, `timeout` (s per run); `methods`: methods
-    files to read first (load_methods). Each run is a process of the `beamimpact` program `exe`
-    (found as verify() finds it). No page is rendered (reports/render.py scorecard DIR makes it).
+    files to read first (load_methods). Each run goes in this process, or, with `exe` (a
+    `beamimpact` program), is a process of it, as verify() does. No page is rendered (reports/render.py scorecard DIR makes it).
 
     Returns {"passed": bool, "exit_code": the command's (0, 1, or 128 + a signal), "command",
     "cache" and "paths" (the scorecard.json files written; pathlib.Path), "scorecards": {name:
@@ -312,7 +400,8 @@ def score(method: Union[str, Sequence[str]], out: Optional[Union[str, os.PathLik
     o.cache = os.fspath(cache) if cache is not None else ""
     o.baseline = os.fspath(baseline) if baseline is not None else ""
     o.jobs, o.timeout = jobs, float(timeout)
-    return _core.score(o, _exe("score", exe))
+    o.exe = os.fspath(exe) if exe is not None else ""
+    return _core.score(o)
 
 
 def conform(method: str, out: Optional[Union[str, os.PathLike]] = None, *, scenes: Sequence[str] = (),
@@ -330,13 +419,6 @@ def conform(method: str, out: Optional[Union[str, os.PathLike]] = None, *, scene
     o.out = os.fspath(out) if out is not None else ""
     o.scenes, o.timeout = list(scenes), float(timeout)
     return _core.conform(o)
-
-
-def _program() -> Optional[str]:
-    """The beamimpact program installed with this package (bin/ of its environment) or of the
-    build tree it was built in, else None."""
-    p = _core.program_path()
-    return str(p) if p.name == "beamimpact" and os.access(p, os.X_OK) else None
 
 
 def data_root() -> Optional[Path]:

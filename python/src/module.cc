@@ -3,6 +3,9 @@
 /// runs through the method registry, reading run directories and the compare command's norms,
 /// each a thin call into the C++ library. The package's __init__.py builds the Python API on it.
 
+#include <fstream>
+#include <sstream>
+
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -16,6 +19,7 @@
 #include <beamimpact/version.hpp>
 #include <solver/record/ContactStats.hpp>
 #include <solver/record/output_files.hpp>
+#include <solver/scene/Override.hpp>
 #include <solver/scene/scene_io.hpp>
 #include <solver/schema/output_schema.hpp>
 #include <solver/util/InputError.hpp>
@@ -25,6 +29,7 @@
 #include <verification/matrix/score.hpp>
 #include <verification/matrix/sweep.hpp>
 #include <verification/matrix/verify.hpp>
+#include <verification/study/run_study.hpp>
 
 #include "dict_to_toml.hpp"
 
@@ -146,8 +151,8 @@ py::object compare(const std::map<std::string, std::vector<double>>& a, const py
   o.window = window;
   o.merge_gap = merge_gap;
   o.threshold = threshold;
-  return to_python(
-      verification::compare_runs(stored(a, summary_a, label_a), stored(b, summary_b, label_b), o).to_json());
+  const StoredRun run = stored(a, summary_a, label_a), reference = stored(b, summary_b, label_b);
+  return to_python(verification::compare_runs(run.view(), reference.view(), o).to_json());
 }
 
 /// The verify command (verification::verify) with the GIL released; writes the reports, returns
@@ -155,6 +160,7 @@ py::object compare(const std::map<std::string, std::vector<double>>& a, const py
 py::object verify(const std::filesystem::path& matrix, const std::filesystem::path& out,
                   const std::string& tier, const std::string& only, int jobs,
                   const std::filesystem::path& exe, bool fresh) {
+  // exe "": every run in this process; a program: each run a process of it (isolation).
   verification::VerifyOptions o;
   o.matrix = matrix;
   o.out = out;
@@ -162,10 +168,11 @@ py::object verify(const std::filesystem::path& matrix, const std::filesystem::pa
   o.only = only;
   o.jobs = jobs;
   o.fresh = fresh;
+  o.exe = exe;
   std::optional<verification::VerifyResult> r;
   {
     py::gil_scoped_release release;
-    r = verification::verify(o, exe);
+    r = verification::verify(o);
   }
   verification::write_verify_reports(o, *r);
   return to_python(verification::norms_json(r->context, r->items));
@@ -174,12 +181,12 @@ py::object verify(const std::filesystem::path& matrix, const std::filesystem::pa
 /// The score command (verification::score) with the GIL released; writes each scorecard.json and
 /// returns the verdict, the exit code, the command, the cache, the files written and each method's
 /// scorecard (scorecard.json's dict, with its ratchet against the baseline when one was given).
-py::dict score(const verification::ScoreOptions& o, const std::filesystem::path& exe) {
+py::dict score(const verification::ScoreOptions& o) {
   verification::ScoreResult r;
   std::vector<std::filesystem::path> written;
   {
     py::gil_scoped_release release;
-    r = verification::score(o, exe);
+    r = *verification::score(o);  // one rank in this process: always a result
     written = verification::write_score_reports(o, r);
   }
   py::dict cards;
@@ -214,6 +221,94 @@ py::object conform(const verification::ConformOptions& o) {
   py::dict d = to_python(j);
   d["paths"] = written;
   return d;
+}
+
+/// One sweep point as Python's sweep() returns it: the step asked for (dt, s; or the fraction and
+/// the step used, s), the mesh when the sweep has meshes, steps, the method's wall time (s), the
+/// sweep command's norms the comparison has, and the outcome's status and message when the run did
+/// not finish.
+py::dict sweep_row(const verification::SweepOptions& o, const verification::SweepPoint& p,
+                   std::size_t index) {
+  const std::size_t meshes = o.meshes.empty() ? 1 : o.meshes.size();  // points: steps x meshes
+  const jobs::JobOutcome& out = p.outcome;
+  py::dict row;
+  if (o.fractions.empty()) {
+    row["dt"] = o.dts.at(index / meshes);
+  } else {
+    row["fraction"] = o.fractions.at(index / meshes);
+    row["dt"] = out.dt > 0.0 ? py::object(py::float_(out.dt)) : py::object(py::none());
+  }
+  if (!o.meshes.empty()) row["mesh"] = o.meshes[index % meshes];
+  row["steps"] = out.steps;
+  row["wall_seconds"] = out.solver_seconds;
+  if (p.comparison)
+    for (const std::string& n : verification::sweep_norms())
+      if (const verification::Norm* x = p.comparison->find(n))
+        row[py::str(n)] = x->value ? py::object(py::float_(*x->value)) : py::object(py::none());
+  if (out.status != jobs::JobOutcome::Status::kOk) {
+    row["status"] = jobs::to_string(out.status);
+    row["message"] = out.message;
+  }
+  return row;
+}
+
+/// The sweep command (verification::sweep) with the GIL released; writes sweep.md, sweep.csv and
+/// sweep.json to o.out and returns one dict per point (sweep_row), in the order dts x meshes.
+py::list sweep(const verification::SweepOptions& o) {
+  verification::SweepResult r;
+  {
+    py::gil_scoped_release release;
+    r = *verification::sweep(o);  // one rank in this process: always a result
+    verification::write_sweep(o, r);
+  }
+  py::list rows;
+  for (std::size_t i = 0; i < r.points.size(); ++i) rows.append(sweep_row(o, r.points[i], i));
+  return rows;
+}
+
+/// The TOML text of a Python scene: its file's tables (or the dict's) with its overrides put in as
+/// the scene loader puts them (a step in seconds drops the fraction of dt = "auto"), for the
+/// commands that read a scene file.
+std::string scene_toml_of(const py::object& source, bool is_dict, const py::list& overrides) {
+  const std::string label = is_dict ? "<dict>" : py::str(source).cast<std::string>();
+  toml::table root;
+  if (is_dict) {
+    root = table_from_dict(source.cast<py::dict>(), label);
+  } else {
+    std::ifstream in(label, std::ios::binary);
+    if (!in) throw InputError(label, "", "cannot open the scene file");
+    std::stringstream text;
+    text << in.rdbuf();
+    try {
+      root = toml::parse(text.str(), label);
+    } catch (const toml::parse_error& e) {  // changed since the Scene was loaded
+      throw InputError(label, "", std::string("TOML syntax error: ") + std::string(e.description()));
+    }
+  }
+  bool step = false, fraction = false;
+  for (const Override& o : overrides_from_python(overrides, label)) {
+    apply_override(root, label, o);
+    step = step || o.key == "time.dt";
+    fraction = fraction || o.key == "time.fraction";
+  }
+  if (toml::table* time = root["time"].as_table(); step && !fraction && time && (*time)["dt"].is_number())
+    time->erase("fraction");
+  std::ostringstream os;
+  os << root << "\n";
+  return os.str();
+}
+
+/// The study command (study::run_study) with the GIL released; writes its tables to o.out and
+/// returns study.json's dict.
+py::object run_study(const study::StudyOptions& o) {
+  nlohmann::json j;
+  {
+    py::gil_scoped_release release;
+    const std::optional<study::StudyResult> r = study::run_study(o);  // one rank: always a result
+    study::write_study_reports(o, *r);
+    j = study::study_json(*r, kVersion);
+  }
+  return to_python(j);
 }
 
 /// One contact's statistics from its samples by ContactStats (the rule of every C++ method).
@@ -251,13 +346,15 @@ void add_protocol(py::module_& m) {
       .def_readwrite("baseline", &verification::ScoreOptions::baseline)
       .def_readwrite("jobs", &verification::ScoreOptions::jobs)
       .def_readwrite("timeout", &verification::ScoreOptions::timeout)
+      .def_readwrite("exe", &verification::ScoreOptions::exe)
       .def_readwrite("sets", &verification::ScoreOptions::sets)
       .def_readwrite("scenes", &verification::ScoreOptions::scenes)
       .def_readwrite("references", &verification::ScoreOptions::references)
       .def_readwrite("ladder", &verification::ScoreOptions::ladder)
       .def_readwrite("rungs", &verification::ScoreOptions::rungs);
-  m.def("score", &score, py::arg("options"), py::arg("exe"),
-        "The score command as a library call (runs started with exe); writes each scorecard.json");
+  m.def("score", &score, py::arg("options"),
+        "The score command as a library call (runs in this process unless options.exe isolates them); "
+        "writes each scorecard.json");
   py::class_<verification::ConformOptions>(m, "ConformOptions", "verification::ConformOptions (conform.hpp)")
       .def(py::init<>())
       .def_readwrite("method", &verification::ConformOptions::method)
@@ -270,16 +367,37 @@ void add_protocol(py::module_& m) {
         "Adds a methods file's external methods to the registry (as --methods FILE)");
 }
 
-}  // namespace
-}  // namespace beamimpact::python
+/// The sweep and study commands (sweep(), run_study()) and their options.
+void add_sweep_and_study(py::module_& m) {
+  py::class_<verification::SweepOptions>(m, "SweepOptions", "verification::SweepOptions (sweep.hpp)")
+      .def(py::init<>())
+      .def_readwrite("scene", &verification::SweepOptions::scene)
+      .def_readwrite("method", &verification::SweepOptions::method)
+      .def_readwrite("dts", &verification::SweepOptions::dts)
+      .def_readwrite("fractions", &verification::SweepOptions::fractions)
+      .def_readwrite("meshes", &verification::SweepOptions::meshes)
+      .def_readwrite("reference", &verification::SweepOptions::reference)
+      .def_readwrite("out", &verification::SweepOptions::out)
+      .def_readwrite("jobs", &verification::SweepOptions::jobs)
+      .def_readwrite("timeout", &verification::SweepOptions::timeout)
+      .def_readwrite("threads", &verification::SweepOptions::threads)
+      .def_readwrite("exe", &verification::SweepOptions::exe);
+  m.def("sweep", &sweep, py::arg("options"),
+        "The sweep command as a library call; writes sweep.md, sweep.csv and sweep.json, returns one "
+        "dict per point");
+  py::class_<study::StudyOptions>(m, "StudyOptions", "study::StudyOptions (run_study.hpp)")
+      .def(py::init<>())
+      .def_readwrite("file", &study::StudyOptions::file)
+      .def_readwrite("out", &study::StudyOptions::out)
+      .def_readwrite("keep_runs", &study::StudyOptions::keep_runs)
+      .def_readwrite("fresh", &study::StudyOptions::fresh);
+  m.def("study", &run_study, py::arg("options"),
+        "The study command as a library call; writes study.csv, study.json, study.md and timing.*, "
+        "returns study.json's dict");
+}
 
-PYBIND11_MODULE(_core, m) {
-  using namespace beamimpact;
-  using namespace beamimpact::python;
-  m.doc() = "beamimpact's compiled core; use the package `beamimpact`, not this module";
-  py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
-  m.attr("__version__") = kVersion;
-
+/// The scene class and the loaders: a file (with --set text or typed overrides) or a dict.
+void add_scene(py::module_& m) {
   py::class_<Scene>(m, "_Scene")
       .def_readonly("name", &Scene::name)
       .def_readonly("file", &Scene::file)
@@ -299,12 +417,36 @@ PYBIND11_MODULE(_core, m) {
   m.def("load_scene", &load_scene, py::arg("path"), py::arg("overrides") = std::vector<std::string>{},
         "Loads and validates a scene file (raises InputError as the CLI reports it)");
   m.def(
-      "load_scene_dict",
-      [](const std::string& json_text, const std::string& label, const std::vector<std::string>& overrides) {
-        return load_scene_text(toml_from_json(json_text, label), label, overrides);
+      "load_scene_with",
+      [](const std::string& path, const py::list& overrides) {
+        return load_scene_with(path, overrides_from_python(overrides, path));
       },
-      py::arg("json_text"), py::arg("label"), py::arg("overrides") = std::vector<std::string>{},
-      "Loads a scene given as JSON text of the scene's tables (Scene.from_dict)");
+      py::arg("path"), py::arg("overrides"),
+      "Loads a scene file with overrides given as \"key=value\" text or (key, value, text) triples");
+  m.def("scene_toml", &scene_toml_of, py::arg("source"), py::arg("is_dict"), py::arg("overrides"),
+        "A scene (its file's path or its dict, with overrides as load_scene_with takes them) as TOML "
+        "text: the file the commands that take a scene file read");
+  m.def(
+      "load_scene_dict",
+      [](const py::dict& tables, const std::string& label, const py::list& overrides) {
+        return load_scene_table(table_from_dict(tables, label), label,
+                                overrides_from_python(overrides, label));
+      },
+      py::arg("tables"), py::arg("label"), py::arg("overrides") = py::list(),
+      "Loads a scene given as a dict of the scene's tables (Scene.from_dict), without TOML text");
+}
+
+}  // namespace
+}  // namespace beamimpact::python
+
+PYBIND11_MODULE(_core, m) {
+  using namespace beamimpact;
+  using namespace beamimpact::python;
+  m.doc() = "beamimpact's compiled core; use the package `beamimpact`, not this module";
+  py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
+  m.attr("__version__") = kVersion;
+
+  add_scene(m);
   m.attr("max_threads") = thread_limit();  // the largest `threads` a run takes (the registry's)
   m.def("run", &run_scene, py::arg("scene"), py::arg("method"), py::arg("out") = py::none(),
         py::arg("progress") = py::none(), py::arg("threads") = py::none(),
@@ -342,6 +484,7 @@ PYBIND11_MODULE(_core, m) {
         "The verify command as a library call (runs started with exe); writes its reports to out and "
         "returns norms.json's dict");
   add_protocol(m);
+  add_sweep_and_study(m);
   m.attr("merge_steps") = kMergeSteps;  // the default merge gap's open steps (ContactIntervals.hpp)
   m.def("default_merge_gap", &default_merge_gap, py::arg("step"),
         "s, the default merge gap of samples step s apart (solver/record/ContactIntervals.hpp)");

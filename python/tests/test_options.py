@@ -115,13 +115,41 @@ def test_sweep_method_and_reference_directory_equal_cli_sweep(tmp_path):
     as_run = beamimpact.sweep(S1, DTS, method="exact", reference=beamimpact.read_run(ref))
     strip = lambda rs: [{k: v for k, v in r.items() if k != "wall_seconds"} for r in rs]  # noqa: E731
     assert strip(as_run) == strip(rows)
+    # A Run written by run(out=...) is its directory too.
+    written = beamimpact.run(S1, "paper", {"time.dt": 0.005}, out=tmp_path / "written", progress=False)
+    assert strip(beamimpact.sweep(S1, DTS, method="exact", reference=written)) == strip(rows)
+
+
+def test_all_sweep_options_at_once_equal_cli_sweep(tmp_path):
+    # fractions (S4-45 has dt = "auto"), meshes, jobs, threads and exe (each run a process of the
+    # program, as --isolate) at once: the CLI's sweep.json numbers. Threads change no bit (the
+    # split sums are the one-thread sums), so they cannot show in the norms.
+    s4 = PAPER / "s4_oblique_45.toml"
+    cli("sweep", s4, "--fraction", "0.5,0.25", "--mesh", "1,2", "--jobs", 2, "--threads", 2, "--isolate",
+        "--out", tmp_path / "cli")
+    points = json.loads((tmp_path / "cli" / "sweep.json").read_text())["points"]
+    rows = beamimpact.sweep(s4, fractions=[0.5, 0.25], meshes=[1, 2], jobs=2, threads=2, exe=EXE,
+                            out=tmp_path / "py")
+    assert [(r["fraction"], r["mesh"]) for r in rows] == [(0.5, "1"), (0.5, "2"), (0.25, "1"), (0.25, "2")]
+    for row, point in zip(rows, points):
+        assert (row["mesh"], row["steps"]) == (point["mesh"], point["steps"])
+        assert row["dt"] == pytest.approx(float(point["dt"]), rel=1e-5)  # sweep.json prints 6 digits
+        norms = {n["name"]: n["value"] for n in point["comparison"]["norms"]}
+        for name in beamimpact._core.sweep_norms():
+            if name in norms:
+                assert row[name] == norms[name], (row["fraction"], row["mesh"], name)
+    assert rows[0]["steps"] < rows[2]["steps"] and rows[0]["impulse"] != rows[1]["impulse"]  # both bite
+    logs = [f.read_text() for f in (tmp_path / "py" / "runs").glob("*/run.log")]
+    assert len(logs) == 5 and all(" run " in log.splitlines()[0] and " --threads 2 " in log.splitlines()[0]
+                                  for log in logs)  # each a process of exe, with the threads asked for
 
 
 def test_sweep_set_equals_cli_runs_with_set(tmp_path):
-    # set = overrides of every run: the CLI's runs with the same --set, compared by `compare`.
+    # overrides of every run (the scene written with them to a file and that file swept): the
+    # CLI's runs with the same --set, compared by `compare`.
     ref = tmp_path / "ref"
     cli("run", S1, "--out", ref, "--quiet", "--method", "exact")
-    rows = beamimpact.sweep(S1, DTS, reference=str(ref), set={"bodies.B.elements": 20})
+    rows = beamimpact.sweep(S1, DTS, reference=str(ref), overrides={"bodies.B.elements": 20})
     for row, dt in zip(rows, DTS):
         out = tmp_path / f"dt{dt}"
         cli("run", S1, "--out", out, "--quiet", "--set", f"time.dt={dt}", "--set", "bodies.B.elements=20")

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <toml++/toml.h>
+
 namespace beamimpact {
 
 /// @brief A 2D point or vector (m, m/s, ...).
@@ -161,7 +163,7 @@ struct EffectOverrides {
 };
 
 /// @brief A whole scene, validated. Method-specific tables ([ida], [exact], ...) are kept as
-/// TOML text so that each method validates its own keys (see TableReader).
+/// parsed TOML tables so that each method validates its own keys (see TableReader).
 struct Scene {
   std::string file;    ///< path it was read from
   std::string sha256;  ///< of the file's bytes (before --set overrides)
@@ -180,8 +182,9 @@ struct Scene {
   /// @brief Legal input that is likely not what was meant, one sentence each naming the file and
   /// the key (a run lists them in summary.json "warnings" and on stderr).
   std::vector<std::string> warnings;
-  /// @brief Method tables ("ida", "exact", "paper", "fenicsx") serialised back to TOML.
-  std::map<std::string, std::string> method_tables;
+  /// @brief Method tables ("ida", "exact", "paper", "fenicsx") as the file gives them (with the
+  /// overrides applied), unread: each method reads its own (MethodOptions).
+  std::map<std::string, toml::table> method_tables;
 
   /// @brief Index of the body with this name, or -1.
   int body_index(const std::string& name) const;

@@ -216,10 +216,11 @@ void TableReader::finish() const {
 
 MethodOptions::MethodOptions(const Scene& scene, const std::string& method,
                              std::map<std::string, std::string>* assumed)
-    : table_([&] {
-        auto it = scene.method_tables.find(method);
-        return it == scene.method_tables.end() ? toml::table{} : toml::parse(it->second);
-      }()),
-      reader_(table_, scene.file, method, assumed) {}
+    : reader_(
+          [&]() -> const toml::table& {
+            const auto it = scene.method_tables.find(method);
+            return it == scene.method_tables.end() ? empty_ : it->second;
+          }(),
+          scene.file, method, assumed) {}
 
 }  // namespace beamimpact

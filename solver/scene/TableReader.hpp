@@ -93,16 +93,20 @@ class TableReader {
 };
 
 /// @brief A reader over a method's own table ("ida", "exact", ...) of the scene; an absent
-/// table reads as empty. Keep the returned object alive while reading (it owns the table).
+/// table reads as empty. It reads the scene's table in place: keep the scene alive while reading.
 class MethodOptions {
  public:
-  /// @brief Parses scene.method_tables[method]; assumed defaults go to `assumed`.
+  /// @brief Reads scene.method_tables[method]; assumed defaults go to `assumed`.
+  /// @param scene the scene whose table is read; @param method the table's name ("ida")
+  /// @param assumed receives "method.key" -> default for every default used (may be null)
   MethodOptions(const Scene& scene, const std::string& method, std::map<std::string, std::string>* assumed);
+  MethodOptions(const MethodOptions&) = delete;
+  MethodOptions& operator=(const MethodOptions&) = delete;
   /// @brief The reader; call finish() on it after the last read.
   TableReader& reader() { return reader_; }
 
  private:
-  toml::table table_;
+  toml::table empty_;  ///< read when the scene has no such table
   TableReader reader_;
 };
 

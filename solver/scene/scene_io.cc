@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include <solver/scene/Override.hpp>
 #include <solver/scene/TableReader.hpp>
 #include <solver/scene/beam_theory.hpp>
 #include <solver/scene/collinear.hpp>
@@ -24,71 +25,6 @@ namespace {
 /// The scene's own tables; every other top-level table is a method's options (checked against
 /// the registry when a method runs: api/accepts.hpp).
 const std::vector<std::string> kSceneTables = {"time", "model", "loads", "effects", "output"};
-
-// ---- --set overrides --------------------------------------------------------------------
-
-/// Splits "bodies[1].elements" / "bodies.B.elements" / "time.dt" into segments.
-std::vector<std::string> split_key(const std::string& key) {
-  std::vector<std::string> out;
-  std::string cur;
-  for (char c : key) {
-    if (c == '.' || c == '[') {
-      if (!cur.empty()) out.push_back(cur);
-      cur.clear();
-    } else if (c != ']') {
-      cur += c;
-    }
-  }
-  if (!cur.empty()) out.push_back(cur);
-  return out;
-}
-
-void apply_override(toml::table& root, const std::string& file, const std::string& assignment) {
-  const auto eq = assignment.find('=');
-  if (eq == std::string::npos || eq == 0)
-    throw InputError(file, assignment, "--set expects key=value (e.g. time.dt=0.005)");
-  const std::string key = assignment.substr(0, eq), text = assignment.substr(eq + 1);
-  const std::vector<std::string> seg = split_key(key);
-  // The value is TOML ("0.005", "[1, 0]", "true", "\"lumped\""); a bare word is a string.
-  toml::table parsed;
-  try {
-    parsed = toml::parse("v = " + text);
-  } catch (const toml::parse_error&) {
-    parsed = toml::table{{"v", text}};
-  }
-  toml::table* t = &root;
-  for (std::size_t i = 0; i + 1 < seg.size(); ++i) {
-    toml::node* next = t->get(seg[i]);
-    if (!next) {  // a new sub-table ([ida] options and the like)
-      t->insert_or_assign(seg[i], toml::table{});
-      next = t->get(seg[i]);
-    }
-    if (toml::array* arr = next->as_array()) {  // array of tables: an index or a body name
-      const std::string& sel = seg[++i];
-      toml::table* found = nullptr;
-      char* endp = nullptr;
-      const long idx = std::strtol(sel.c_str(), &endp, 10);
-      if (*endp == '\0' && idx >= 0 && static_cast<std::size_t>(idx) < arr->size()) {
-        found = arr->get(static_cast<std::size_t>(idx))->as_table();
-      } else {
-        for (auto& el : *arr)
-          if (auto* tb = el.as_table(); tb && tb->get("name") && tb->get("name")->value<std::string>() == sel)
-            found = tb;
-      }
-      if (!found)
-        throw InputError(
-            file, key,
-            "--set: no entry '" + sel + "' in '" + seg[i - 1] + "' (use an index from 0 or a body name)");
-      if (i + 1 == seg.size()) throw InputError(file, key, "--set: expected a key after '" + sel + "'");
-      t = found;
-      continue;
-    }
-    t = next->as_table();
-    if (!t) throw InputError(file, key, "--set: '" + seg[i] + "' is not a table");
-  }
-  if (seg.empty()) throw InputError(file, key, "--set: empty key");
-  t->insert_or_assign(seg.back(), *parsed.get("v"));
-}
 
 // ---- geometry checks --------------------------------------------------------------------
 
@@ -327,12 +263,12 @@ void drop_auto_fraction(toml::table& root, const Scene& sc) {
   time->erase("fraction");
 }
 
-/// @brief Applies the --set key=value overrides to root in order and records them in sc.
-void apply_overrides(toml::table& root, const std::vector<std::string>& overrides, Scene& sc) {
-  for (const std::string& o : overrides) {
+/// @brief Applies the overrides to root in order and records them in sc (the one place every
+/// override passes, --set text and typed edits alike).
+void apply_overrides(toml::table& root, const std::vector<Override>& overrides, Scene& sc) {
+  for (const Override& o : overrides) {
     apply_override(root, sc.file, o);
-    const auto eq = o.find('=');
-    sc.overrides[o.substr(0, eq)] = o.substr(eq + 1);
+    sc.overrides[o.key] = o.text;
   }
   drop_auto_fraction(root, sc);
 }
@@ -468,16 +404,14 @@ void read_effects(TableReader& top, Scene& sc) {
   r.finish();
 }
 
-/// @brief Keeps the method option tables ([paper], [ida], an external method's [name]) as TOML
-/// text for their methods.
+/// @brief Keeps the method option tables ([paper], [ida], an external method's [name]) as parsed
+/// tables for their methods.
 void keep_method_tables(const toml::table& root, TableReader& top, Scene& sc) {
   for (auto&& [k, node] : root) {
     const std::string key(k.str());
     if (!node.is_table() || std::count(kSceneTables.begin(), kSceneTables.end(), key)) continue;
     (void)top.raw(key);
-    std::ostringstream os;
-    os << *node.as_table();
-    sc.method_tables[key] = os.str();
+    sc.method_tables[key] = *node.as_table();
   }
 }
 
@@ -528,13 +462,8 @@ void check_whole_scene(const Scene& sc) {
   check_beam_theory(sc);
 }
 
-}  // namespace
-
-namespace {
-
-/// @brief Reads and validates the scene whose file, sha256 and text are given.
-Scene read_scene(Scene sc, const std::string& text, const std::vector<std::string>& overrides) {
-  toml::table root = parse_scene_text(text, sc);
+/// @brief Reads and validates the scene whose file and sha256 are given, from its parsed root.
+Scene read_scene(Scene sc, toml::table root, const std::vector<Override>& overrides) {
   apply_overrides(root, overrides, sc);
 
   TableReader top(root, sc.file, "", &sc.assumed);
@@ -552,13 +481,25 @@ Scene read_scene(Scene sc, const std::string& text, const std::vector<std::strin
   return sc;
 }
 
+/// @brief The file's parsed root; records its name and SHA-256 in sc.
+toml::table read_scene_root(const std::filesystem::path& path, Scene& sc) {
+  sc.file = path.string();
+  return parse_scene_text(read_scene_file(path, sc), sc);
+}
+
 }  // namespace
 
 Scene load_scene(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
   Scene sc;
-  sc.file = path.string();
-  const std::string text = read_scene_file(path, sc);
-  return read_scene(std::move(sc), text, overrides);
+  toml::table root = read_scene_root(path, sc);
+  std::vector<Override> parsed = parse_overrides(overrides, sc.file);
+  return read_scene(std::move(sc), std::move(root), parsed);
+}
+
+Scene load_scene_with(const std::filesystem::path& path, const std::vector<Override>& overrides) {
+  Scene sc;
+  toml::table root = read_scene_root(path, sc);
+  return read_scene(std::move(sc), std::move(root), overrides);
 }
 
 Scene load_scene_text(const std::string& text, const std::string& label,
@@ -566,14 +507,25 @@ Scene load_scene_text(const std::string& text, const std::string& label,
   Scene sc;
   sc.file = label;
   sc.sha256 = sha256_hex(text);
-  return read_scene(std::move(sc), text, overrides);
+  toml::table root = parse_scene_text(text, sc);
+  std::vector<Override> parsed = parse_overrides(overrides, sc.file);
+  return read_scene(std::move(sc), std::move(root), parsed);
+}
+
+Scene load_scene_table(toml::table root, const std::string& label, const std::vector<Override>& overrides) {
+  Scene sc;
+  sc.file = label;
+  std::ostringstream text;  // the bytes the scene has as a TOML file, for its scene_sha256
+  text << root << "\n";
+  sc.sha256 = sha256_hex(text.str());
+  return read_scene(std::move(sc), std::move(root), overrides);
 }
 
 std::string scene_toml(const Scene& scene) {
   Scene sc;
-  sc.file = scene.file;
-  toml::table root = parse_scene_text(read_scene_file(scene.file, sc), sc);
-  for (const auto& [key, value] : scene.overrides) apply_override(root, sc.file, key + "=" + value);
+  toml::table root = read_scene_root(scene.file, sc);
+  for (const auto& [key, value] : scene.overrides)
+    apply_override(root, sc.file, parse_override(key + "=" + value, sc.file));
   std::ostringstream os;
   os << root << "\n";
   return os.str();

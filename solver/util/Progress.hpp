@@ -7,6 +7,8 @@
 #include <functional>
 #include <string>
 
+#include <solver/util/RunLimit.hpp>
+
 namespace beamimpact {
 
 /// @brief Reports "label: 45% (t = 1.8 of 4 s)" while a run is long.
@@ -14,10 +16,14 @@ class Progress {
  public:
   /// @brief label: shown first; total: the value that means 100% (e.g. end time in s).
   Progress(std::string label, double total);
-  /// @brief Call often; cheap (checks the clock every 256 calls).
+  /// @brief Call often; cheap (checks the clock every 256 calls). Also where a run meets its
+  /// thread's RunLimit: throws RunStopped when the limit is reached.
   void update(double value) {
     ++updates_;
-    if ((++calls_ & 255u) == 0) report(value);
+    if ((++calls_ & 255u) == 0) {
+      RunLimit::check();
+      report(value);
+    }
   }
   /// @brief The line also shows the wall time per DOF-step so far (ns), counting one step per
   /// update() call: for loops that call update() once per time step of a `dofs`-DOF model.

@@ -13,7 +13,7 @@
 #include <solver/scene/scene_io.hpp>
 #include <solver/util/InputError.hpp>
 #include <solver/util/OutputLock.hpp>
-#include <verification/matrix/JobSpec.hpp>
+#include <verification/jobs/JobSpec.hpp>
 
 namespace beamimpact {
 namespace {
@@ -34,7 +34,7 @@ void export_scene(const ModelArgs& a) {
     throw InputError(a.scene, "--mesh-factor",
                      "expected an element multiplier 1..1000, got " + std::to_string(a.mesh_factor));
   std::vector<std::string> sets;
-  if (a.mesh_factor != 1) sets = verification::mesh_overrides(a.scene, a.mesh_factor);
+  if (a.mesh_factor != 1) sets = jobs::mesh_overrides(a.scene, a.mesh_factor);
   sets.insert(sets.end(), a.sets.begin(), a.sets.end());  // an explicit --set wins
   const Scene scene = load_scene(a.scene, sets);
   check_model_cost(scene);  // as `run` refuses it, before anything is allocated

@@ -9,11 +9,12 @@
 #include <fmt/format.h>
 
 #include <api/methods_file.hpp>
+#include <verification/jobs/interruption.hpp>
 #include <verification/matrix/conform.hpp>
-#include <verification/matrix/interruption.hpp>
 #include <verification/matrix/score.hpp>
 
 #include "CommandExit.hpp"
+#include "command_verification.hpp"
 #include "methods_option.hpp"
 #include "output_lock.hpp"
 #include "page.hpp"
@@ -87,8 +88,10 @@ void score_command(ScoreOptions o) {
   o.validate();  // before the output folder is locked (created)
   o.out = o.out_dir();
   const OutputLock lock = lock_output(o.out);
-  forward_interruptions();
-  const ScoreResult r = score(o, program_path());
+  jobs::forward_interruptions();
+  const std::optional<ScoreResult> ran = score(o);
+  if (!ran) return;  // an MPI worker rank: rank 0 judges and writes the scorecards
+  const ScoreResult& r = *ran;
   const std::vector<fs::path> written = write_score_reports(o, r);
   for (std::size_t i = 0; i < r.methods.size(); ++i) {
     const MethodScore& m = r.methods[i];
@@ -140,6 +143,7 @@ void add_protocol_commands(CLI::App& app) {
                 "The benchmark cards giving each scene's reference and tolerances (default "
                 "verification/cards.toml; docs/benchmark-cards.md)");
   s->add_option("--jobs", sa->jobs, "Runs in parallel")->capture_default_str()->check(job_count());
+  add_isolate_flag(s, sa->exe);
   s->add_option("--timeout", sa->timeout, "s per run (default 900)")->check(positive_seconds());
   s->add_option(
        "--sets", sa->sets,

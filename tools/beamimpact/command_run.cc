@@ -6,11 +6,14 @@
 #include <filesystem>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <api/registry.hpp>
 #include <api/run.hpp>
 #include <solver/record/FieldWriter.hpp>
+#include <solver/util/InputError.hpp>
 #include <solver/util/Progress.hpp>
+#include <solver/util/write_file_atomic.hpp>
 
 namespace beamimpact {
 namespace {
@@ -23,7 +26,19 @@ struct RunArgs {
   bool quiet = false;
   bool allow_long = false;
   bool fields = false;
+  std::string refusal;  // "" none
 };
+
+/// Writes a refusal (the InputError) to `file` as JSON {file, key, message}, for the job
+/// executor that started this run (verification/jobs/run_job.hpp); a file that cannot be written
+/// leaves the exit code 2 to say it.
+void write_refusal(const std::string& file, const InputError& e) {
+  try {
+    write_file_atomic(
+        file, nlohmann::json{{"file", e.file()}, {"key", e.key()}, {"message", e.what()}}.dump() + "\n");
+  } catch (const std::exception&) {
+  }
+}
 
 void print_result(const SimulationResult& r, const std::string& out) {
   fmt::print("{} run: {} steps, dt = {:.6g} s (critical {:.6g} s), {:.3f} s wall\n", r.method, r.steps, r.dt,
@@ -57,7 +72,13 @@ void simulate(const RunArgs& a) {
   if (a.dt != 0.0) o.dt = a.dt;
   if (a.threads != 0) o.threads = a.threads;
   o.tune_heap = true;  // this process runs one scene: the heap policy pays (docs/performance.md)
-  const SimulationResult r = beamimpact::run(a.scene, a.method, o);
+  SimulationResult r;
+  try {
+    r = beamimpact::run(a.scene, a.method, o);
+  } catch (const InputError& e) {
+    if (!a.refusal.empty()) write_refusal(a.refusal, e);
+    throw;
+  }
   if (!a.quiet) print_result(r, a.out);
   if (const auto w = r.extra.find("warnings"); w != r.extra.end())  // also when quiet: on stderr
     for (const auto& text : *w) fmt::print(stderr, "warning: {}\n", text.get<std::string>());
@@ -105,6 +126,9 @@ void add_command_run(CLI::App& app) {
   add_methods_option(sub);
   sub->add_option("--set", args->sets, "Override a scene key, e.g. --set time.dt=0.005 (repeatable)");
   sub->add_flag("--quiet", args->quiet, "Print nothing on success (no progress either)");
+  sub->add_option("--refusal", args->refusal,
+                  "When the run is refused (exit 2), also write the refusal to this file as JSON {file, key, "
+                  "message} (for programs that start runs)");
   sub->add_flag("--allow-long", args->allow_long,
                 "Run even when the cost estimate is far beyond the ordinary (as time.allow_long_run = true)");
   sub->add_flag(

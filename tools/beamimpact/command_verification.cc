@@ -20,16 +20,15 @@
 #include <solver/util/InputError.hpp>
 #include <solver/util/write_file_atomic.hpp>
 #include <verification/compare/compare_runs.hpp>
+#include <verification/jobs/execute_jobs.hpp>
+#include <verification/jobs/interruption.hpp>
+#include <verification/jobs/task_farm.hpp>
 #include <verification/matrix/VerificationMatrix.hpp>
 #include <verification/matrix/baseline.hpp>
 #include <verification/matrix/evaluate.hpp>
-#include <verification/matrix/execute_jobs.hpp>
-#include <verification/matrix/interruption.hpp>
 #include <verification/matrix/reports.hpp>
 #include <verification/matrix/sweep.hpp>
 #include <verification/matrix/verify.hpp>
-#include <verification/study/distributed_jobs.hpp>
-#include <verification/study/task_farm.hpp>
 #include "CommandExit.hpp"
 #include "methods_option.hpp"
 #include "output_lock.hpp"
@@ -47,11 +46,11 @@ struct CompareArgs {
 
 }  // namespace
 
-Launcher launcher() {
-  Launcher l;
-  l.exe = program_path();
-  l.methods_files = loaded_methods_files();
-  return l;
+void add_isolate_flag(CLI::App* sub, std::filesystem::path& exe) {
+  sub->add_flag_callback(
+      "--isolate", [&exe] { exe = program_path(); },
+      "Run each case as its own `beamimpact run` process (a crash or a hang ends only that run); default: "
+      "in this process (an outside method's program is its own process either way)");
 }
 
 namespace {
@@ -60,7 +59,8 @@ void compare(const CompareArgs& a) {
   fs::path json = a.json.empty() ? fs::path(a.a) / "compare.json" : fs::path(a.json);
   if (std::error_code ec; fs::is_directory(json, ec)) json /= "compare.json";  // --json DIR
   const OutputLock lock = lock_output(json.has_parent_path() ? json.parent_path() : fs::path("."));
-  const Comparison c = compare_runs(StoredRun::read(a.a), StoredRun::read(a.b), a.options);
+  const StoredRun run = StoredRun::read(a.a), reference = StoredRun::read(a.b);
+  const Comparison c = compare_runs(run.view(), reference.view(), a.options);
   fmt::print("{}", c.to_text());
   write_file_atomic(json, c.to_json().dump(1) + "\n");
   fmt::print("wrote {}\n", json.string());
@@ -85,28 +85,26 @@ void print_verify(const VerifyOptions& o, const VerifyResult& r, const fs::path&
     fmt::print(stderr, "baseline: {} not updated: this verification failed\n", r.baseline_file.string());
 }
 
-void verify(VerifyOptions o) {
+void verify_command(VerifyOptions o) {
   const OutputLock lock = lock_output(o.out);  // before the earlier reports are removed
-  forward_interruptions();
+  jobs::forward_interruptions();
   o.matrix = resolve_data_file(o.matrix.string());  // verification/matrix.toml from any folder
-  o.executor = study::distributed_jobs;
-  o.quiet = study::World::rank() != 0;
-  if (study::World::size() > 1) o.executor_note = fmt::format(", {} MPI ranks", study::World::size());
-  const auto result = verification::verify(o, program_path());
+  o.quiet = jobs::World::rank() != 0;
+  const auto result = verification::verify(o);
   if (!result) return;  // an MPI worker rank: rank 0 evaluates and writes the reports
   print_verify(o, *result, write_verify_reports(o, *result));
-  if (interruption()) {
-    fmt::print(stderr, "verify: interrupted (signal {}): the report is marked incomplete\n", interruption());
-    throw CommandExit{interrupted_exit_code()};
+  if (jobs::interruption()) {
+    fmt::print(stderr, "verify: interrupted (signal {}): the report is marked incomplete\n",
+               jobs::interruption());
+    throw CommandExit{jobs::interrupted_exit_code()};
   }
   if (!result->passed()) throw CommandExit{1};
 }
 
-void sweep(SweepOptions o) {
+void sweep_command(SweepOptions o) {
   const OutputLock lock = lock_output(o.out);  // before the earlier tables are removed
-  forward_interruptions();
-  o.executor = study::distributed_jobs;
-  const auto ran = execute_sweep(o, launcher());
+  jobs::forward_interruptions();
+  const auto ran = verification::sweep(o);
   if (!ran) return;  // an MPI worker rank: rank 0 compares and writes the outputs
   const SweepResult& r = *ran;
   write_sweep(o, r);
@@ -125,9 +123,10 @@ void sweep(SweepOptions o) {
     fmt::print("\n");
   }
   fmt::print("errors against {}\nreport: {}\n", r.reference_label, (o.out / "sweep.md").string());
-  if (interruption()) {
-    fmt::print(stderr, "sweep: interrupted (signal {}): the report is marked incomplete\n", interruption());
-    throw CommandExit{interrupted_exit_code()};
+  if (jobs::interruption()) {
+    fmt::print(stderr, "sweep: interrupted (signal {}): the report is marked incomplete\n",
+               jobs::interruption());
+    throw CommandExit{jobs::interrupted_exit_code()};
   }
 }
 
@@ -156,6 +155,7 @@ void add_verify_command(CLI::App& app) {
               "same version, scene and settings, are taken as they are)");
   add_threads_option(v, va->threads,
                      "Threads of each run of the paper integrator (as run --threads; default: each run's)");
+  add_isolate_flag(v, va->exe);
   CLI::Option* baseline = v->add_option(
       "--baseline", va->baseline,
       "A baseline (an earlier --update-baseline, or a norms.json): exit 1 when a gated value got worse "
@@ -164,7 +164,7 @@ void add_verify_command(CLI::App& app) {
               "Write the --baseline file from this run (when it passes) instead of holding the run to it")
       ->needs(baseline);
   add_methods_option(v);
-  v->callback([va] { verify(*va); });
+  v->callback([va] { verify_command(*va); });
 }
 
 }  // namespace
@@ -230,8 +230,9 @@ void add_verification_commands(CLI::App& app) {
   s->add_option("--jobs", sa->jobs, "Runs in parallel")->capture_default_str()->check(job_count());
   add_threads_option(s, sa->threads,
                      "Threads of each run of the paper integrator (as run --threads; default: each run's)");
+  add_isolate_flag(s, sa->exe);
   add_methods_option(s);
-  s->callback([sa] { sweep(*sa); });
+  s->callback([sa] { sweep_command(*sa); });
 }
 
 }  // namespace beamimpact

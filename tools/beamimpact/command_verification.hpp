@@ -4,7 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include <verification/matrix/JobSpec.hpp>
+#include <filesystem>
 
 namespace beamimpact {
 
@@ -12,8 +12,9 @@ namespace beamimpact {
 /// 0 all gates pass, 1 a gate failed, 2 bad input (matrix, run directory, options).
 void add_verification_commands(CLI::App& app);
 
-/// @brief Starts runs as `beamimpact run` with this very program, passing on every methods file
-/// read (--methods), so that each run sees the same registry.
-verification::Launcher launcher();
+/// @brief Adds --isolate to a command that runs a set of runs: each run is then a `beamimpact
+/// run` process of this very program (`exe` is set to it) instead of a call in this process.
+/// @param sub the command; @param exe its options' exe field
+void add_isolate_flag(CLI::App* sub, std::filesystem::path& exe);
 
 }  // namespace beamimpact

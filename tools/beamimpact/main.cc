@@ -11,7 +11,7 @@
 #include <api/registry.hpp>
 #include <beamimpact/version.hpp>
 #include <solver/util/InputError.hpp>
-#include <verification/study/task_farm.hpp>
+#include <verification/jobs/task_farm.hpp>
 
 #include "CommandExit.hpp"
 #include "command_methods.hpp"
@@ -26,7 +26,7 @@ namespace {
 
 /// An error on one rank of an MPI job ends every rank (the others would wait for it forever).
 int fail(int code) {
-  if (beamimpact::study::World::size() > 1) beamimpact::study::World::abort(code);
+  if (beamimpact::jobs::World::size() > 1) beamimpact::jobs::World::abort(code);
   return code;
 }
 
@@ -34,7 +34,7 @@ int fail(int code) {
 
 int main(int argc, char** argv) {
   using namespace beamimpact;
-  const study::World world(argc, argv);  // MPI, when started by mpirun
+  const jobs::World world(argc, argv);  // MPI, when started by mpirun
   CLI::App app{"beamimpact: dynamic beam-to-beam collision (Pu & Chi 2011) with independent references"};
   app.set_version_flag("--version", kVersion);
   app.require_subcommand(1);
@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
     add_command_model(app);
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = study::World::rank() == 0 ? app.exit(e) : e.get_exit_code();
+    const int code = jobs::World::rank() == 0 ? app.exit(e) : e.get_exit_code();
     return code == 0 ? 0 : fail(2);
   } catch (const CommandExit& e) {
     return e.code;

@@ -6,14 +6,14 @@
 #include <filesystem>
 
 #include <solver/util/OutputLock.hpp>
-#include <verification/study/task_farm.hpp>
+#include <verification/jobs/task_farm.hpp>
 
 namespace beamimpact {
 
 /// @brief The lock of dir, taken by rank 0 only: the other ranks of an MPI job run cases but
 /// write nothing into dir itself. Hold the result until the command ends.
 inline OutputLock lock_output(const std::filesystem::path& dir) {
-  return OutputLock(study::World::rank() == 0 ? dir : std::filesystem::path());
+  return OutputLock(jobs::World::rank() == 0 ? dir : std::filesystem::path());
 }
 
 }  // namespace beamimpact

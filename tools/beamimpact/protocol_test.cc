@@ -23,16 +23,20 @@ using Result = testing::CliResult;
 class Protocol : public testing::CliTest {
  protected:
   /// A methods file declaring the stand-in as `name`, breaking the rule `broken` ("" none).
-  fs::path standin(const std::string& name, const std::string& broken = "") {
+  /// A methods file declaring the stand-in as `name` (with `--break broken`; `accepts_more`: more
+  /// accepts keys than the program models, e.g. "friction = true, ").
+  fs::path standin(const std::string& name, const std::string& broken = "",
+                   const std::string& accepts_more = "") {
     const fs::path f = tmp_ / (name + ".toml");
     std::ofstream(f) << fmt::format(
         "[[method]]\nname = \"{}\"\nsummary = \"protocol stand-in\"\n"
         "command = [\"/usr/bin/python3\", \"{}/tools/beamimpact/testdata/standin_solver.py\", \"{{scene}}\", "
         "\"--out\", \"{{out}}\", \"--dt\", \"{{dt}}\"{}]\n"
         "check = [\"/usr/bin/python3\", \"-c\", \"import tomllib\"]\n"
-        "accepts = {{ dt = true, rotation = true, rigid = true, several_contacts = true, bending = true, "
+        "accepts = {{ {}dt = true, rotation = true, rigid = true, several_contacts = true, bending = true, "
         "node_to_surface = true, loads = true }}\n",
-        name, src_.string(), broken.empty() ? "" : fmt::format(", \"--break\", \"{}\"", broken));
+        name, src_.string(), broken.empty() ? "" : fmt::format(", \"--break\", \"{}\"", broken),
+        accepts_more);
     return f;
   }
 
@@ -111,23 +115,31 @@ TEST_F(Protocol, AnExternalMethodRunsAndRefusesThroughRun) {
 }
 
 // In the matrix a refused case is "not applicable": a skipped gate, never a pass or a crash.
+// A scene the method refuses is not applicable, whoever refuses it: the registry (the methods file
+// declares no friction) or the program itself (the file claims friction; the program exits 2).
 TEST_F(Protocol, ARefusedCaseIsNotApplicableInVerify) {
-  const fs::path f = standin("standin");
-  const fs::path m = tmp_ / "m.toml";
-  std::ofstream(m) << fmt::format(
-      "[settings]\nroot = \"{}\"\n[scenes]\ns1 = \"verification/scenes/paper/s1_central.toml\"\n"
-      "[[case]]\nscene = \"s1\"\nmethod = \"standin\"\nrequired = false\nset = "
-      "[\"contacts[0].friction=0.3\"]\n"
-      "reference = {{ method = \"paper\" }}\n"
-      "gates = [{{ metric = \"impulse\", tol = 0.01, why = \"a method that does not model friction\" }}]\n",
-      src_.string());
-  const Result r = run(
-      fmt::format("verify '{}' --methods '{}' --out '{}'", m.string(), f.string(), (tmp_ / "v").string()));
-  EXPECT_EQ(r.code, 0) << r.output;
-  EXPECT_NE(r.output.find("0 passed, 0 failed, 1 skipped"), std::string::npos) << r.output;
-  const std::string junit = read(tmp_ / "v" / "junit.xml");
-  EXPECT_NE(junit.find("<skipped"), std::string::npos) << junit;
-  EXPECT_NE(junit.find("not applicable"), std::string::npos) << junit;
+  for (const auto& [name, accepts_more] :
+       {std::pair{"standin", ""}, std::pair{"claims_friction", "friction = true, "}}) {
+    SCOPED_TRACE(name);
+    const fs::path f = standin(name, "", accepts_more);
+    const fs::path m = tmp_ / "m.toml";
+    std::ofstream(m) << fmt::format(
+        "[settings]\nroot = \"{}\"\n[scenes]\ns1 = \"verification/scenes/paper/s1_central.toml\"\n"
+        "[[case]]\nscene = \"s1\"\nmethod = \"{}\"\nrequired = false\nset = "
+        "[\"contacts[0].friction=0.3\"]\n"
+        "reference = {{ method = \"paper\" }}\n"
+        "gates = [{{ metric = \"impulse\", tol = 0.01, why = \"a method that does not model friction\" }}]\n",
+        src_.string(), name);
+    const fs::path out = tmp_ / (std::string("v_") + name);
+    const Result r =
+        run(fmt::format("verify '{}' --methods '{}' --out '{}'", m.string(), f.string(), out.string()));
+    EXPECT_EQ(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("0 passed, 0 failed, 1 skipped"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(": not applicable: "), std::string::npos) << r.output;  // the run's outcome
+    const std::string junit = read(out / "junit.xml");
+    EXPECT_NE(junit.find("<skipped"), std::string::npos) << junit;
+    EXPECT_NE(junit.find("not applicable"), std::string::npos) << junit;
+  }
 }
 
 // The conforming stand-in passes every rule; each broken copy fails with its rule named.

@@ -6,6 +6,7 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <thread>
@@ -160,9 +161,16 @@ TEST_F(Score, AnInterruptedScoreExitsWith128PlusTheSignal) {
   pid_t pid = 0;
   ASSERT_EQ(posix_spawn(&pid, argv[0], &fa, nullptr, argv.data(), environ), 0);
   posix_spawn_file_actions_destroy(&fa);
-  for (int i = 0; i < 1500 && processes_mentioning(out + "/runs", pid).empty(); ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  ASSERT_FALSE(processes_mentioning(out + "/runs", pid).empty()) << "the run did not start";
+  // The run goes in score's own process: it has started when its run.log is there.
+  const auto started = [&] {
+    std::error_code ec;
+    return fs::is_directory(out + "/runs", ec) &&
+           std::any_of(fs::directory_iterator(out + "/runs", ec), fs::directory_iterator(),
+                       [](const fs::directory_entry& d) { return fs::exists(d.path() / "run.log"); });
+  };
+  for (int i = 0; i < 1500 && !started(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_TRUE(started()) << "the run did not start";
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));  // well into its 5e6 steps
   kill(pid, SIGINT);
   int status = 0;
   ASSERT_EQ(waitpid(pid, &status, 0), pid);

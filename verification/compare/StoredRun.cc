@@ -6,7 +6,6 @@
 #include <fstream>
 #include <sstream>
 
-#include <solver/record/output_files.hpp>
 #include <solver/schema/output_schema.hpp>
 #include <solver/util/InputError.hpp>
 
@@ -142,21 +141,6 @@ StoredRun StoredRun::read(const std::filesystem::path& dir) {
   return h;
 }
 
-StoredRun StoredRun::from_result(const Scene& scene, const SimulationResult& result, std::string label) {
-  check_outputs_finite(scene, result);
-  if (!scene.output.history)
-    throw InputError(scene.file, "output.history",
-                     "expected true: a comparison needs the run's history rows");
-  const std::vector<std::string> names = history_columns(static_cast<int>(scene.contacts.size()));
-  std::map<std::string, std::vector<double>> columns;
-  for (const auto& n : names) columns[n].reserve(result.history.size());
-  for (const HistoryRow& row : result.history) {
-    const std::vector<double> v = history_values(row);
-    for (std::size_t i = 0; i < names.size(); ++i) columns[names[i]].push_back(v[i]);
-  }
-  return from_columns(std::move(columns), summary_json(scene, result), std::move(label));
-}
-
 StoredRun StoredRun::from_columns(std::map<std::string, std::vector<double>> columns, nlohmann::json summary,
                                   std::string label) {
   StoredRun h;
@@ -182,19 +166,16 @@ const std::vector<double>& StoredRun::column(const std::string& name) const {
   return it->second;
 }
 
-int StoredRun::contacts() const {
-  int n = has("R") ? 1 : 0;
-  while (has(contact_column("R", n + 1))) ++n;
-  return n;
-}
+int StoredRun::contacts() const { return RunView::contact_count(columns_); }
 
-double StoredRun::output_step() const {
-  const auto& tt = t();
-  if (tt.size() < 2) return 0.0;
-  std::vector<double> d(tt.size() - 1);
-  for (std::size_t i = 1; i < tt.size(); ++i) d[i - 1] = tt[i] - tt[i - 1];
-  std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
-  return d[d.size() / 2];
+double StoredRun::output_step() const { return RunView::median_step(t()); }
+
+RunView StoredRun::view() const {
+  RunView v;
+  v.label = label_;
+  v.columns = std::shared_ptr<const Columns>(std::shared_ptr<const void>(), &columns_);  // borrowed
+  RunView::read_summary(summary_, label_, v);
+  return v;
 }
 
 }  // namespace beamimpact::verification

@@ -1,7 +1,7 @@
 #pragma once
 /// @file StoredRun.hpp
 /// @brief One finished run as the comparison layer sees it: the columns of history.csv and the
-/// parsed summary.json (docs/scene-format.md).
+/// parsed summary.json (docs/scene-format.md); view() is what compare_runs() reads of them.
 
 #include <filesystem>
 #include <map>
@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include <solver/record/SimulationResult.hpp>
+#include <verification/compare/RunView.hpp>
 
 namespace beamimpact::verification {
 
@@ -24,13 +24,6 @@ class StoredRun {
   /// expected) for a missing file, a missing `t` or `R` column, a short row, a non-number, a
   /// non-finite value or times that do not increase.
   static StoredRun read(const std::filesystem::path& dir);
-
-  /// @brief The run a method returned, as read() would read it back from the run directory
-  /// write_outputs() writes (the same numbers: both files round-trip every double), without the
-  /// files. Throws std::runtime_error for a non-finite value (check_outputs_finite()) and
-  /// InputError for a result without rows ([output] history = false).
-  /// @param scene the scene the run solved; @param result its result; @param label for messages
-  static StoredRun from_result(const Scene& scene, const SimulationResult& result, std::string label);
 
   /// @brief Builds a history from columns in memory (tests, perturbations); `t` must be present.
   static StoredRun from_columns(std::map<std::string, std::vector<double>> columns,
@@ -55,6 +48,9 @@ class StoredRun {
   const std::string& label() const { return label_; }
   /// @brief Median spacing of the rows (s): the output step.
   double output_step() const;
+  /// @brief The run as compare_runs() reads it: the summary's numbers typed once, the columns
+  /// shared with this run (keep it alive while the view is used).
+  RunView view() const;
 
  private:
   std::map<std::string, std::vector<double>> columns_;

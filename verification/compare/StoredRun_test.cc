@@ -95,26 +95,48 @@ TEST(StoredRun, BadSummaryNamesTheKey) {
   }
 }
 
-// A run in memory is the run its directory holds: from_result gives the columns and summary that
-// read() gets back from the files write_outputs writes (both formats round-trip every double).
-TEST(StoredRun, FromResultEqualsTheRunDirectory) {
+// A run in memory is the run its directory holds: RunView::from_result gives the columns and the
+// summary's numbers that read() gets back from the files write_outputs writes (both formats
+// round-trip every double), so a comparison does not depend on which of the two it was given.
+TEST(StoredRun, ViewFromResultEqualsTheRunDirectory) {
   const Scene scene = beamimpact::testing::load_paper_scene("s1_central", {"time.end=3.0"});
   const SimulationResult r = beamimpact::run(scene, "paper");
   const fs::path dir = beamimpact::testing::temp_path("rh_from_result");
   fs::remove_all(dir);
   write_outputs(scene, r, dir);
-  const StoredRun disk = StoredRun::read(dir), memory = StoredRun::from_result(scene, r, "memory");
+  const StoredRun stored = StoredRun::read(dir);
+  const RunView disk = stored.view(), memory = RunView::from_result(scene, r, "memory");
   ASSERT_GT(disk.t().size(), 10u);
-  EXPECT_EQ(memory.columns(), disk.columns());
-  EXPECT_EQ(memory.summary().dump(), disk.summary().dump());
+  EXPECT_EQ(*memory.columns, *disk.columns);
+  ASSERT_EQ(memory.contacts_summary.size(), 1u);
+  EXPECT_EQ(memory.contacts_summary, disk.contacts_summary);
+  // S1's exact impulse is m v0 / 2 = 4 N s; the paper's 10-element run is within 5 % of it.
+  EXPECT_NEAR(*memory.contacts_summary[0].impulse_normal, 4.0, 0.2);
+  EXPECT_FALSE(memory.contacts_summary[0].intervals->empty());
+  EXPECT_EQ(memory.final_velocity, disk.final_velocity);
+  EXPECT_EQ(memory.final_velocity->size(), 2u);
+  EXPECT_EQ(memory.scene_sha256, disk.scene_sha256);
+  EXPECT_EQ(memory.scene_sha256, scene.sha256);
   fs::remove_all(dir);
 }
 
-TEST(StoredRun, FromResultRefusesANonFiniteValue) {
+TEST(StoredRun, ViewFromResultRefusesANonFiniteValue) {
   const Scene scene = beamimpact::testing::load_paper_scene("s1_central", {"time.end=0.1"});
   SimulationResult r = beamimpact::run(scene, "paper");
   r.history.back().kinetic = std::nan("");
-  EXPECT_THROW(StoredRun::from_result(scene, r, "memory"), std::runtime_error);
+  EXPECT_THROW(RunView::from_result(scene, r, "memory"), std::runtime_error);
+}
+
+// A summary given in memory (Python's compare) with a wrong type is bad input naming the key.
+TEST(StoredRun, ViewRefusesAWrongSummaryType) {
+  const StoredRun h = StoredRun::from_columns({{"t", {0.0, 0.01}}, {"R", {0.0, 1.0}}},
+                                              {{"contacts", {{{"impulse_normal", "4"}}}}}, "mem");
+  try {
+    (void)h.view();
+    FAIL() << "a string impulse was read";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "contacts/0/impulse_normal") << e.what();
+  }
 }
 
 }  // namespace

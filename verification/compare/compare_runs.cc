@@ -25,13 +25,13 @@ Norm unavailable(std::string name, std::string unit, std::string definition, std
 }
 
 /// Columns of one quantity (e.g. {"ua_x", "ua_y"}) of contact k; empty optional when absent.
-std::optional<std::string> missing_column(const StoredRun& h, const std::vector<std::string>& cols) {
+std::optional<std::string> missing_column(const RunView& h, const std::vector<std::string>& cols) {
   for (const auto& c : cols)
     if (!h.has(c)) return c;
   return std::nullopt;
 }
 
-Series resample(const StoredRun& h, const std::vector<std::string>& cols, const Grid& g) {
+Series resample(const RunView& h, const std::vector<std::string>& cols, const Grid& g) {
   Series s;
   for (const auto& c : cols) s.push_back(interpolate(h.t(), h.column(c), g.t));
   return s;
@@ -61,13 +61,13 @@ void add_series_norms(Comparison& cmp, const std::string& name, const Series& a,
                     fmt::format("reference is identically zero (absolute max = {:.3e})", ndi)));
 }
 
-void add_vector_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, const Grid& g,
+void add_vector_norms(Comparison& cmp, const RunView& a, const RunView& b, const Grid& g,
                       const std::string& base, int k, const std::string& what) {
   const std::vector<std::string> cols = {contact_column(base + "_x", k), contact_column(base + "_y", k)};
   const std::string name = contact_column(base, k);
-  for (const StoredRun* h : {&a, &b}) {
+  for (const RunView* h : {&a, &b}) {
     if (auto m = missing_column(*h, cols)) {
-      const std::string why = h->label() + "/history.csv has no column '" + *m + "'";
+      const std::string why = h->label + "/history.csv has no column '" + *m + "'";
       cmp.norms.push_back(unavailable(name + ".rel_l2", "1", "relative L2 error of " + what, why));
       cmp.norms.push_back(unavailable(name + ".rel_linf", "1", "relative L-infinity error of " + what, why));
       cmp.notes.push_back(why);
@@ -78,41 +78,39 @@ void add_vector_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, c
                    what + " (Euclidean norm of x, y)");
 }
 
-/// The summary.json entry of contact k (1-based), or nullptr.
-const nlohmann::json* summary_contact(const StoredRun& h, int k) {
-  const auto& s = h.summary();
-  if (!s.contains("contacts") || !s.at("contacts").is_array() ||
-      s.at("contacts").size() < static_cast<std::size_t>(k))
-    return nullptr;
-  return &s.at("contacts").at(static_cast<std::size_t>(k - 1));
+/// The summary's facts of contact k (1-based), or nullptr.
+const ContactFacts* summary_contact(const RunView& h, int k) {
+  if (h.contacts_summary.size() < static_cast<std::size_t>(k)) return nullptr;
+  return &h.contacts_summary[static_cast<std::size_t>(k - 1)];
 }
 
-/// The contact entry of a run read from its history alone: its intervals (rows with R above
+/// The contact facts of a run read from its history alone: its intervals (rows with R above
 /// threshold, merged) and the trapezoid impulse of each (from the open row before to the open row
 /// after, or the `impulse` column's rise over them), impulse_normal the whole running impulse I.
-nlohmann::json contact_from_history(const StoredRun& h, const std::vector<double>& R,
-                                    const std::vector<double>& I, double threshold, double merge_gap) {
-  nlohmann::json c = {{"impulse_normal", I.back()},
-                      {"intervals", nlohmann::json::array()},
-                      {"interval_impulses", nlohmann::json::array()}};
+ContactFacts contact_from_history(const RunView& h, const std::vector<double>& R,
+                                  const std::vector<double>& I, double threshold, double merge_gap) {
+  ContactFacts c;
+  c.impulse_normal = I.back();
+  c.intervals.emplace();
+  c.interval_impulses.emplace();
   for (const Interval& iv : contact_intervals(h.t(), R, threshold, merge_gap)) {
     const std::size_t lo = iv.first > 0 ? iv.first - 1 : 0, hi = std::min(iv.last + 1, I.size() - 1);
-    c["intervals"].push_back({iv.start, iv.end});
-    c["interval_impulses"].push_back(I[hi] - I[lo]);
+    c.intervals->push_back({iv.start, iv.end});
+    c.interval_impulses->push_back(I[hi] - I[lo]);
   }
   return c;
 }
 
-/// Contact intervals from summary.json (the method's own, event-accurate) or else from the rows;
+/// Contact intervals from the summary (the method's own, event-accurate) or else from the rows;
 /// either way, intervals closer than merge_gap seconds are one (the same rule for both runs, so
 /// that counts do not depend on each method's merge rule in steps).
-std::vector<Interval> intervals_of(const StoredRun& h, const nlohmann::json* sc, const std::vector<double>& R,
+std::vector<Interval> intervals_of(const RunView& h, const ContactFacts* sc, const std::vector<double>& R,
                                    double threshold, double merge_gap) {
-  if (sc && sc->contains("intervals")) {
+  if (sc && sc->intervals) {
     ContactIntervals merged(merge_gap);  // each of the method's intervals is a phase
-    for (const auto& iv : sc->at("intervals")) {
-      merged.begin(iv.at(0).get<double>());
-      merged.extend(iv.at(1).get<double>());
+    for (const auto& [start, end] : *sc->intervals) {
+      merged.begin(start);
+      merged.extend(end);
     }
     std::vector<Interval> out;
     for (const auto& [start, end] : merged.intervals()) out.push_back({start, end, 0, 0});
@@ -139,7 +137,7 @@ Norm relative_scalar(std::string name, double a, double b, std::string definitio
   return n;
 }
 
-void add_contact_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, const Grid& g, int k,
+void add_contact_norms(Comparison& cmp, const RunView& a, const RunView& b, const Grid& g, int k,
                        const CompareOptions& options) {
   const std::string R = contact_column("R", k);
   const std::string sfx = k <= 1 ? "" : "_" + std::to_string(k);
@@ -171,12 +169,12 @@ void add_contact_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, 
   const double maxRb = *std::max_element(Rb.begin(), Rb.end());
   const double thr = options.threshold * maxRb;
   cmp.force_threshold = std::max(cmp.force_threshold, thr);
-  const nlohmann::json ha = contact_from_history(a, Ra, Ia, thr, cmp.merge_gap);
-  const nlohmann::json hb = contact_from_history(b, Rb, Ib, thr, cmp.merge_gap);
-  const nlohmann::json* sa = options.run_from_history ? &ha : summary_contact(a, k);
-  const nlohmann::json* sb = options.reference_from_history ? &hb : summary_contact(b, k);
-  const double Ja = sa && sa->contains("impulse_normal") ? sa->at("impulse_normal").get<double>() : Ia.back();
-  const double Jb = sb && sb->contains("impulse_normal") ? sb->at("impulse_normal").get<double>() : Ib.back();
+  const ContactFacts ha = contact_from_history(a, Ra, Ia, thr, cmp.merge_gap);
+  const ContactFacts hb = contact_from_history(b, Rb, Ib, thr, cmp.merge_gap);
+  const ContactFacts* sa = options.run_from_history ? &ha : summary_contact(a, k);
+  const ContactFacts* sb = options.reference_from_history ? &hb : summary_contact(b, k);
+  const double Ja = sa && sa->impulse_normal ? *sa->impulse_normal : Ia.back();
+  const double Jb = sb && sb->impulse_normal ? *sb->impulse_normal : Ib.back();
   cmp.norms.push_back(relative_scalar("impulse" + sfx, Ja, Jb,
                                       "|J_a - J_b| / |J_b|, J = total normal impulse (N s): summary.json "
                                       "contacts[].impulse_normal, else (or for a side read from its history) "
@@ -220,33 +218,28 @@ void add_contact_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, 
   add_vector_norms(cmp, a, b, g, "vb", k, "the struck point velocity vb (m/s)");
 }
 
-void add_final_velocity(Comparison& cmp, const StoredRun& a, const StoredRun& b) {
+void add_final_velocity(Comparison& cmp, const RunView& a, const RunView& b) {
   const std::string def =
       "max over bodies |v_a - v_b| / max over bodies |v_b|, v = centre-of-mass velocity at the end "
       "(summary.json bodies.*.final_velocity, m/s)";
-  const auto& sa = a.summary();
-  const auto& sb = b.summary();
-  if (!sb.contains("bodies") || !sa.contains("bodies")) {
+  if (!b.final_velocity || !a.final_velocity) {
     cmp.norms.push_back(unavailable("final_velocity", "1", def, "summary.json has no 'bodies'"));
     return;
   }
   double num = 0.0, den = 0.0;
-  try {
-    for (const auto& [name, body] : sb.at("bodies").items()) {
-      if (!sa.at("bodies").contains(name)) {
-        cmp.norms.push_back(unavailable("final_velocity", "1", def, "run has no body '" + name + "'"));
-        return;
-      }
-      const auto vb = body.at("final_velocity").get<std::vector<double>>();
-      const auto va = sa.at("bodies").at(name).at("final_velocity").get<std::vector<double>>();
-      if (va.size() != 2 || vb.size() != 2) throw std::runtime_error("expected two components");
-      num = std::max(num, std::hypot(va[0] - vb[0], va[1] - vb[1]));
-      den = std::max(den, std::hypot(vb[0], vb[1]));
+  for (const auto& [name, vb] : *b.final_velocity) {
+    const auto va = a.final_velocity->find(name);
+    if (va == a.final_velocity->end()) {
+      cmp.norms.push_back(unavailable("final_velocity", "1", def, "run has no body '" + name + "'"));
+      return;
     }
-  } catch (const std::exception& e) {
-    cmp.norms.push_back(
-        unavailable("final_velocity", "1", def, std::string("bad summary.json: ") + e.what()));
-    return;
+    if (!vb || !va->second) {
+      cmp.norms.push_back(unavailable("final_velocity", "1", def,
+                                      "bad summary.json: body '" + name + "' has no final_velocity"));
+      return;
+    }
+    num = std::max(num, std::hypot((*va->second)[0] - (*vb)[0], (*va->second)[1] - (*vb)[1]));
+    den = std::max(den, std::hypot((*vb)[0], (*vb)[1]));
   }
   Norm n{"final_velocity", std::nullopt, "1", def, num, den, {}, true};  // a difference and its scale
   if (den > 0.0)
@@ -256,17 +249,17 @@ void add_final_velocity(Comparison& cmp, const StoredRun& a, const StoredRun& b)
   cmp.norms.push_back(n);
 }
 
-void add_energy(Comparison& cmp, const StoredRun& a, const StoredRun& b) {
+void add_energy(Comparison& cmp, const RunView& a, const RunView& b) {
   const std::string def =
       "|E_a(t1) - E_b(t1)| / E_b(first row), E = kinetic + strain (J), t1 = end of the overlap";
-  for (const StoredRun* h : {&a, &b}) {
+  for (const RunView* h : {&a, &b}) {
     if (auto m = missing_column(*h, {"kinetic", "strain"})) {
       cmp.norms.push_back(
-          unavailable("energy_final", "1", def, h->label() + "/history.csv has no column '" + *m + "'"));
+          unavailable("energy_final", "1", def, h->label + "/history.csv has no column '" + *m + "'"));
       return;
     }
   }
-  auto energy_at = [](const StoredRun& h, double t) {
+  auto energy_at = [](const RunView& h, double t) {
     const auto k = interpolate(h.t(), h.column("kinetic"), {t});
     const auto s = interpolate(h.t(), h.column("strain"), {t});
     return k[0] + s[0];
@@ -307,22 +300,22 @@ bool known_norm(const std::string& name) {
   return series && (kind == "rel_l2" || kind == "rel_linf");
 }
 
-Comparison compare_runs(const StoredRun& a, const StoredRun& b, const CompareOptions& options) {
+Comparison compare_runs(const RunView& a, const RunView& b, const CompareOptions& options) {
   Comparison cmp;
-  cmp.run = a.label();
-  cmp.reference = b.label();
+  cmp.run = a.label;
+  cmp.reference = b.label;
   cmp.t0 = std::max(a.t().front(), b.t().front());
   cmp.t1 = std::min(a.t().back(), b.t().back());
   if (!(cmp.t1 > cmp.t0)) {
-    throw InputError(a.label(), "t",
+    throw InputError(a.label, "t",
                      fmt::format("expected a time span overlapping the reference's [{}, {}] s, "
                                  "found [{}, {}] s",
                                  b.t().front(), b.t().back(), a.t().front(), a.t().back()));
   }
   const double ha = a.output_step(), hb = b.output_step();
-  for (const StoredRun* h : {&a, &b})
+  for (const RunView* h : {&a, &b})
     if (!(h->output_step() > 0.0))
-      throw InputError(h->label(), "t", "expected at least two rows in history.csv");
+      throw InputError(h->label, "t", "expected at least two rows in history.csv");
   const double fine = std::min(ha, hb), coarse = std::max(ha, hb);
   cmp.grid_step = options.grid_step != 0.0 ? options.grid_step : fine;
   cmp.window = options.window != 0.0 ? options.window : 10.0 * coarse;
@@ -337,21 +330,21 @@ Comparison compare_runs(const StoredRun& a, const StoredRun& b, const CompareOpt
   for (const auto& [key, v] : {std::pair{"--grid", options.grid_step}, std::pair{"--window", options.window},
                                std::pair{"--merge", options.merge_gap}})
     if (v != 0.0 && !(v > 0.0 && std::isfinite(v)))
-      throw InputError(a.label(), key, fmt::format("expected a positive finite time (s), got {}", v));
+      throw InputError(a.label, key, fmt::format("expected a positive finite time (s), got {}", v));
   if (!(options.threshold >= 0.0 && options.threshold < 1.0))
     throw InputError(
-        a.label(), "--threshold",
+        a.label, "--threshold",
         fmt::format("expected a fraction of the reference's largest R in [0, 1), got {}", options.threshold));
   constexpr double kMostGridPoints = 1e8;  // 0.8 GB per resampled series: beyond any output
   if ((cmp.t1 - cmp.t0) / cmp.grid_step > kMostGridPoints)
-    throw InputError(a.label(), "--grid",
+    throw InputError(a.label, "--grid",
                      fmt::format("expected a step giving at most {:g} grid points on [{:g}, {:g}] s, "
                                  "got {:g} s",
                                  kMostGridPoints, cmp.t0, cmp.t1, cmp.grid_step));
-  const auto sha = [](const StoredRun& h) { return h.summary().value("scene_sha256", std::string()); };
-  if (!sha(a).empty() && !sha(b).empty() && sha(a) != sha(b))
+  const std::string &sha_a = a.scene_sha256, &sha_b = b.scene_sha256;
+  if (!sha_a.empty() && !sha_b.empty() && sha_a != sha_b)
     cmp.notes.push_back("warning: the runs are of different scene files (scene_sha256 differs: " +
-                        sha(a).substr(0, 12) + " vs " + sha(b).substr(0, 12) + ")");
+                        sha_a.substr(0, 12) + " vs " + sha_b.substr(0, 12) + ")");
   const Grid g{uniform_grid(cmp.t0, cmp.t1, cmp.grid_step)};
 
   const int na = a.contacts(), nb = b.contacts();

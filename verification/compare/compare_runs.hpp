@@ -3,7 +3,7 @@
 /// @brief Error norms between a run and a reference run (`beamimpact compare`).
 
 #include <verification/compare/Comparison.hpp>
-#include <verification/compare/StoredRun.hpp>
+#include <verification/compare/RunView.hpp>
 
 namespace beamimpact::verification {
 
@@ -35,7 +35,9 @@ struct CompareOptions {
 /// Impulse, intervals and interval impulses of each side come from its summary.json unless
 /// options.run_from_history / reference_from_history say to read that side from its history.csv.
 /// Throws InputError when the histories do not overlap in time.
-Comparison compare_runs(const StoredRun& a, const StoredRun& b, const CompareOptions& options = {});
+/// A run directory is compared through StoredRun::read(dir).view(), a run in memory through
+/// RunView::from_result().
+Comparison compare_runs(const RunView& a, const RunView& b, const CompareOptions& options = {});
 
 /// @brief True when compare_runs produces a norm of this name for some number of contacts
 /// ("R.rel_l2", "impulse_2", "final_velocity", ...): lets a matrix reject a misspelt metric.

@@ -15,6 +15,11 @@ namespace {
 using testing::synthetic;
 constexpr double kPi = std::numbers::pi;
 
+/// compare_runs() of the two runs' views.
+Comparison compare(const StoredRun& a, const StoredRun& b, const CompareOptions& options = {}) {
+  return compare_runs(a.view(), b.view(), options);
+}
+
 double value(const Comparison& c, const std::string& name) {
   const Norm* n = c.find(name);
   EXPECT_NE(n, nullptr) << name;
@@ -33,7 +38,7 @@ TEST(CompareRuns, ShiftedStep) {
   const double h = 0.01, T = 4.0, ts = 1.0, d = 0.05, P = 2.0;
   const auto a = synthetic(h, T, [&](double t) { return t >= ts - h / 2 ? P : 0.0; });
   const auto b = synthetic(h, T, [&](double t) { return t >= ts + d - h / 2 ? P : 0.0; });
-  const Comparison c = compare_runs(a, b);
+  const Comparison c = compare(a, b);
   EXPECT_NEAR(c.grid_step, h, 1e-12);    // rows are i h: spacings carry round-off
   EXPECT_NEAR(c.window, 10 * h, 1e-12);  // default: 10 output steps
   // The sampled step is a one-row ramp in both runs, the same shape shifted by d: the impulse
@@ -61,11 +66,11 @@ TEST(CompareRuns, ClosureSpikeIsLeftOutOfThePeak) {
   const auto a =
       synthetic(h, T, [&](double t) { return std::abs(t - ts) < h / 2 ? 10.0 : (t > ts ? P : 0.0); });
   const auto b = synthetic(h, T, [&](double t) { return t >= ts - h / 2 ? P : 0.0; });
-  EXPECT_NEAR(value(compare_runs(a, b), "peak_R"), 0.0, 1e-12);
+  EXPECT_NEAR(value(compare(a, b), "peak_R"), 0.0, 1e-12);
   // Not left out: the peak would be 10 N, an error of (10 - 2) / 2 = 4.
   const auto c = synthetic(
       h, T, [&](double t) { return std::abs(t - ts - 1.0) < h / 2 ? 10.0 : (t >= ts - h / 2 ? P : 0.0); });
-  EXPECT_NEAR(value(compare_runs(c, b), "peak_R"), 4.0, 1e-12);
+  EXPECT_NEAR(value(compare(c, b), "peak_R"), 4.0, 1e-12);
 }
 
 // A force scaled by 1 + s: every relative force norm is exactly s (the norms are homogeneous).
@@ -74,7 +79,7 @@ TEST(CompareRuns, ScaledForce) {
   auto pulse = [](double t) { return t > 0.5 && t < 2.5 ? 2.0 + std::sin(3 * t) : 0.0; };
   const auto b = synthetic(0.01, 4.0, pulse);
   const auto a = synthetic(0.01, 4.0, [&](double t) { return (1 + s) * pulse(t); });
-  const Comparison c = compare_runs(a, b);
+  const Comparison c = compare(a, b);
   for (const char* n :
        {"R.rel_l2", "R.rel_linf", "I.rel_linf", "Rw.rel_l2", "Rw.rel_linf", "impulse", "peak_R"})
     EXPECT_NEAR(value(c, n), s, 1e-12) << n;
@@ -92,7 +97,7 @@ TEST(CompareRuns, ResampledSineOnDifferentGrids) {
   auto zero = [](double) { return 0.0; };
   const auto a = synthetic(ha, T, zero, sine);
   const auto b = synthetic(hb, 2.0 - std::fmod(2.0, hb), zero, sine);
-  const Comparison c = compare_runs(a, b);
+  const Comparison c = compare(a, b);
   EXPECT_NEAR(c.grid_step, hb, 1e-12);  // the finer of the two output steps
   const double bound = (ha * ha + hb * hb) / 8 * w * w;
   const double e = value(c, "ua.rel_linf");
@@ -101,7 +106,7 @@ TEST(CompareRuns, ResampledSineOnDifferentGrids) {
 
   const double delta = 0.01;
   const auto shifted = synthetic(ha, T, zero, [&](double t) { return std::sin(w * (t - delta)); });
-  const Comparison cs = compare_runs(shifted, b);
+  const Comparison cs = compare(shifted, b);
   const double expect = 2 * std::sin(w * delta / 2);
   EXPECT_NEAR(value(cs, "ua.rel_linf"), expect, bound + 1e-3 * expect);
   // b ends 0.0024 s before T: the ratio of the two L2 norms departs from whole-period value by
@@ -113,7 +118,7 @@ TEST(CompareRuns, ResampledSineOnDifferentGrids) {
 TEST(CompareRuns, LostImpact) {
   auto two = [](double t) { return (t > 0.5 && t < 1.0) || (t > 2.0 && t < 2.3) ? 1.0 : 0.0; };
   auto one = [](double t) { return t > 0.5 && t < 1.0 ? 1.0 : 0.0; };
-  const Comparison c = compare_runs(synthetic(0.01, 3.0, one), synthetic(0.01, 3.0, two));
+  const Comparison c = compare(synthetic(0.01, 3.0, one), synthetic(0.01, 3.0, two));
   EXPECT_EQ(value(c, "impacts"), 1.0);
   EXPECT_EQ(c.find("impacts")->a.value(), 1.0);
   EXPECT_EQ(c.find("impacts")->b.value(), 2.0);
@@ -130,8 +135,8 @@ TEST(CompareRuns, ChatterMergeRule) {
       return (i >= 50 && i < 60) || (i >= 60 + open && i < 80 + open) ? 1.0 : 0.0;
     });
   };
-  EXPECT_EQ(compare_runs(with_gap(2), with_gap(0)).find("impacts")->a.value(), 1.0);
-  EXPECT_EQ(compare_runs(with_gap(3), with_gap(0)).find("impacts")->a.value(), 2.0);
+  EXPECT_EQ(compare(with_gap(2), with_gap(0)).find("impacts")->a.value(), 1.0);
+  EXPECT_EQ(compare(with_gap(3), with_gap(0)).find("impacts")->a.value(), 2.0);
 }
 
 // A column a norm needs is absent: that norm is unavailable and says which column, others work.
@@ -139,7 +144,7 @@ TEST(CompareRuns, MissingColumnMakesNormUnavailable) {
   auto f = [](double t) { return t > 1 ? 1.0 : 0.0; };
   auto a = synthetic(0.01, 2.0, f);
   a.columns().erase("vb_y");
-  const Comparison c = compare_runs(a, synthetic(0.01, 2.0, f));
+  const Comparison c = compare(a, synthetic(0.01, 2.0, f));
   const Norm* n = c.find("vb.rel_l2");
   ASSERT_NE(n, nullptr);
   EXPECT_FALSE(n->value.has_value());
@@ -151,7 +156,7 @@ TEST(CompareRuns, NoOverlapIsAnError) {
   auto f = [](double) { return 0.0; };
   auto late = synthetic(0.01, 1.0, f);
   for (auto& t : late.columns()["t"]) t += 5.0;
-  EXPECT_THROW(compare_runs(late, synthetic(0.01, 1.0, f)), std::exception);
+  EXPECT_THROW(compare(late, synthetic(0.01, 1.0, f)), std::exception);
 }
 
 }  // namespace
@@ -166,7 +171,7 @@ TEST(CompareRuns, KnownNormMatchesProducedNames) {
   auto h = testing::synthetic(0.01, 2.0, f);
   for (const char* base : {"R", "tau", "gap", "ua_x", "ua_y", "va_x", "va_y", "ub_x", "ub_y", "vb_x", "vb_y"})
     h.columns()[std::string(base) + "_2"] = h.columns().at(base == std::string("R") ? "R" : base);
-  const Comparison c = compare_runs(h, h);
+  const Comparison c = compare(h, h);
   for (const auto& n : c.norms) EXPECT_TRUE(known_norm(n.name)) << n.name;
   EXPECT_NE(c.find("impulse_2"), nullptr);
   for (const char* bad : {"R.rel_l1", "impulse_1", "I.rel_l2", "Impulse", "ua", "R_x.rel_l2"})
@@ -189,7 +194,7 @@ TEST(CompareRuns, SummaryScalarsTakePrecedence) {
       {"contacts", {{{"impulse_normal", 1.0}, {"intervals", {{0.5, 1.0}, {1.2, 1.5}}}}}}};
   const nlohmann::json sa = {{"contacts", {{{"impulse_normal", 1.1}, {"intervals", {{0.503, 1.5}}}}}}};
   const Comparison c =
-      compare_runs(StoredRun::from_columns(a.columns(), sa), StoredRun::from_columns(b.columns(), sb));
+      compare(StoredRun::from_columns(a.columns(), sa), StoredRun::from_columns(b.columns(), sb));
   EXPECT_NEAR(*c.find("impulse")->value, 0.1, 1e-12);
   EXPECT_NEAR(*c.find("contact_start")->value, 0.003, 1e-12);
   EXPECT_NEAR(*c.find("contact_end")->value, 0.5, 1e-12);
@@ -207,7 +212,7 @@ TEST(CompareRuns, SequenceNormsPairIntervalsByStart) {
   const nlohmann::json sb = {{"contacts", {{{"intervals", {{0.5, 1.0}, {1.2, 1.5}}}}}}};
   const nlohmann::json sa = {{"contacts", {{{"intervals", {{0.51, 0.98}, {1.17, 1.56}, {1.8, 1.85}}}}}}};
   const Comparison c =
-      compare_runs(StoredRun::from_columns(a.columns(), sa), StoredRun::from_columns(b.columns(), sb));
+      compare(StoredRun::from_columns(a.columns(), sa), StoredRun::from_columns(b.columns(), sb));
   EXPECT_NEAR(*c.find("contact_starts")->value, 0.03, 1e-12);
   EXPECT_NEAR(*c.find("contact_ends")->value, 0.06, 1e-12);
   EXPECT_EQ(*c.find("impacts")->value, 1.0);
@@ -227,15 +232,15 @@ TEST(CompareRuns, ARunReadFromItsHistoryIgnoresWhatItsSummaryClaims) {
   const double J = 2.0 * P * D / kPi;
   nlohmann::json claim = {{"contacts", {{{"impulse_normal", J}, {"intervals", {{t0, t0 + D}}}}}}};
   a = StoredRun::from_columns(a.columns(), claim, "claims");
-  EXPECT_NEAR(value(compare_runs(a, b), "impulse"), 0.0, 1e-3);  // trapezoid vs 2 P D / pi: O(h^2)
+  EXPECT_NEAR(value(compare(a, b), "impulse"), 0.0, 1e-3);  // trapezoid vs 2 P D / pi: O(h^2)
   CompareOptions history;
   history.run_from_history = true;
-  const Comparison c = compare_runs(a, b, history);
+  const Comparison c = compare(a, b, history);
   EXPECT_NEAR(value(c, "impulse"), 0.5, 1e-9);            // both sides' rows: R_a = 1.5 R_b row by row
   EXPECT_NEAR(value(c, "contact_start"), 0.0, 1.01 * h);  // the rows' first R > 0, as the reference's
   // Interval impulses from the rows too (the reference, without a summary, read the same way).
   history.reference_from_history = true;
-  EXPECT_NEAR(value(compare_runs(a, b, history), "impulse_per_impact"), 0.5, 1e-9);
+  EXPECT_NEAR(value(compare(a, b, history), "impulse_per_impact"), 0.5, 1e-9);
 }
 
 }  // namespace
@@ -270,7 +275,7 @@ TEST(CompareRuns, TextLabelsValuesAndDifferences) {
   const nlohmann::json sb = {
       {"contacts", {{{"impulse_normal", 1.4}, {"intervals", iv}, {"interval_impulses", {1.0, 0.4}}}}}};
   const Comparison c =
-      compare_runs(StoredRun::from_columns(a.columns(), sa), StoredRun::from_columns(b.columns(), sb));
+      compare(StoredRun::from_columns(a.columns(), sa), StoredRun::from_columns(b.columns(), sb));
   const std::string text = c.to_text();
   const auto header = text.find("run value");
   ASSERT_NE(header, std::string::npos) << text;

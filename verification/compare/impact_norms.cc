@@ -16,22 +16,20 @@ Norm missing(std::string name, std::string unit, std::string definition, std::st
 
 /// A summary entry's own intervals (start only) and their impulses, when it lists one impulse
 /// per interval; empty otherwise.
-std::pair<std::vector<Interval>, std::vector<double>> own_impulses(const nlohmann::json* s) {
-  if (!s || !s->contains("interval_impulses") || !s->contains("intervals")) return {};
-  const auto& J = s->at("interval_impulses");
-  const auto& iv = s->at("intervals");
-  if (!J.is_array() || !iv.is_array() || J.size() != iv.size()) return {};
+std::pair<std::vector<Interval>, std::vector<double>> own_impulses(const ContactFacts* s) {
+  if (!s || !s->interval_impulses || !s->intervals || s->interval_impulses->size() != s->intervals->size())
+    return {};
   std::pair<std::vector<Interval>, std::vector<double>> out;
-  for (std::size_t i = 0; i < J.size(); ++i) {
-    if (!J[i].is_number() || !iv[i].is_array() || iv[i].empty() || !iv[i][0].is_number()) return {};
-    out.first.push_back({iv[i][0].get<double>(), iv[i][0].get<double>(), 0, 0});
-    out.second.push_back(J[i].get<double>());
+  for (std::size_t i = 0; i < s->intervals->size(); ++i) {
+    const double start = (*s->intervals)[i][0];
+    out.first.push_back({start, start, 0, 0});
+    out.second.push_back((*s->interval_impulses)[i]);
   }
   return out;
 }
 
 /// Total variation of R over consecutive rows inside each interval with R above threshold.
-std::vector<double> variations(const StoredRun& h, const std::string& col, const std::vector<Interval>& iv,
+std::vector<double> variations(const RunView& h, const std::string& col, const std::vector<Interval>& iv,
                                double threshold) {
   const auto& t = h.t();
   const auto& R = h.column(col);
@@ -75,8 +73,8 @@ Norm paired_relative(std::string name, const std::vector<double>& x, const std::
 
 }  // namespace
 
-void add_impact_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, const nlohmann::json* sa,
-                      const nlohmann::json* sb, const std::vector<Interval>& iva,
+void add_impact_norms(Comparison& cmp, const RunView& a, const RunView& b, const ContactFacts* sa,
+                      const ContactFacts* sb, const std::vector<Interval>& iva,
                       const std::vector<Interval>& ivb, int k, double threshold) {
   const std::string sfx = k <= 1 ? "" : "_" + std::to_string(k);
   const std::vector<std::size_t> pair = iva.empty() ? std::vector<std::size_t>{} : nearest(iva, ivb);
@@ -121,24 +119,23 @@ void add_impact_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, c
       peak));
 }
 
-void add_energy_drift(Comparison& cmp, const StoredRun& a, const StoredRun& b) {
+void add_energy_drift(Comparison& cmp, const RunView& a, const RunView& b) {
   const std::string def =
       "|dE_a - dE_b| / (n E_ref), dE = E(t1) - E(t0), E = kinetic + strain - load_work (J), n = the "
       "reference's impacts, E_ref = max_t (kinetic + strain) of the reference: energy drift per impact";
   double n = 0.0;
   for (const Norm& m : cmp.norms)
     if (m.name.rfind("impacts", 0) == 0 && m.b) n += *m.b;
-  for (const StoredRun* h : {&a, &b})
+  for (const RunView* h : {&a, &b})
     if (!h->has("kinetic") || !h->has("strain")) {
-      cmp.norms.push_back(
-          missing("energy_drift_per_impact", "1", def, h->label() + " has no energy columns"));
+      cmp.norms.push_back(missing("energy_drift_per_impact", "1", def, h->label + " has no energy columns"));
       return;
     }
   if (n == 0.0) {
     cmp.norms.push_back(missing("energy_drift_per_impact", "1", def, "the reference has no impact"));
     return;
   }
-  const auto energy = [&](const StoredRun& h, double t) {
+  const auto energy = [&](const RunView& h, double t) {
     const std::vector<double> at = {t};
     double e = interpolate(h.t(), h.column("kinetic"), at)[0] + interpolate(h.t(), h.column("strain"), at)[0];
     if (h.has("load_work")) e -= interpolate(h.t(), h.column("load_work"), at)[0];

@@ -6,10 +6,8 @@
 
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include <verification/compare/Comparison.hpp>
-#include <verification/compare/StoredRun.hpp>
+#include <verification/compare/RunView.hpp>
 #include <verification/compare/series.hpp>
 
 namespace beamimpact::verification {
@@ -25,11 +23,11 @@ namespace beamimpact::verification {
 ///     consecutive rows in the interval with R > threshold: the force's oscillation while closed.
 /// @param cmp the comparison the norms are appended to
 /// @param a the run; @param b the reference
-/// @param sa summary.json contact entry of a (may be null); @param sb likewise of b
+/// @param sa the summary's facts of a's contact k (may be null); @param sb likewise of b
 /// @param iva intervals of a; @param ivb intervals of b (as the compare merged them)
 /// @param k contact number (1-based); @param threshold N, R above it counts as contact
-void add_impact_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, const nlohmann::json* sa,
-                      const nlohmann::json* sb, const std::vector<Interval>& iva,
+void add_impact_norms(Comparison& cmp, const RunView& a, const RunView& b, const ContactFacts* sa,
+                      const ContactFacts* sb, const std::vector<Interval>& iva,
                       const std::vector<Interval>& ivb, int k, double threshold);
 
 /// @brief Adds energy_drift_per_impact (1): |dE_a - dE_b| / (n E_ref) with dE = E(t1) - E(t0),
@@ -37,7 +35,7 @@ void add_impact_norms(Comparison& cmp, const StoredRun& a, const StoredRun& b, c
 /// reference's number of impacts over all contacts and E_ref = max_t (kinetic + strain) of b.
 /// @param cmp the comparison (its t0, t1 and the "impacts" norms already added)
 /// @param a the run; @param b the reference
-void add_energy_drift(Comparison& cmp, const StoredRun& a, const StoredRun& b);
+void add_energy_drift(Comparison& cmp, const RunView& a, const RunView& b);
 
 /// @brief True for a norm name this file produces ("contact_starts", "R_variation_2", ...).
 bool known_impact_norm(const std::string& base);

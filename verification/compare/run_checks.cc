@@ -26,12 +26,7 @@ double max_over_rows(std::size_t rows, F f) {
 
 /// E0 (J): summary.json's energy_initial (the initial conditions' energy), else the first row's
 /// K + S (a method whose t = 0 row carries a step-0 contact force reports V^0 with it).
-double initial_energy(const StoredRun& run, double first_row) {
-  const nlohmann::json& s = run.summary();
-  if (s.contains("energy_initial") && s["energy_initial"].is_number())
-    return s["energy_initial"].get<double>();
-  return first_row;
-}
+double initial_energy(const RunView& run, double first_row) { return run.energy_initial.value_or(first_row); }
 
 /// Largest drop of a cumulative column below its running maximum.
 double largest_drop(const std::vector<double>& d) {
@@ -43,7 +38,7 @@ double largest_drop(const std::vector<double>& d) {
   return drop;
 }
 
-void energy(const StoredRun& run, Comparison& c) {
+void energy(const RunView& run, Comparison& c) {
   Norm band = make("energy_band", "1",
                    "max_t |K + S + D - W - E0| / E: kinetic + strain + dissipated - load work against the "
                    "initial energy, E = E0 + max_t |W| (W = 0 without loads or a load_work column)");
@@ -78,25 +73,24 @@ void energy(const StoredRun& run, Comparison& c) {
   c.norms.push_back(drop);
 }
 
-void contact_forces(const StoredRun& run, Comparison& c) {
+void contact_forces(const RunView& run, Comparison& c) {
   Norm tension =
       make("tension", "1", "max over contacts and rows of max(0, -R) / peak R: a contact never pulls");
   Norm cone = make("friction_cone", "1",
                    "max over contacts and rows of max(0, |tau| - mu R) / peak R: Coulomb's cone");
-  const nlohmann::json& contacts = run.summary().value("contacts", nlohmann::json::array());
+  const std::vector<ContactFacts>& contacts = run.contacts_summary;
   double t = 0.0, f = 0.0;
   for (int k = 1; k <= run.contacts(); ++k) {
     const auto& R = run.column(contact_column("R", k));
     const double peak = std::max(*std::max_element(R.begin(), R.end()), 1e-300);
     t = std::max(t, max_over_rows(R.size(), [&](std::size_t i) { return std::max(0.0, -R[i]); }) / peak);
     const std::string tau_col = contact_column("tau", k);
-    const bool has_mu = contacts.is_array() && static_cast<int>(contacts.size()) >= k &&
-                        contacts[k - 1].contains("friction") && contacts[k - 1]["friction"].is_number();
+    const bool has_mu = static_cast<int>(contacts.size()) >= k && contacts[k - 1].friction.has_value();
     if (!run.has(tau_col) || !has_mu) {
       cone.unavailable = "no tau column or no contacts[].friction in summary.json";
       continue;
     }
-    const double mu = contacts[k - 1]["friction"].get<double>();
+    const double mu = *contacts[k - 1].friction;
     const auto& tau = run.column(tau_col);
     f = std::max(f, max_over_rows(R.size(), [&](std::size_t i) {
                       return std::max(0.0, std::abs(tau[i]) - mu * std::max(R[i], 0.0));
@@ -108,29 +102,28 @@ void contact_forces(const StoredRun& run, Comparison& c) {
   c.norms.push_back(cone);
 }
 
-void geometry_and_momentum(const StoredRun& run, Comparison& c) {
+void geometry_and_momentum(const RunView& run, Comparison& c) {
   Norm pen = make("penetration", "m",
                   "max over contacts of max(0, -real_gap_min): real penetration, from the deformed geometry");
-  const nlohmann::json& contacts = run.summary().value("contacts", nlohmann::json::array());
   double p = 0.0;
-  for (const auto& k : contacts) {
-    if (!k.contains("real_gap_min") || !k["real_gap_min"].is_number()) {
+  for (const ContactFacts& k : run.contacts_summary) {
+    if (!k.real_gap_min) {
       pen.unavailable = "no contacts[].real_gap_min in summary.json";
       break;
     }
-    p = std::max(p, -k["real_gap_min"].get<double>());
+    p = std::max(p, -*k.real_gap_min);
   }
   if (pen.unavailable.empty()) pen.value = p;
   c.norms.push_back(pen);
 
   Norm mom =
       make("momentum_drift", "1", "momentum_drift_max / |p(0)|: total momentum change (no support acting)");
-  if (!run.has("px") || !run.has("py") || !run.summary().contains("momentum_drift_max")) {
+  if (!run.has("px") || !run.has("py") || !run.momentum_drift_max) {
     mom.unavailable = "no px/py columns or momentum_drift_max";
   } else {
     const double p0 = std::hypot(run.column("px")[0], run.column("py")[0]);
     if (p0 > 0.0)
-      mom.value = run.summary()["momentum_drift_max"].get<double>() / p0;
+      mom.value = *run.momentum_drift_max / p0;
     else
       mom.unavailable = "zero initial momentum";
   }
@@ -150,9 +143,9 @@ bool known_check(const std::string& name) {
   return std::find(check_names().begin(), check_names().end(), name) != check_names().end();
 }
 
-Comparison check_run(const StoredRun& run) {
+Comparison check_run(const RunView& run) {
   Comparison c;
-  c.run = run.label();
+  c.run = run.label;
   c.reference = "(none: health checks of one run)";
   c.t0 = run.t().front();
   c.t1 = run.t().back();

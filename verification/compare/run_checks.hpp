@@ -9,14 +9,15 @@
 #include <vector>
 
 #include <verification/compare/Comparison.hpp>
-#include <verification/compare/StoredRun.hpp>
+#include <verification/compare/RunView.hpp>
 
 namespace beamimpact::verification {
 
 /// @brief The health metrics of a run: energy_band, energy_growth, dissipated_decrease, tension,
 /// friction_cone, penetration, momentum_drift (definitions in each Norm). A metric the run cannot give (no
 /// dissipated column, no friction coefficient in the summary, ...) is unavailable with the reason.
-Comparison check_run(const StoredRun& run);
+/// @param run the run (a run directory: StoredRun::read(dir).view())
+Comparison check_run(const RunView& run);
 
 /// @brief The names check_run() produces.
 const std::vector<std::string>& check_names();

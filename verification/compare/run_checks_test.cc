@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <verification/compare/StoredRun.hpp>
+
 namespace beamimpact::verification {
 namespace {
 
@@ -26,7 +28,7 @@ StoredRun hand_made() {
 }
 
 TEST(RunChecks, KnownAnswers) {
-  const Comparison c = check_run(hand_made());
+  const Comparison c = check_run(hand_made().view());
   auto v = [&](const char* n) { return c.find(n)->value.value_or(-1.0); };
   EXPECT_NEAR(v("energy_band"), 0.1, 1e-15);
   EXPECT_NEAR(v("energy_growth"), 0.05, 1e-15);
@@ -45,14 +47,15 @@ TEST(RunChecks, InitialEnergyFromTheSummaryWhenGiven) {
   r.columns()["kinetic"] = {9.5, 6.0, 5.5};
   nlohmann::json summary = r.summary();
   summary["energy_initial"] = 10.0;
-  const Comparison c = check_run(StoredRun::from_columns(r.columns(), summary, "closed at t = 0"));
+  const Comparison c = check_run(StoredRun::from_columns(r.columns(), summary, "closed at t = 0").view());
   EXPECT_NEAR(c.find("energy_band")->value.value_or(-1.0), 0.05, 1e-15);
 }
 
 TEST(RunChecks, MissingInputsAreUnavailableWithAReason) {
   StoredRun r = hand_made();
   r.columns().erase("dissipated");
-  const Comparison c = check_run(StoredRun::from_columns(r.columns(), nlohmann::json::object(), "bare"));
+  const Comparison c =
+      check_run(StoredRun::from_columns(r.columns(), nlohmann::json::object(), "bare").view());
   EXPECT_FALSE(c.find("energy_band")->value);
   EXPECT_NE(c.find("energy_band")->unavailable.find("dissipated"), std::string::npos);
   EXPECT_FALSE(c.find("friction_cone")->value);  // no friction coefficient in the summary

@@ -110,8 +110,8 @@ class Loader {
 
   /// Fields shared by runs and references; `dt` is read by the caller (a number or a list).
   /// mesh_ladder: `mesh` is a ladder's list of multipliers (read by read_ladder), not the run's.
-  JobSpec read_spec(TableReader& r, const fs::path& scene, bool with_dt, bool mesh_ladder = false) {
-    JobSpec s;
+  jobs::JobSpec read_spec(TableReader& r, const fs::path& scene, bool with_dt, bool mesh_ladder = false) {
+    jobs::JobSpec s;
     s.scene = scene;
     s.method = r.string("method", "a method name: " + method_names());
     if (!find_method(s.method))
@@ -130,7 +130,6 @@ class Loader {
         r.fail("mesh", "expected an element multiplier or a method's mesh preset name");
     }
     s.set = r.strings("set");
-    s.args = r.strings("args");
     return s;
   }
 
@@ -199,7 +198,7 @@ class Loader {
   Convergence read_ladder(TableReader& r, const std::string& prefix) {
     Convergence v;
     const fs::path scene = scene_path(r);
-    const JobSpec base = read_spec(r, scene, false, r.raw("mesh") && r.raw("mesh")->as_array());
+    const jobs::JobSpec base = read_spec(r, scene, false, r.raw("mesh") && r.raw("mesh")->as_array());
     const int given = r.has("dt") + r.has("fraction") + r.has("mesh") + r.has("rungs");
     if (given != 1)
       r.fail("dt", "expected exactly one of dt = [...], fraction = [...], mesh = [...] or rungs = [...]");
@@ -223,7 +222,7 @@ class Loader {
                                   : "expected decreasing values (coarse to fine)");
     for (double s : v.steps) {
       if (key == "rungs") break;  // read_rungs made the runs
-      JobSpec spec = base;
+      jobs::JobSpec spec = base;
       if (key == "dt")
         spec.dt = s;
       else if (key == "fraction")
@@ -249,7 +248,7 @@ class Loader {
   /// its own step (s) and overrides after the ladder's `set`, and `step`, the value of the refined
   /// quantity that tends to zero (e.g. a contact spring's compliance 1 / k), whose ratios the
   /// observed orders use.
-  void read_rungs(TableReader& r, const std::string& prefix, const JobSpec& base, Convergence& v) {
+  void read_rungs(TableReader& r, const std::string& prefix, const jobs::JobSpec& base, Convergence& v) {
     v.refined = r.string("refined", "the name of the refined quantity the rungs' step gives (e.g. \"1/k\")");
     const toml::node* n = r.raw("rungs");
     const toml::array* a = n ? n->as_array() : nullptr;
@@ -261,7 +260,7 @@ class Loader {
       TableReader q(*t, file_, p, nullptr);
       const double step = q.number("step", "the refined quantity's value at this rung, > 0");
       if (!(step > 0.0)) q.fail("step", "expected the refined quantity's value at this rung, > 0");
-      JobSpec spec = base;
+      jobs::JobSpec spec = base;
       if (q.has("dt")) {
         spec.dt = q.number("dt", "a positive time step (s)");
         if (!(*spec.dt > 0.0)) q.fail("dt", "expected a positive time step (s)");
@@ -294,7 +293,7 @@ std::string Case::name() const {
 }
 
 std::string Convergence::name() const {
-  const JobSpec& first = runs.front();
+  const jobs::JobSpec& first = runs.front();
   const bool by_mesh = refined == "mesh";
   std::string s = first.scene_name() + " " + first.method + " " + refined + "=";
   for (std::size_t i = 0; i < steps.size(); ++i)
@@ -313,10 +312,10 @@ const std::vector<std::string>& VerificationMatrix::tier_names() {
   return t;
 }
 
-std::vector<JobSpec> VerificationMatrix::runs(const std::string& tier) const {
-  std::vector<JobSpec> out;
+std::vector<jobs::JobSpec> VerificationMatrix::runs(const std::string& tier) const {
+  std::vector<jobs::JobSpec> out;
   std::set<std::string> seen;
-  auto add = [&](const JobSpec& s) {
+  auto add = [&](const jobs::JobSpec& s) {
     if (seen.insert(s.key()).second) out.push_back(s);
   };
   for (const auto& c : cases)

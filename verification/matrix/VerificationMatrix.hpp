@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include <verification/matrix/JobSpec.hpp>
+#include <verification/jobs/JobSpec.hpp>
 
 namespace beamimpact::verification {
 
@@ -27,7 +27,7 @@ struct Gate {
 
 /// @brief A run compared with a reference run.
 struct Case {
-  JobSpec run, reference;
+  jobs::JobSpec run, reference;
   std::string tier = "quick";  ///< "quick" (CI) or "full"
   bool required = true;        ///< a skipped run fails the gate when required
   std::vector<Gate> gates;
@@ -41,11 +41,11 @@ struct Case {
 /// consecutive pairs are compared (self-convergence); with one, every rung is compared with it.
 /// The observed order of each norm is p = log(e_i / e_{i+1}) / log(r), r the refinement ratio.
 struct Convergence {
-  std::vector<JobSpec> runs;  ///< coarse to fine
+  std::vector<jobs::JobSpec> runs;  ///< coarse to fine
   std::vector<double>
       steps;  ///< the refined quantity of each run: dt, fraction, 1 / mesh multiplier, or a rung's step
   std::string refined = "dt";  ///< what is refined: "dt", "fraction", "mesh", or the rungs' `refined` name
-  std::optional<JobSpec> reference;  ///< when set, errors are against it (e.g. the exact solution)
+  std::optional<jobs::JobSpec> reference;  ///< when set, errors are against it (e.g. the exact solution)
   std::string tier = "quick";
   bool required = true;
   std::vector<Gate> gates;  ///< min_order (and optionally tol on the finest pair)
@@ -57,7 +57,7 @@ struct Convergence {
 /// @brief Health checks of one run, no reference (the stability tier): gates on the metrics of
 /// check_run() (energy band, tension, friction cone, real penetration, momentum drift).
 struct RunCheck {
-  JobSpec run;
+  jobs::JobSpec run;
   std::string tier = "stability";
   bool required = true;
   std::vector<Gate> gates;
@@ -79,7 +79,7 @@ struct VerificationMatrix {
   /// unknown keys, unknown metrics, gates without a tolerance or reason, and missing scenes.
   static VerificationMatrix load(const std::filesystem::path& file);
   /// @brief Every distinct run needed by the cases, ladders and checks of a tier.
-  std::vector<JobSpec> runs(const std::string& tier) const;
+  std::vector<jobs::JobSpec> runs(const std::string& tier) const;
   /// @brief The tiers: "quick" (CI), "stability" (hard cases' health checks), "full" (all items,
   /// plus fine meshes and small steps).
   static const std::vector<std::string>& tier_names();

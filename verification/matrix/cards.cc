@@ -83,10 +83,8 @@ BenchmarkCard read_card(TableReader& r, const std::string& key, const fs::path& 
   if (!ref || !ref->as_table())
     r.fail("reference", "expected { method = NAME } of a reference method (" + reference_names() + ")");
   TableReader rr(*ref->as_table(), r.file(), key + ".reference", nullptr);
-  c.reference =
-      JobSpec{c.scene,           rr.string("method", "a reference method (" + reference_names() + ")"),
-              std::nullopt,      "",
-              rr.strings("set"), {}};
+  c.reference = jobs::JobSpec{c.scene, rr.string("method", "a reference method (" + reference_names() + ")"),
+                              std::nullopt, "", rr.strings("set")};
   const Method* m = find_method(c.reference.method);
   if (!m || m->as_reference.rank == ReferenceRank::kNone)
     rr.fail("method", "expected a reference method (ranked in the registry: " + reference_names() +

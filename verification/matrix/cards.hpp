@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include <verification/matrix/JobSpec.hpp>
+#include <verification/jobs/JobSpec.hpp>
 #include <verification/matrix/VerificationMatrix.hpp>
 
 namespace beamimpact::verification {
@@ -32,7 +32,7 @@ bool settled_metric(const std::string& metric);
 struct BenchmarkCard {
   std::filesystem::path scene;        ///< absolute, normalised
   std::string set;                    ///< "paper", "hard" or "exact"
-  JobSpec reference;                  ///< a reference method (exact, or ida with the card's settings)
+  jobs::JobSpec reference;            ///< a reference method (exact, or ida with the card's settings)
   std::string source;                 ///< the matrix row the tolerances come from ("" derived)
   std::string note;                   ///< why a quantity of the scene is not on the card ("" none)
   std::vector<Gate> quantities;       ///< each with tol and why

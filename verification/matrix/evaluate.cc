@@ -29,20 +29,21 @@ void not_evaluated(ItemResult& r, const std::vector<Gate>& gates, const std::str
 }
 
 /// The runs needed, in order; returns false (and fills the gates) when one is not ok.
-bool runs_ok(ItemResult& r, const std::vector<const JobSpec*>& specs, const std::vector<Gate>& gates,
-             const std::map<std::string, JobOutcome>& runs) {
-  for (const JobSpec* s : specs) {
+bool runs_ok(ItemResult& r, const std::vector<const jobs::JobSpec*>& specs, const std::vector<Gate>& gates,
+             const std::map<std::string, jobs::JobOutcome>& runs) {
+  for (const jobs::JobSpec* s : specs) {
     const auto it = runs.find(s->key());
     if (it == runs.end()) {
       not_evaluated(r, gates, "run " + s->label() + " was not run", false);
       return false;
     }
-    if (it->second.status != JobOutcome::Status::kOk) {
+    if (it->second.status != jobs::JobOutcome::Status::kOk) {
       const auto st = it->second.status;
-      const bool skipped = st == JobOutcome::Status::kSkipped || st == JobOutcome::Status::kNotApplicable;
-      const char* how = st == JobOutcome::Status::kNotApplicable ? " not applicable: "
-                        : skipped                                ? ": "
-                                                                 : " failed: ";
+      const bool skipped =
+          st == jobs::JobOutcome::Status::kSkipped || st == jobs::JobOutcome::Status::kNotApplicable;
+      const char* how = st == jobs::JobOutcome::Status::kNotApplicable ? " not applicable: "
+                        : skipped                                      ? ": "
+                                                                       : " failed: ";
       not_evaluated(r, gates, s->label() + how + it->second.message, skipped);
       return false;
     }
@@ -128,8 +129,9 @@ std::optional<double> observed_order(std::optional<double> e_coarse, std::option
 namespace {
 
 /// An item about one run under test: its identity and the run's times.
-ItemResult item_for(const char* kind, const JobSpec& run, const std::string& name, const std::string& tier,
-                    bool required, const std::string& note, const std::map<std::string, JobOutcome>& runs) {
+ItemResult item_for(const char* kind, const jobs::JobSpec& run, const std::string& name,
+                    const std::string& tier, bool required, const std::string& note,
+                    const std::map<std::string, jobs::JobOutcome>& runs) {
   ItemResult r;
   r.kind = kind;
   r.scene = run.scene_name();
@@ -159,7 +161,7 @@ void apply_gates(ItemResult& r, const std::vector<Gate>& gates, F compute, const
 
 }  // namespace
 
-ItemResult evaluate_case(const Case& c, const std::map<std::string, JobOutcome>& runs) {
+ItemResult evaluate_case(const Case& c, const std::map<std::string, jobs::JobOutcome>& runs) {
   ItemResult r = item_for("case", c.run, c.name(), c.tier, c.required, c.note, runs);
   r.reference = c.reference.scene == c.run.scene ? c.reference.settings_label() : c.reference.label();
   // Name every case by its step, also when the scene chose it (dt = "auto" or the scene's dt).
@@ -171,24 +173,25 @@ ItemResult evaluate_case(const Case& c, const std::map<std::string, JobOutcome>&
   apply_gates(
       r, c.gates,
       [&] {
-        return compare_runs(*stored_run(runs.at(c.run.key())), *stored_run(runs.at(c.reference.key())));
+        return compare_runs(jobs::stored_run(runs.at(c.run.key()))->view(),
+                            jobs::stored_run(runs.at(c.reference.key()))->view());
       },
       "comparison");
   return r;
 }
 
-ItemResult evaluate_check(const RunCheck& c, const std::map<std::string, JobOutcome>& runs) {
+ItemResult evaluate_check(const RunCheck& c, const std::map<std::string, jobs::JobOutcome>& runs) {
   ItemResult r = item_for("check", c.run, c.name(), c.tier, c.required, c.note, runs);
   if (!runs_ok(r, {&c.run}, c.gates, runs)) return r;  // a crash, a NaN or a refusal fails every gate
   apply_gates(
-      r, c.gates, [&] { return check_run(*stored_run(runs.at(c.run.key()))); }, "health check");
+      r, c.gates, [&] { return check_run(jobs::stored_run(runs.at(c.run.key()))->view()); }, "health check");
   return r;
 }
 
 namespace {
 
 /// A ladder's item: its identity and the wall times of its rungs.
-ItemResult ladder_item(const Convergence& v, const std::map<std::string, JobOutcome>& runs) {
+ItemResult ladder_item(const Convergence& v, const std::map<std::string, jobs::JobOutcome>& runs) {
   ItemResult r;
   r.kind = "convergence";
   r.scene = v.runs.front().scene_name();
@@ -207,15 +210,15 @@ ItemResult ladder_item(const Convergence& v, const std::map<std::string, JobOutc
 }
 
 /// The ladder's comparisons: every rung against the reference, or consecutive pairs.
-void compare_rungs(const Convergence& v, const std::map<std::string, JobOutcome>& runs, ItemResult& r) {
+void compare_rungs(const Convergence& v, const std::map<std::string, jobs::JobOutcome>& runs, ItemResult& r) {
   std::vector<std::shared_ptr<const StoredRun>> rungs;  // each rung once, also when read here
-  for (const auto& s : v.runs) rungs.push_back(stored_run(runs.at(s.key())));
+  for (const auto& s : v.runs) rungs.push_back(jobs::stored_run(runs.at(s.key())));
   if (v.reference) {  // every rung against the reference
-    const auto ref = stored_run(runs.at(v.reference->key()));
-    for (const auto& rung : rungs) r.comparisons.push_back(compare_runs(*rung, *ref));
+    const auto ref = jobs::stored_run(runs.at(v.reference->key()));
+    for (const auto& rung : rungs) r.comparisons.push_back(compare_runs(rung->view(), ref->view()));
   } else {  // consecutive pairs
     for (std::size_t i = 0; i + 1 < rungs.size(); ++i)
-      r.comparisons.push_back(compare_runs(*rungs[i], *rungs[i + 1]));
+      r.comparisons.push_back(compare_runs(rungs[i]->view(), rungs[i + 1]->view()));
   }
 }
 
@@ -300,9 +303,9 @@ GateResult ladder_gate(const Gate& g, const ItemResult& r) {
 
 }  // namespace
 
-ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, JobOutcome>& runs) {
+ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, jobs::JobOutcome>& runs) {
   ItemResult r = ladder_item(v, runs);
-  std::vector<const JobSpec*> specs;
+  std::vector<const jobs::JobSpec*> specs;
   if (v.reference) specs.push_back(&*v.reference);
   for (const auto& s : v.runs) specs.push_back(&s);
   if (!runs_ok(r, specs, v.gates, runs)) return r;

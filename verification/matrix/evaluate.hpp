@@ -11,8 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include <verification/compare/Comparison.hpp>
+#include <verification/jobs/execute_jobs.hpp>
 #include <verification/matrix/VerificationMatrix.hpp>
-#include <verification/matrix/execute_jobs.hpp>
 
 namespace beamimpact::verification {
 
@@ -85,10 +85,10 @@ bool verification_passed(const std::vector<ItemResult>& items, bool complete);
 GateResult check_gate(const Gate& gate, const Comparison& cmp);
 
 /// @brief Evaluates a case from the finished runs (keyed by JobSpec::key()).
-ItemResult evaluate_case(const Case& c, const std::map<std::string, JobOutcome>& runs);
+ItemResult evaluate_case(const Case& c, const std::map<std::string, jobs::JobOutcome>& runs);
 
 /// @brief Evaluates the health checks of one run (check_run()) from the finished runs.
-ItemResult evaluate_check(const RunCheck& c, const std::map<std::string, JobOutcome>& runs);
+ItemResult evaluate_check(const RunCheck& c, const std::map<std::string, jobs::JobOutcome>& runs);
 
 /// @brief The Richardson limit of three rungs q1, q2, q3 (coarse to fine, refinement ratio r) with
 /// their own observed order: {limit, order}; empty when the differences do not shrink monotonically (no
@@ -96,7 +96,7 @@ ItemResult evaluate_check(const RunCheck& c, const std::map<std::string, JobOutc
 std::optional<std::pair<double, double>> richardson_limit(double q1, double q2, double q3, double r);
 
 /// @brief Evaluates a convergence ladder from the finished runs.
-ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, JobOutcome>& runs);
+ItemResult evaluate_ladder(const Convergence& v, const std::map<std::string, jobs::JobOutcome>& runs);
 
 /// @brief Observed order p = log(e_coarse / e_fine) / log(r); empty when an error is zero or missing.
 std::optional<double> observed_order(std::optional<double> e_coarse, std::optional<double> e_fine, double r);

@@ -135,14 +135,14 @@ TEST(Evaluate, ALadderSaysWhatItIsJudgedAgainst) {
 double pulse(double t) { return t > 1.0 && t < 2.0 ? std::pow(std::sin(M_PI * (t - 1.0)), 2) : 0.0; }
 
 /// A finished run in memory whose force is `scale` times the pulse.
-JobOutcome scaled_run(const JobSpec& spec, double scale) {
+jobs::JobOutcome scaled_run(const jobs::JobSpec& spec, double scale) {
   auto run = std::make_shared<const StoredRun>(
       testing::synthetic(0.01, 3.0, [scale](double t) { return scale * pulse(t); }));
-  return JobOutcome{spec, {}, JobOutcome::Status::kOk, "", 0.0, 0.0, 300, 0.01, run};
+  return jobs::JobOutcome{spec, {}, jobs::JobOutcome::Status::kOk, "", 0.0, 0.0, 300, 0.01, run};
 }
 
-JobSpec spec_at(const std::string& method, std::optional<double> dt) {
-  return JobSpec{"pulse.toml", method, dt, "", {}, {}};
+jobs::JobSpec spec_at(const std::string& method, std::optional<double> dt) {
+  return jobs::JobSpec{"pulse.toml", method, dt, "", {}};
 }
 
 double norm_of(const Comparison& c, const std::string& name) {
@@ -157,8 +157,8 @@ TEST(Evaluate, ACaseMeasuresTheRunAgainstItsReference) {
   c.reference = spec_at("exact", std::nullopt);
   // tol 0.75 lies between e = 1 (run against reference) and e / (1 + e) = 0.5 (swapped).
   c.gates = {{"impulse", 0.75, std::nullopt, "t", std::nullopt}};
-  const std::map<std::string, JobOutcome> runs = {{c.run.key(), scaled_run(c.run, 2.0)},
-                                                  {c.reference.key(), scaled_run(c.reference, 1.0)}};
+  const std::map<std::string, jobs::JobOutcome> runs = {{c.run.key(), scaled_run(c.run, 2.0)},
+                                                        {c.reference.key(), scaled_run(c.reference, 1.0)}};
   const ItemResult r = evaluate_case(c, runs);
   ASSERT_EQ(r.comparisons.size(), 1u);
   // Both histories are the same pulse on the same rows: the errors are e = 1 to roundoff.
@@ -174,7 +174,7 @@ TEST(Evaluate, ACaseMeasuresTheRunAgainstItsReference) {
 TEST(Evaluate, ALadderMeasuresEveryRungAgainstItsReference) {
   Convergence v;
   const double steps[3] = {0.25, 0.125, 0.0625}, e[3] = {0.4, 0.1, 0.025};
-  std::map<std::string, JobOutcome> runs;
+  std::map<std::string, jobs::JobOutcome> runs;
   for (int k = 0; k < 3; ++k) {
     v.runs.push_back(spec_at("paper", steps[k]));
     v.steps.push_back(steps[k]);
@@ -205,7 +205,7 @@ TEST(Evaluate, ALadderMeasuresEveryRungAgainstItsReference) {
 TEST(Evaluate, ASelfConvergenceLadderTakesTheFinerRungAsTheReference) {
   Convergence v;
   const double steps[3] = {0.25, 0.125, 0.0625}, e[3] = {0.4, 0.1, 0.025};
-  std::map<std::string, JobOutcome> runs;
+  std::map<std::string, jobs::JobOutcome> runs;
   for (int k = 0; k < 3; ++k) {
     v.runs.push_back(spec_at("paper", steps[k]));
     v.steps.push_back(steps[k]);

@@ -11,9 +11,9 @@
 
 #include <api/registry.hpp>
 #include <verification/compare/StoredRun.hpp>
+#include <verification/jobs/execute_jobs.hpp>
 #include <verification/matrix/VerificationMatrix.hpp>
 #include <verification/matrix/evaluate.hpp>
-#include <verification/matrix/execute_jobs.hpp>
 
 namespace beamimpact::verification {
 namespace {
@@ -61,14 +61,15 @@ class GatesBite : public ::testing::Test {
   }
 
   /// Runs the case's run and reference for real.
-  std::map<std::string, JobOutcome> run(const Case& c) {
-    auto out = execute_jobs({c.run, c.reference}, tmp_ / "runs", launcher_, 2, 600.0);
-    for (const auto& [k, o] : out) EXPECT_EQ(o.status, JobOutcome::Status::kOk) << k << ": " << o.message;
+  std::map<std::string, jobs::JobOutcome> run(const Case& c) {
+    auto out = *jobs::execute_jobs({c.run, c.reference}, tmp_ / "runs", launcher_, 2, 600.0);
+    for (const auto& [k, o] : out)
+      EXPECT_EQ(o.status, jobs::JobOutcome::Status::kOk) << k << ": " << o.message;
     return out;
   }
 
   /// Evaluates the case with the run replaced by a perturbed copy; returns the gate's status.
-  std::optional<GateStatus> gate_status(const Case& c, std::map<std::string, JobOutcome> runs,
+  std::optional<GateStatus> gate_status(const Case& c, std::map<std::string, jobs::JobOutcome> runs,
                                         const fs::path& dir, const std::string& metric,
                                         std::string* message = nullptr) {
     runs.at(c.run.key()).dir = dir;
@@ -83,7 +84,7 @@ class GatesBite : public ::testing::Test {
   }
 
   VerificationMatrix matrix_;
-  Launcher launcher_;
+  jobs::Launcher launcher_;
   fs::path tmp_;
 };
 
@@ -160,10 +161,11 @@ TEST_F(GatesBite, LostImpactFails) {
 // and on the impulse per impact, while the scene's own mesh passes.
 TEST_F(GatesBite, MergedContactPeriodsFail) {
   const Case& c = row("two_rods_second_contact", "paper", "impacts");
-  JobSpec coarse = c.run;
+  jobs::JobSpec coarse = c.run;
   coarse.set = {"bodies[0].elements=1", "bodies[1].elements=1"};
-  const auto runs = execute_jobs({c.run, coarse, c.reference}, tmp_ / "runs", launcher_, 2, 600.0);
-  for (const auto& [k, o] : runs) ASSERT_EQ(o.status, JobOutcome::Status::kOk) << k << ": " << o.message;
+  const auto runs = *jobs::execute_jobs({c.run, coarse, c.reference}, tmp_ / "runs", launcher_, 2, 600.0);
+  for (const auto& [k, o] : runs)
+    ASSERT_EQ(o.status, jobs::JobOutcome::Status::kOk) << k << ": " << o.message;
   const StoredRun merged = StoredRun::read(runs.at(coarse.key()).dir);
   ASSERT_EQ(merged.summary()["contacts"][0]["intervals"].size(), 1u) << "the coarse mesh no longer merges";
   std::string msg;

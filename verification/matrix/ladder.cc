@@ -10,7 +10,7 @@
 
 namespace beamimpact::verification {
 
-LadderPlan plan_ladder(const JobSpec& base, const Method& method, int rungs) {
+LadderPlan plan_ladder(const jobs::JobSpec& base, const Method& method, int rungs) {
   LadderPlan p;
   const std::optional<double> dt = load_scene(base.scene).time.dt;  // empty: "auto"
   const bool mesh = method.accepts.mesh_factor, step = method.accepts.dt && dt.has_value();
@@ -28,7 +28,7 @@ LadderPlan plan_ladder(const JobSpec& base, const Method& method, int rungs) {
                        "semi-discrete answer, its mesh error stays",
                        *dt);
   for (int k = 0; k < rungs; ++k) {
-    JobSpec s = base;
+    jobs::JobSpec s = base;
     const int factor = 1 << k;
     if (k > 0 && mesh) s.mesh = std::to_string(factor);
     if (k > 0 && step) s.dt = *dt / factor;

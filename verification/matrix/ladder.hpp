@@ -10,7 +10,7 @@
 #include <vector>
 
 #include <api/registry.hpp>
-#include <verification/matrix/JobSpec.hpp>
+#include <verification/jobs/JobSpec.hpp>
 
 namespace beamimpact::verification {
 
@@ -36,8 +36,8 @@ struct LadderPlan {
   /// the step following from the scene), "dt" (dt / 2 a rung, the mesh kept: the limit is the
   /// method's semi-discrete answer) or "" (no ladder).
   std::string kind;
-  std::string why;             ///< in words: what is refined, or why there is no ladder
-  std::vector<JobSpec> rungs;  ///< coarse to fine; rungs[0] is the scene as written
+  std::string why;                   ///< in words: what is refined, or why there is no ladder
+  std::vector<jobs::JobSpec> rungs;  ///< coarse to fine; rungs[0] is the scene as written
 };
 
 /// @brief Plans the ladder of `rungs` runs of `base` (a run at the scene's own settings): mesh and
@@ -47,7 +47,7 @@ struct LadderPlan {
 /// @param base the run at the scene's settings (no dt, no mesh)
 /// @param method the method's registry entry (Method::Accepts)
 /// @param rungs how many runs, >= 3
-LadderPlan plan_ladder(const JobSpec& base, const Method& method, int rungs);
+LadderPlan plan_ladder(const jobs::JobSpec& base, const Method& method, int rungs);
 
 /// @brief One gated scalar along a ladder.
 struct LadderResult {

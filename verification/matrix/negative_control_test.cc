@@ -20,9 +20,9 @@
 #include <solver/record/ResultRecorder.hpp>
 #include <solver/record/output_files.hpp>
 #include <solver/scene/scene_io.hpp>
+#include <verification/jobs/execute_jobs.hpp>
 #include <verification/matrix/VerificationMatrix.hpp>
 #include <verification/matrix/evaluate.hpp>
-#include <verification/matrix/execute_jobs.hpp>
 
 namespace beamimpact::verification {
 namespace {
@@ -89,12 +89,13 @@ TEST(NegativeControl, DisplacementOnlyContactFailsTheBouncingBar) {
     if (c.run.scene_name() == "bouncing_bar" && c.run.method == "paper" && c.reference.method == "exact")
       row = &c;
   ASSERT_NE(row, nullptr) << "matrix.toml has no bouncing_bar paper-vs-exact row";
-  Launcher launcher;
+  jobs::Launcher launcher;
   launcher.exe = BEAMIMPACT_EXE;
   const fs::path tmp = fs::temp_directory_path() / fmt::format("beamimpact_negative_control_{}", ::getpid());
   fs::remove_all(tmp);
-  auto runs = execute_jobs({row->run, row->reference}, tmp / "runs", launcher, 2, 600.0);
-  for (const auto& [k, o] : runs) ASSERT_EQ(o.status, JobOutcome::Status::kOk) << k << ": " << o.message;
+  auto runs = *jobs::execute_jobs({row->run, row->reference}, tmp / "runs", launcher, 2, 600.0);
+  for (const auto& [k, o] : runs)
+    ASSERT_EQ(o.status, jobs::JobOutcome::Status::kOk) << k << ": " << o.message;
 
   // The paper method passes every gate of the row.
   for (const auto& g : evaluate_case(*row, runs).gates)

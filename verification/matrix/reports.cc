@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include <verification/matrix/Table.hpp>
+#include <verification/jobs/Table.hpp>
 
 namespace beamimpact::verification {
 
@@ -57,7 +57,7 @@ std::string ladder_tables(const ItemResult& i) {
   std::vector<std::string> header{"norm"};
   for (std::size_t k = 0; k < ne; ++k) header.push_back(fmt::format("e{}", k + 1));
   for (std::size_t k = 0; k + 1 < ne; ++k) header.push_back(fmt::format("p{}", k + 1));
-  Table orders(header);
+  jobs::Table orders(header);
   for (const auto& c : i.comparisons.front().norms) {
     const auto& [e, p] = i.orders.at(c.name);
     std::vector<std::string> row{c.name};
@@ -67,7 +67,7 @@ std::string ladder_tables(const ItemResult& i) {
   }
   m += orders.markdown();
   if (i.richardson.empty()) return m;
-  Table rich({"norm", "order p", "limit Q_R", "reference", "abs(Q_R - ref) / ref", "E_R / ref"});
+  jobs::Table rich({"norm", "order p", "limit Q_R", "reference", "abs(Q_R - ref) / ref", "E_R / ref"});
   for (const auto& [name, x] : i.richardson)
     rich.add({name, fmt::format("{:.2f}", x.order), fmt::format("{:.6g}", x.limit),
               fmt::format("{:.6g}", x.reference), fmt::format("{:.2e}", x.error),
@@ -199,7 +199,7 @@ void write_markdown(const std::filesystem::path& file, const ReportContext& ctx,
        "Wall: process time of the run under test (ladders: all rungs).\n";
 
   for (const auto& [scene, list] : by_scene(items)) {
-    Table gates({"run", "reference", "norm", "value", "limit", "result", "wall s"});
+    jobs::Table gates({"run", "reference", "norm", "value", "limit", "result", "wall s"});
     for (const auto* i : list) {
       const auto [run, reference] = row_labels(*i);
       for (const auto& g : i->gates) {

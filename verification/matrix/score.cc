@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <map>
 #include <set>
+#include <sstream>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -13,9 +14,10 @@
 #include <api/methods_file.hpp>
 #include <beamimpact/version.hpp>
 #include <solver/util/InputError.hpp>
+#include <verification/jobs/execute_jobs.hpp>
+#include <verification/jobs/interruption.hpp>
+#include <verification/jobs/task_farm.hpp>
 #include <verification/matrix/cards.hpp>
-#include <verification/matrix/execute_jobs.hpp>
-#include <verification/matrix/interruption.hpp>
 #include <verification/matrix/protocol_inputs.hpp>
 #include <verification/matrix/reports.hpp>
 
@@ -27,51 +29,69 @@ using Items = std::vector<ScoreItem>;
 
 /// Every distinct run the methods' items need from `pick`, in order.
 template <class F>
-std::vector<JobSpec> distinct(const std::vector<MethodScore>& scores, F pick) {
-  std::vector<JobSpec> specs;
+std::vector<jobs::JobSpec> distinct(const std::vector<MethodScore>& scores, F pick) {
+  std::vector<jobs::JobSpec> specs;
   std::set<std::string> seen;
   for (const MethodScore& s : scores)
     for (const ScoreItem& it : *s.items)
-      for (const JobSpec& spec : pick(it))
+      for (const jobs::JobSpec& spec : pick(it))
         if (seen.insert(spec.key()).second) specs.push_back(spec);
   return specs;
 }
 
 /// Phase 2: the references (and their checks) of the items whose every run finished, in the
-/// cache (a reference recorded there with the same input is taken, not run again).
-void run_references(const std::vector<MethodScore>& scores, std::map<std::string, JobOutcome>& runs,
-                    const fs::path& cache, Launcher launcher, const ScoreOptions& o) {
-  const auto ok = [&](const JobSpec& s) {
-    const auto it = runs.find(s.key());
-    return it != runs.end() && it->second.status == JobOutcome::Status::kOk;
+/// cache (a reference recorded there with the same input is taken, not run again). `runs` is
+/// rank 0's (nullopt on the other ranks of an MPI job, which learn the list from rank 0).
+void run_references(const std::vector<MethodScore>& scores,
+                    std::optional<std::map<std::string, jobs::JobOutcome>>& runs, const fs::path& cache,
+                    jobs::Launcher launcher, const ScoreOptions& o) {
+  const auto ok = [&](const jobs::JobSpec& s) {
+    const auto it = runs->find(s.key());
+    return it != runs->end() && it->second.status == jobs::JobOutcome::Status::kOk;
   };
-  const std::vector<JobSpec> refs = distinct(scores, [&](const ScoreItem& it) {
-    std::vector<JobSpec> out;
-    const bool finished = ok(it.run) && std::all_of(it.ladder.rungs.begin(), it.ladder.rungs.end(), ok);
-    if (finished) out.push_back(it.reference);
-    if (finished && it.reference_check) out.push_back(*it.reference_check);
+  std::string wanted;  // the keys of the references to run, one per line
+  if (runs)
+    for (const MethodScore& m : scores)
+      for (const ScoreItem& it : *m.items)
+        if (ok(it.run) && std::all_of(it.ladder.rungs.begin(), it.ladder.rungs.end(), ok)) {
+          wanted += it.reference.key() + "\n";
+          if (it.reference_check) wanted += it.reference_check->key() + "\n";
+        }
+  std::set<std::string> keys;
+  std::istringstream lines(jobs::World::broadcast(wanted));
+  for (std::string key; std::getline(lines, key);) keys.insert(key);
+  const std::vector<jobs::JobSpec> refs = distinct(scores, [&](const ScoreItem& it) {
+    std::vector<jobs::JobSpec> out;
+    for (const jobs::JobSpec* s : {&it.reference, it.reference_check ? &*it.reference_check : nullptr})
+      if (s && keys.count(s->key())) out.push_back(*s);
     return out;
   });
-  fmt::print(stderr,
-             "score: phase 2 of 2: {} reference run(s) of the scenes the method(s) ran, cached in {}\n",
-             refs.size(), cache.string());
+  if (runs)
+    fmt::print(stderr,
+               "score: phase 2 of 2: {} reference run(s) of the scenes the method(s) ran, cached in {}{}\n",
+               refs.size(), cache.string(), jobs::executor_note());
   launcher.reuse_finished = true;
-  for (auto& [key, outcome] : execute_jobs(refs, cache, launcher, o.jobs, o.timeout))
-    runs.insert_or_assign(key, std::move(outcome));
+  auto ran = jobs::execute_jobs(refs, cache, launcher, o.jobs, o.timeout);
+  if (ran && runs)
+    for (auto& [key, outcome] : *ran) runs->insert_or_assign(key, std::move(outcome));
 }
 
-/// Phase 1: the methods' own runs (every ladder rung, else the one run) under out/runs.
-std::map<std::string, JobOutcome> run_methods(const std::vector<MethodScore>& scores,
-                                              const Launcher& launcher, const ScoreOptions& o) {
-  const std::vector<JobSpec> own = distinct(scores, [](const ScoreItem& it) {
-    return it.ladder.rungs.empty() ? std::vector<JobSpec>{it.run} : it.ladder.rungs;
+/// Phase 1: the methods' own runs (every ladder rung, else the one run) under out/runs; nullopt
+/// on the ranks of an MPI job other than 0.
+std::optional<std::map<std::string, jobs::JobOutcome>> run_methods(const std::vector<MethodScore>& scores,
+                                                                   const jobs::Launcher& launcher,
+                                                                   const ScoreOptions& o) {
+  const std::vector<jobs::JobSpec> own = distinct(scores, [](const ScoreItem& it) {
+    return it.ladder.rungs.empty() ? std::vector<jobs::JobSpec>{it.run} : it.ladder.rungs;
   });
-  fmt::print(stderr, "score {}: {} scene(s) of {}; {}; phase 1 of 2: {} run(s) of the method(s), {} job(s)\n",
-             fmt::join(o.methods, " "), scores.front().items->size(), fmt::join(o.sets, ", "),
-             o.ladder ? fmt::format("a ladder of {} rungs on each scene with an exact answer", o.rungs)
-                      : std::string("single resolution (--no-ladder)"),
-             own.size(), o.jobs);
-  return execute_jobs(own, o.out_dir() / "runs", launcher, o.jobs, o.timeout);
+  if (jobs::World::rank() == 0)
+    fmt::print(stderr,
+               "score {}: {} scene(s) of {}; {}; phase 1 of 2: {} run(s) of the method(s), {} job(s){}\n",
+               fmt::join(o.methods, " "), scores.front().items->size(), fmt::join(o.sets, ", "),
+               o.ladder ? fmt::format("a ladder of {} rungs on each scene with an exact answer", o.rungs)
+                        : std::string("single resolution (--no-ladder)"),
+               own.size(), o.jobs, jobs::executor_note());
+  return jobs::execute_jobs(own, o.out_dir() / "runs", launcher, o.jobs, o.timeout);
 }
 
 /// The command line that makes this score again (written into every scorecard).
@@ -145,17 +165,18 @@ int ScoreResult::exit_code() const {
   return code;
 }
 
-ScoreResult score(const ScoreOptions& o, const fs::path& exe) {
+std::optional<ScoreResult> score(const ScoreOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   o.validate();
   ScoreResult r;
   r.methods = plan(o);
   r.cache = o.cache_dir();
-  Launcher launcher;
-  launcher.exe = exe;
-  launcher.methods_files = loaded_methods_files();  // each run sees the same registry
-  std::map<std::string, JobOutcome> runs = run_methods(r.methods, launcher, o);
-  if (!interruption()) run_references(r.methods, runs, r.cache, launcher, o);
+  const jobs::Launcher launcher = jobs::launcher_for(o.exe, 0);
+  std::optional<std::map<std::string, jobs::JobOutcome>> ran = run_methods(r.methods, launcher, o);
+  // Every rank takes the same turn: an interruption reaches every rank of the job.
+  if (!jobs::interruption()) run_references(r.methods, ran, r.cache, launcher, o);
+  if (!ran) return std::nullopt;  // an MPI worker rank: rank 0 judges
+  std::map<std::string, jobs::JobOutcome>& runs = *ran;
   r.command = command_line(o);
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (MethodScore& m : r.methods) {
@@ -163,7 +184,7 @@ ScoreResult score(const ScoreOptions& o, const fs::path& exe) {
     m.verdict = score_verdict(m.method, m.rows);
     if (!o.baseline.empty()) m.ratchet = ratchet(o.baseline, m.method, o, m.rows);
   }
-  r.interrupted = interruption();
+  r.interrupted = jobs::interruption();
   r.made = utc_now();
   return r;
 }

@@ -51,9 +51,9 @@ struct ScoreResult {
 /// references of the scenes whose runs all finished into the reference cache (a reference recorded
 /// there with the same input is taken, not run again), and judges every method's rows. Progress
 /// goes to stderr. An interruption (interruption()) ends the runs: what finished is judged.
-/// @param o the options; @param exe the beamimpact executable the runs start (with --methods for
-/// each methods file read)
-ScoreResult score(const ScoreOptions& o, const std::filesystem::path& exe);
+/// Under mpirun the runs are spread over the ranks (jobs::execute_jobs); nullopt on the ranks
+/// other than 0.
+std::optional<ScoreResult> score(const ScoreOptions& o);
 
 /// @brief What a method's scorecard.json says of how it was made (its command, version, date,
 /// options and cache).

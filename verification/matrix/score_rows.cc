@@ -13,13 +13,14 @@
 namespace beamimpact::verification {
 namespace {
 
-using Status = JobOutcome::Status;
+using Status = jobs::JobOutcome::Status;
 
 /// The outcome of `spec`, or a failed one when it was not run.
-JobOutcome outcome_of(const std::map<std::string, JobOutcome>& runs, const JobSpec& spec, const char* why) {
+jobs::JobOutcome outcome_of(const std::map<std::string, jobs::JobOutcome>& runs, const jobs::JobSpec& spec,
+                            const char* why) {
   const auto it = runs.find(spec.key());
   if (it != runs.end()) return it->second;
-  return JobOutcome{spec, {}, Status::kSkipped, why, 0.0, 0.0, 0, 0.0, nullptr};
+  return jobs::JobOutcome{spec, {}, Status::kSkipped, why, 0.0, 0.0, 0, 0.0, nullptr};
 }
 
 /// Quantities whose norm's `a` is the run's own value of a smooth scalar (its limit extrapolates):
@@ -156,17 +157,18 @@ ScoreQuantity on_ladder(const Gate& g, const std::vector<Comparison>& cmps) {
 
 /// The reference compared with its check (its spread), or none: no check, or the check did not
 /// finish or compare (said in `note`).
-std::optional<Comparison> reference_spread(const ScoreItem& it, const JobOutcome& ref,
-                                           const std::map<std::string, JobOutcome>& runs, std::string& note) {
+std::optional<Comparison> reference_spread(const ScoreItem& it, const jobs::JobOutcome& ref,
+                                           const std::map<std::string, jobs::JobOutcome>& runs,
+                                           std::string& note) {
   if (!it.reference_check) return std::nullopt;
-  const JobOutcome check = outcome_of(runs, *it.reference_check, "not run");
+  const jobs::JobOutcome check = outcome_of(runs, *it.reference_check, "not run");
   const std::string label = "reference check " + it.reference_check->settings_label();
   if (check.status != Status::kOk) {
     note = label + " " + to_string(check.status) + " (spread unknown): " + check.message;
     return Comparison{};
   }
   try {
-    return compare_runs(*stored_run(ref), *stored_run(check));
+    return compare_runs(jobs::stored_run(ref)->view(), jobs::stored_run(check)->view());
   } catch (const std::exception& e) {
     note = label + " did not compare (spread unknown): " + e.what();
     return Comparison{};
@@ -191,7 +193,7 @@ void not_judged(ScoreRow& row, QuantityStatus status, const std::string& why) {
 }
 
 /// The row's quantities once every run it needs finished.
-void judge(ScoreRow& row, const JobOutcome& ref, const std::map<std::string, JobOutcome>& runs) {
+void judge(ScoreRow& row, const jobs::JobOutcome& ref, const std::map<std::string, jobs::JobOutcome>& runs) {
   const ScoreItem& it = *row.item;
   std::vector<Comparison> cmps;  // every rung (or the one run) against the reference: run first
   // The scored run's impulse, intervals and interval impulses come from its own history.csv, never
@@ -200,8 +202,9 @@ void judge(ScoreRow& row, const JobOutcome& ref, const std::map<std::string, Job
   CompareOptions options;
   options.run_from_history = true;
   try {
-    const auto reference = stored_run(ref);
-    for (const JobOutcome& o : row.rungs) cmps.push_back(compare_runs(*stored_run(o), *reference, options));
+    const auto reference = jobs::stored_run(ref);
+    for (const jobs::JobOutcome& o : row.rungs)
+      cmps.push_back(compare_runs(jobs::stored_run(o)->view(), reference->view(), options));
   } catch (const std::exception& e) {
     not_judged(row, QuantityStatus::kFailed, e.what());
     return;
@@ -225,21 +228,22 @@ void judge(ScoreRow& row, const JobOutcome& ref, const std::map<std::string, Job
 }  // namespace
 
 std::vector<ScoreRow> score_rows(const std::vector<ScoreItem>& items,
-                                 const std::map<std::string, JobOutcome>& runs) {
+                                 const std::map<std::string, jobs::JobOutcome>& runs) {
   std::vector<ScoreRow> rows;
   for (const ScoreItem& it : items) {
     ScoreRow row{&it, outcome_of(runs, it.run, "not run"), {}, {}};
     if (it.ladder.rungs.empty()) row.rungs.push_back(row.outcome);
-    for (const JobSpec& s : it.ladder.rungs) row.rungs.push_back(outcome_of(runs, s, "not run"));
+    for (const jobs::JobSpec& s : it.ladder.rungs) row.rungs.push_back(outcome_of(runs, s, "not run"));
     const auto bad = std::find_if(row.rungs.begin(), row.rungs.end(),
-                                  [](const JobOutcome& o) { return o.status != Status::kOk; });
+                                  [](const jobs::JobOutcome& o) { return o.status != Status::kOk; });
     if (row.outcome.status != Status::kOk) {
       not_judged(row, not_finished(row.outcome.status), row.outcome.message);
     } else if (bad != row.rungs.end()) {
       not_judged(
           row, QuantityStatus::kFailed,
           "ladder rung " + bad->spec.settings_label() + " " + to_string(bad->status) + ": " + bad->message);
-    } else if (const JobOutcome ref = outcome_of(runs, it.reference, "not run"); ref.status != Status::kOk) {
+    } else if (const jobs::JobOutcome ref = outcome_of(runs, it.reference, "not run");
+               ref.status != Status::kOk) {
       not_judged(
           row, QuantityStatus::kSkipped,
           "reference " + it.reference.settings_label() + " " + to_string(ref.status) + ": " + ref.message);

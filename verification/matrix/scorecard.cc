@@ -16,7 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 
 /// Whether `ref` sets `key` (as "key=value").
-bool sets_key(const JobSpec& ref, const std::string& key) {
+bool sets_key(const jobs::JobSpec& ref, const std::string& key) {
   return std::any_of(ref.set.begin(), ref.set.end(),
                      [&](const std::string& s) { return s.rfind(key + "=", 0) == 0; });
 }
@@ -25,7 +25,7 @@ bool sets_key(const JobSpec& ref, const std::string& key) {
 /// (Method::as_reference), keeping the card's own: each converged setting unless the card sets its
 /// key, and with `stiffen` the stiffer settings unless the card sets its own stiffness. Without
 /// `stiffen` it is the reference's check: the same run at the card's stiffness.
-JobSpec converged_reference(JobSpec ref, const AsReference& facts, bool stiffen) {
+jobs::JobSpec converged_reference(jobs::JobSpec ref, const AsReference& facts, bool stiffen) {
   const bool own_stiffness = std::any_of(facts.stiffness_keys.begin(), facts.stiffness_keys.end(),
                                          [&](const std::string& k) { return sets_key(ref, k); });
   for (const std::string& setting : facts.converged)
@@ -80,7 +80,7 @@ std::vector<ScoreItem> score_items(const std::vector<BenchmarkCard>& cards, cons
   options.validate(method);
   const bool converge = options.references == "converged";
   std::vector<ScoreItem> items;
-  const auto picked = [&](const JobSpec& run) {
+  const auto picked = [&](const jobs::JobSpec& run) {
     return options.scenes.empty() ||
            std::find(options.scenes.begin(), options.scenes.end(), run.scene_name()) != options.scenes.end();
   };
@@ -88,7 +88,7 @@ std::vector<ScoreItem> score_items(const std::vector<BenchmarkCard>& cards, cons
     for (const BenchmarkCard& c : cards) {
       if (c.set != set) continue;
       ScoreItem it;
-      it.run = JobSpec{c.scene, method.name, std::nullopt, "", {}, {}};
+      it.run = jobs::JobSpec{c.scene, method.name, std::nullopt, "", {}};
       it.reference_kind = c.reference.method;
       it.reference = c.reference;
       const AsReference& facts = reference_method(c).as_reference;

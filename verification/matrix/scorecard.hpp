@@ -28,12 +28,12 @@ namespace beamimpact::verification {
 
 /// @brief One benchmark scene as scored for one method.
 struct ScoreItem {
-  JobSpec run;        ///< the method at the scene's own settings
+  jobs::JobSpec run;  ///< the method at the scene's own settings
   LadderPlan ladder;  ///< rungs (rungs[0] == run) on a scene with an exact answer; none with --no-ladder
-  JobSpec reference;
+  jobs::JobSpec reference;
   /// The reference's uncertainty check: a converged IDA reference at the card's own penalty; none
   /// for an exact reference or with matrix references.
-  std::optional<JobSpec> reference_check;
+  std::optional<jobs::JobSpec> reference_check;
   std::string reference_kind;  ///< the reference's method, "exact" or "ida" (its settings in reference.set)
   std::vector<Gate> gates;     ///< the card's quantities (tol and why)
   /// The card's settled values: each of these quantities is judged against its settled value and
@@ -61,6 +61,9 @@ struct ScoreOptions {
   std::filesystem::path baseline;
   int jobs = 1;            ///< runs in parallel (>= 1)
   double timeout = 900.0;  ///< s per run (> 0)
+  /// @brief The beamimpact program each run is a process of (isolation); empty: every run goes
+  /// in this process (jobs/execute_jobs.hpp).
+  std::filesystem::path exe;
   /// Scene sets, in this order: "paper" (verification/scenes/paper), "hard"
   /// (verification/scenes/hard), "exact" (the other scenes with an exact answer).
   std::vector<std::string> sets = {"paper", "hard", "exact"};
@@ -123,8 +126,8 @@ struct ScoreQuantity {
 /// @brief A scored scene.
 struct ScoreRow {
   const ScoreItem* item = nullptr;
-  JobOutcome outcome;             ///< the method's run at the scene's settings
-  std::vector<JobOutcome> rungs;  ///< every rung's outcome (rungs[0] == outcome) on a ladder
+  jobs::JobOutcome outcome;             ///< the method's run at the scene's settings
+  std::vector<jobs::JobOutcome> rungs;  ///< every rung's outcome (rungs[0] == outcome) on a ladder
   std::vector<ScoreQuantity> quantities;
 };
 
@@ -146,7 +149,7 @@ QuantityStatus verdict(double error, double tol, std::optional<double> spread, d
 /// `runs` holds the outcomes by JobSpec::key(); a reference absent from it was not run (the
 /// method's run did not finish).
 std::vector<ScoreRow> score_rows(const std::vector<ScoreItem>& items,
-                                 const std::map<std::string, JobOutcome>& runs);
+                                 const std::map<std::string, jobs::JobOutcome>& runs);
 
 /// @brief The overall verdict of a scorecard: exit code 0 when every quantity passes (passes():
 /// a scene the method refused counts as not applicable, said in the line), 1 when any does not

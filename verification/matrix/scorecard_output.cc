@@ -52,7 +52,7 @@ nlohmann::json quantity_json(const ScoreQuantity& q) {
 nlohmann::json scene_json(const ScoreRow& r, nlohmann::json quantities) {
   const ScoreItem& it = *r.item;
   nlohmann::json rungs = nlohmann::json::array();
-  for (const JobOutcome& o : r.rungs)
+  for (const jobs::JobOutcome& o : r.rungs)
     if (!it.ladder.rungs.empty())
       rungs.push_back({{"run", o.spec.settings_label()},
                        {"status", to_string(o.status)},

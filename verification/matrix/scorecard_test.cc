@@ -21,7 +21,7 @@ namespace beamimpact::verification {
 namespace {
 
 namespace fs = std::filesystem;
-using Status = JobOutcome::Status;
+using Status = jobs::JobOutcome::Status;
 
 const fs::path kRoot = BEAMIMPACT_SOURCE;
 
@@ -260,14 +260,14 @@ TEST(Scorecard, ToleranceComparisonsCarryFourUlpsOfSlack) {
 }
 
 /// A run in memory: one contact whose force is `force` N from t = 0.2 to 0.6 s (impulse 0.4 x force).
-JobOutcome memory_run(const JobSpec& spec, double force) {
+jobs::JobOutcome memory_run(const jobs::JobSpec& spec, double force) {
   std::map<std::string, std::vector<double>> c;
   for (int i = 0; i <= 100; ++i) {
     const double t = i * 0.01;
     c["t"].push_back(t);
     c["R"].push_back(t > 0.2 - 1e-9 && t < 0.6 + 1e-9 ? force : 0.0);
   }
-  JobOutcome o{spec, {}, Status::kOk, "", 0.1, 0.1, 100, 0.01, nullptr};
+  jobs::JobOutcome o{spec, {}, Status::kOk, "", 0.1, 0.1, 100, 0.01, nullptr};
   o.run =
       std::make_shared<const StoredRun>(StoredRun::from_columns(c, nlohmann::json::object(), spec.label()));
   return o;
@@ -277,15 +277,15 @@ JobOutcome memory_run(const JobSpec& spec, double force) {
 /// `held` keeps the scored item (the row points to it).
 ScoreRow score_memory(const std::vector<double>& forces, double tol, std::vector<ScoreItem>& held) {
   ScoreItem it;
-  it.run = JobSpec{kRoot / "verification/scenes/paper/s1_central.toml", "m", std::nullopt, "", {}, {}};
+  it.run = jobs::JobSpec{kRoot / "verification/scenes/paper/s1_central.toml", "m", std::nullopt, "", {}};
   it.reference = it.run;
   it.reference.method = "exact";
   it.reference_kind = "exact";
   it.gates = {Gate{"impulse", tol, std::nullopt, "derived: a test bound", std::nullopt}};
-  std::map<std::string, JobOutcome> runs;
+  std::map<std::string, jobs::JobOutcome> runs;
   runs.emplace(it.reference.key(), memory_run(it.reference, 1.0));
   for (std::size_t k = 0; k < forces.size(); ++k) {
-    JobSpec s = it.run;
+    jobs::JobSpec s = it.run;
     if (k > 0) s.mesh = std::to_string(1 << k);
     if (forces.size() > 1) it.ladder.rungs.push_back(s);
     runs.emplace(s.key(), memory_run(s, forces[k]));
@@ -333,7 +333,7 @@ TEST(Scorecard, ASettledValueTakesThePlaceOfTheReferenceRun) {
   std::vector<ScoreItem> held;
   score_memory({1.5}, 0.25, held);
   held[0].settled = {SettledValue{"impulse", 0.5, 0.01, "a settled ladder"}};
-  std::map<std::string, JobOutcome> runs;
+  std::map<std::string, jobs::JobOutcome> runs;
   runs.emplace(held[0].reference.key(), memory_run(held[0].reference, 1.0));
   runs.emplace(held[0].run.key(), memory_run(held[0].run, 1.5));
   const auto judged = [&](double tol) {
@@ -394,12 +394,12 @@ TEST(Scorecard, AMethodThatDoesNotConvergeGetsThatVerdict) {
 
 TEST(Scorecard, ARefusedSceneIsNotApplicableWithNoReferenceRun) {
   ScoreItem it;
-  it.run = JobSpec{kRoot / "verification/scenes/paper/s1_central.toml", "m", std::nullopt, "", {}, {}};
-  it.reference = JobSpec{it.run.scene, "ida", std::nullopt, "", {}, {}};
+  it.run = jobs::JobSpec{kRoot / "verification/scenes/paper/s1_central.toml", "m", std::nullopt, "", {}};
+  it.reference = jobs::JobSpec{it.run.scene, "ida", std::nullopt, "", {}};
   it.gates = {Gate{"impulse", 0.04, std::nullopt, "derived: a test bound", std::nullopt}};
-  std::map<std::string, JobOutcome> runs;  // the reference was never run
+  std::map<std::string, jobs::JobOutcome> runs;  // the reference was never run
   runs.emplace(it.run.key(),
-               JobOutcome{it.run, {}, Status::kNotApplicable, "no friction", 0, 0, 0, 0, nullptr});
+               jobs::JobOutcome{it.run, {}, Status::kNotApplicable, "no friction", 0, 0, 0, 0, nullptr});
   const std::vector<ScoreItem> held = {it};
   const auto rows = score_rows(held, runs);
   EXPECT_EQ(rows.front().quantities.front().status, QuantityStatus::kNotApplicable);
@@ -444,26 +444,26 @@ TEST(Scorecard, EachStatusHasOneWordInTheJsonAndTheReaderTellsFailFromFailed) {
   // A run outcome: its words, read back; a finished run's record of an earlier version (the
   // status as a number) is read too.
   for (const char* w : {"ok", "failed", "skipped", "not applicable"})
-    EXPECT_EQ(to_string(parse_run_status(w, "f", "status")), std::string(w));
-  EXPECT_THROW(parse_run_status("fine", "f", "status"), InputError);
-  JobOutcome o;
+    EXPECT_EQ(to_string(jobs::parse_run_status(w, "f", "status")), std::string(w));
+  EXPECT_THROW(jobs::parse_run_status("fine", "f", "status"), InputError);
+  jobs::JobOutcome o;
   o.status = Status::kNotApplicable;
-  nlohmann::json j = outcome_json(o);
+  nlohmann::json j = jobs::outcome_json(o);
   EXPECT_EQ(j["status"], "not applicable");
-  EXPECT_EQ(outcome_from_json(o.spec, "d", j).status, Status::kNotApplicable);
+  EXPECT_EQ(jobs::outcome_from_json(o.spec, "d", j).status, Status::kNotApplicable);
   j["status"] = 3;  // kNotApplicable's number in records written before the word
-  EXPECT_EQ(outcome_from_json(o.spec, "d", j).status, Status::kNotApplicable);
+  EXPECT_EQ(jobs::outcome_from_json(o.spec, "d", j).status, Status::kNotApplicable);
 }
 
 TEST(Scorecard, TheConsoleLineAndTheJsonSayTheStatusesTheirWay) {
   // A run that failed and a quantity outside its tolerance: the verdict line (console and page)
   // says "run failed" and "fail (outside tolerance)"; scorecard.json keeps "failed" and "fail".
   ScoreItem it;
-  it.run = JobSpec{kRoot / "verification/scenes/paper/s1_central.toml", "m", std::nullopt, "", {}, {}};
-  it.reference = JobSpec{it.run.scene, "exact", std::nullopt, "", {}, {}};
+  it.run = jobs::JobSpec{kRoot / "verification/scenes/paper/s1_central.toml", "m", std::nullopt, "", {}};
+  it.reference = jobs::JobSpec{it.run.scene, "exact", std::nullopt, "", {}};
   it.gates = {Gate{"impulse", 0.04, std::nullopt, "derived: a test bound", std::nullopt}};
-  std::map<std::string, JobOutcome> runs;
-  runs.emplace(it.run.key(), JobOutcome{it.run, {}, Status::kFailed, "exit 3", 0, 0, 0, 0, nullptr});
+  std::map<std::string, jobs::JobOutcome> runs;
+  runs.emplace(it.run.key(), jobs::JobOutcome{it.run, {}, Status::kFailed, "exit 3", 0, 0, 0, 0, nullptr});
   const std::vector<ScoreItem> held = {it};
   std::vector<ScoreItem> b;
   std::vector<ScoreRow> rows = score_rows(held, runs);

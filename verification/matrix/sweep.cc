@@ -10,9 +10,9 @@
 #include <solver/util/InputError.hpp>
 #include <solver/util/write_file_atomic.hpp>
 #include <verification/compare/compare_runs.hpp>
-#include <verification/matrix/Table.hpp>
+#include <verification/jobs/Table.hpp>
+#include <verification/jobs/interruption.hpp>
 #include <verification/matrix/evaluate.hpp>
-#include <verification/matrix/interruption.hpp>
 #include <verification/matrix/reports.hpp>
 
 namespace beamimpact::verification {
@@ -56,11 +56,12 @@ std::string command_of(const SweepOptions& o) {
 
 /// A sweep whose every run was refused is bad input; an interrupted one says so.
 void finish(const SweepOptions& o, SweepResult& r) {
-  if (std::all_of(r.points.begin(), r.points.end(),
-                  [](const SweepPoint& p) { return p.outcome.status == JobOutcome::Status::kNotApplicable; }))
+  if (std::all_of(r.points.begin(), r.points.end(), [](const SweepPoint& p) {
+        return p.outcome.status == jobs::JobOutcome::Status::kNotApplicable;
+      }))
     throw InputError(o.scene.string(), "",
                      "every run of the sweep was refused: " + r.points.front().outcome.message);
-  if (interruption()) r.incomplete = fmt::format("interrupted by signal {}", interruption());
+  if (jobs::interruption()) r.incomplete = fmt::format("interrupted by signal {}", jobs::interruption());
 }
 
 }  // namespace
@@ -72,10 +73,7 @@ const std::vector<std::string>& sweep_norms() {
   return n;
 }
 
-std::optional<SweepResult> execute_sweep(const SweepOptions& o, Launcher launcher) {
-  const auto start = std::chrono::steady_clock::now();
-  remove_stale_outputs(o.out, {"sweep.csv", "sweep.json", "sweep.md"});  // before anything can refuse
-  launcher.threads = o.threads;
+SweepPlan plan_sweep(const SweepOptions& o) {
   check_steps(o);
   const bool by_fraction = !o.fractions.empty();
   const auto& steps = by_fraction ? o.fractions : o.dts;
@@ -84,10 +82,10 @@ std::optional<SweepResult> execute_sweep(const SweepOptions& o, Launcher launche
   const Method& method = beamimpact::method(o.method, o.scene.string(), "--method");
   const std::vector<std::string> meshes = o.meshes.empty() ? std::vector<std::string>{""} : o.meshes;
 
-  std::vector<JobSpec> specs;
+  std::vector<jobs::JobSpec> specs;
   for (double v : steps)
     for (const auto& m : meshes) {
-      JobSpec s{o.scene, o.method, std::nullopt, m, {}, {}};
+      jobs::JobSpec s{o.scene, o.method, std::nullopt, m, {}};
       if (by_fraction)  // a method that picks its own step refuses both: not applicable
         s.set.push_back(fmt::format("time.fraction={:g}", v));
       else
@@ -95,13 +93,15 @@ std::optional<SweepResult> execute_sweep(const SweepOptions& o, Launcher launche
       specs.push_back(s);
     }
 
-  SweepResult r;
+  SweepPlan plan;
+  plan.points = specs;
+  SweepResult& r = plan.head;
   r.command = command_of(o);
   r.made = utc_now();
-  std::optional<JobSpec> ref;
+  std::optional<jobs::JobSpec>& ref = plan.reference;
   if (o.reference == "self") {
     const double finest = *std::min_element(steps.begin(), steps.end()) / 4;
-    ref = JobSpec{o.scene, o.method, std::nullopt, meshes.back(), {}, {}};
+    ref = jobs::JobSpec{o.scene, o.method, std::nullopt, meshes.back(), {}};
     if (by_fraction)
       ref->set.push_back(fmt::format("time.fraction={:g}", finest));
     else
@@ -114,39 +114,53 @@ std::optional<SweepResult> execute_sweep(const SweepOptions& o, Launcher launche
     r.reference_dir = o.reference;
     r.reference_label = "run directory " + o.reference;
   } else {
-    ref = JobSpec{o.scene, o.reference, std::nullopt, "", {}, {}};
+    ref = jobs::JobSpec{o.scene, o.reference, std::nullopt, "", {}};
     r.reference_label = o.reference + " (scene defaults)";
   }
-  std::vector<JobSpec> all = specs;
-  if (ref) all.push_back(*ref);
-  // Bad input (a mesh multiplier of 0, an unknown reference method, an --out that cannot be a
-  // directory) is refused before any run.
-  for (const JobSpec& s : all) (void)launcher.argv(s, o.out);
-  if (std::error_code ec; fs::create_directories(o.out / "runs", ec), ec)
-    throw InputError(o.out.string(), "--out", "expected a directory that can be written: " + ec.message());
-  const auto ran = o.executor ? o.executor(all, o.out / "runs", launcher, o.jobs, o.timeout)
-                              : execute_jobs(all, o.out / "runs", launcher, o.jobs, o.timeout);
-  if (!ran) return std::nullopt;
-  const auto& outcomes = *ran;
+  return plan;
+}
+
+SweepResult judge_sweep(const SweepOptions& o, const SweepPlan& plan,
+                        const std::map<std::string, jobs::JobOutcome>& outcomes) {
+  SweepResult r = plan.head;
+  const std::optional<jobs::JobSpec>& ref = plan.reference;
   if (ref) {
-    const JobOutcome& ro = outcomes.at(ref->key());
-    if (ro.status == JobOutcome::Status::kNotApplicable)
+    const jobs::JobOutcome& ro = outcomes.at(ref->key());
+    if (ro.status == jobs::JobOutcome::Status::kNotApplicable)
       throw InputError(o.scene.string(), "--reference",
                        "the reference run " + ref->label() + " was refused: " + ro.message);
-    if (ro.status != JobOutcome::Status::kOk)
+    if (ro.status != jobs::JobOutcome::Status::kOk)
       throw std::runtime_error("reference run " + ref->label() + " " + to_string(ro.status) + ": " +
                                ro.message);
     r.reference_dir = ro.dir;
   }
-  const auto reference = ref ? stored_run(outcomes.at(ref->key()))
+  const auto reference = ref ? jobs::stored_run(outcomes.at(ref->key()))
                              : std::make_shared<const StoredRun>(StoredRun::read(r.reference_dir));
-  for (const auto& s : specs) {
+  for (const auto& s : plan.points) {
     SweepPoint p{outcomes.at(s.key()), std::nullopt};
-    if (p.outcome.status == JobOutcome::Status::kOk)
-      p.comparison = compare_runs(*stored_run(p.outcome), *reference);
+    if (p.outcome.status == jobs::JobOutcome::Status::kOk)
+      p.comparison = compare_runs(jobs::stored_run(p.outcome)->view(), reference->view());
     r.points.push_back(std::move(p));
   }
   finish(o, r);
+  return r;
+}
+
+std::optional<SweepResult> sweep(const SweepOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  remove_stale_outputs(o.out, {"sweep.csv", "sweep.json", "sweep.md"});  // before anything can refuse
+  const SweepPlan plan = plan_sweep(o);
+  std::vector<jobs::JobSpec> all = plan.points;
+  if (plan.reference) all.push_back(*plan.reference);
+  // Bad input (a mesh multiplier of 0, an unknown reference method, an --out that cannot be a
+  // directory) is refused before any run.
+  const jobs::Launcher launcher = jobs::launcher_for(o.exe, o.threads);
+  for (const jobs::JobSpec& s : all) launcher.check(s);
+  if (std::error_code ec; fs::create_directories(o.out / "runs", ec), ec)
+    throw InputError(o.out.string(), "--out", "expected a directory that can be written: " + ec.message());
+  const auto ran = jobs::execute_jobs(all, o.out / "runs", launcher, o.jobs, o.timeout);
+  if (!ran) return std::nullopt;  // an MPI worker rank: rank 0 compares and writes the outputs
+  SweepResult r = judge_sweep(o, plan, *ran);
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
@@ -154,11 +168,11 @@ std::optional<SweepResult> execute_sweep(const SweepOptions& o, Launcher launche
 namespace {
 
 /// The observed orders between consecutive dts on the same mesh (sweep.md's second table).
-Table order_table(const SweepOptions& o, const SweepResult& r) {
+jobs::Table order_table(const SweepOptions& o, const SweepResult& r) {
   const auto& names = sweep_norms();
   std::vector<std::string> header{"dt pair", "mesh"};
   header.insert(header.end(), names.begin(), names.end());
-  Table t(header);
+  jobs::Table t(header);
   const std::size_t nm = o.meshes.empty() ? 1 : o.meshes.size();
   for (std::size_t i = 0; i + nm < r.points.size(); ++i) {
     const auto& a = r.points[i];
@@ -192,7 +206,7 @@ void write_sweep(const SweepOptions& o, const SweepResult& r) {
   std::vector<std::string> md_head{"dt (s)", "mesh", "steps", "solver s", "process s"};
   csv_head.insert(csv_head.end(), names.begin(), names.end());
   md_head.insert(md_head.end(), names.begin(), names.end());
-  Table csv(csv_head), md(md_head);
+  jobs::Table csv(csv_head), md(md_head);
   nlohmann::json j{{"scene", o.scene.string()},
                    {"method", o.method},
                    {"reference", r.reference_label},

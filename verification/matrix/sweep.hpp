@@ -4,11 +4,13 @@
 /// reference, with wall time: the table behind "what accuracy costs in time".
 
 #include <filesystem>
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <verification/compare/Comparison.hpp>
-#include <verification/matrix/execute_jobs.hpp>
+#include <verification/jobs/execute_jobs.hpp>
 
 namespace beamimpact::verification {
 
@@ -24,12 +26,14 @@ struct SweepOptions {
   int jobs = 1;
   double timeout = 3600.0;  ///< s per run
   int threads = 0;          ///< --threads of each run of the paper integrator (0: each run's default)
-  JobExecutor executor;     ///< where the runs go (empty: execute_jobs, threads of this process)
+  /// @brief The beamimpact program each run is a process of (isolation); empty: every run goes
+  /// in this process (jobs/execute_jobs.hpp).
+  std::filesystem::path exe;
 };
 
 /// @brief One point of the sweep.
 struct SweepPoint {
-  JobOutcome outcome;
+  jobs::JobOutcome outcome;
   std::optional<Comparison> comparison;  ///< empty when the run failed
 };
 
@@ -44,11 +48,26 @@ struct SweepResult {
   std::string incomplete;          ///< why the sweep is not complete (an interruption); "" complete
 };
 
+/// @brief The runs a sweep is made of, before any runs.
+struct SweepPlan {
+  std::vector<jobs::JobSpec> points;       ///< in the order dts x meshes
+  std::optional<jobs::JobSpec> reference;  ///< the reference run; none when it is a run directory
+  SweepResult head;                        ///< reference_label, reference_dir, command, made
+};
+
+/// @brief Checks the options and plans the runs (InputError for bad options).
+SweepPlan plan_sweep(const SweepOptions& o);
+
+/// @brief Compares each point's outcome with the reference's: the sweep without its runs.
+/// Throws InputError when the reference run was refused, std::runtime_error when it failed.
+/// @param o the options; @param plan plan_sweep(o); @param outcomes the runs by JobSpec::key()
+SweepResult judge_sweep(const SweepOptions& o, const SweepPlan& plan,
+                        const std::map<std::string, jobs::JobOutcome>& outcomes);
+
 /// @brief Runs the sweep (runs in parallel) and compares each point with the reference.
 /// Throws InputError for bad options or when every run was refused, and std::runtime_error when
-/// the reference run fails. Returns nullopt on an MPI rank other than 0 (see JobExecutor).
-/// @param launcher the program and methods files of the runs (its threads: o.threads)
-std::optional<SweepResult> execute_sweep(const SweepOptions& o, Launcher launcher);
+/// the reference run fails. Returns nullopt on an MPI rank other than 0 (jobs::execute_jobs).
+std::optional<SweepResult> sweep(const SweepOptions& o);
 
 /// @brief Writes o.out/sweep.md (headed by how it was made: command, version, time), sweep.csv
 /// and sweep.json.

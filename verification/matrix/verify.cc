@@ -10,9 +10,9 @@
 #include <beamimpact/version.hpp>
 #include <solver/util/InputError.hpp>
 #include <solver/util/write_file_atomic.hpp>
+#include <verification/jobs/finished_runs.hpp>
+#include <verification/jobs/interruption.hpp>
 #include <verification/matrix/VerificationMatrix.hpp>
-#include <verification/matrix/finished_runs.hpp>
-#include <verification/matrix/interruption.hpp>
 
 namespace beamimpact::verification {
 namespace {
@@ -22,7 +22,7 @@ struct Selection {
   std::vector<const Case*> cases;
   std::vector<const Convergence*> ladders;
   std::vector<const RunCheck*> checks;
-  std::vector<JobSpec> specs;
+  std::vector<jobs::JobSpec> specs;
 };
 
 Selection select(const VerificationMatrix& m, const VerifyOptions& o) {
@@ -41,7 +41,7 @@ Selection select(const VerificationMatrix& m, const VerifyOptions& o) {
     return s;
   }
   std::set<std::string> seen;  // only the runs the selected items need
-  auto add = [&](const JobSpec& spec) {
+  auto add = [&](const jobs::JobSpec& spec) {
     if (seen.insert(spec.key()).second) s.specs.push_back(spec);
   };
   for (const auto* c : s.cases) {
@@ -58,7 +58,7 @@ Selection select(const VerificationMatrix& m, const VerifyOptions& o) {
 
 }  // namespace
 
-std::optional<VerifyResult> verify(const VerifyOptions& o, const std::filesystem::path& exe) {
+std::optional<VerifyResult> verify(const VerifyOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   const std::string started = utc_now();
   // An earlier verdict must not survive this run's refusal or failure (report.html: the HTML report's).
@@ -79,24 +79,19 @@ std::optional<VerifyResult> verify(const VerifyOptions& o, const std::filesystem
                      "expected a selection with at least one case, ladder or check; tier '" + o.tier + "'" +
                          (o.only.empty() ? "" : " has no item whose name contains '" + o.only + "'") +
                          " (a verify of nothing would pass)");
-  Launcher launcher;
-  launcher.exe = exe;
-  launcher.methods_files = loaded_methods_files();  // each run sees the same registry
+  jobs::Launcher launcher = jobs::launcher_for(o.exe, o.threads);
   launcher.reuse_finished = !o.fresh;
-  launcher.threads = o.threads;
   std::filesystem::create_directories(o.out);
   if (!o.quiet) {
     fmt::print(stderr,
                "verify: {} case(s), {} convergence ladder(s), {} check(s), {} run(s), tier {}, {} job(s){}\n",
                s.cases.size(), s.ladders.size(), s.checks.size(), s.specs.size(), o.tier, o.jobs,
-               o.executor_note);
-    if (const std::size_t n = o.fresh ? 0 : count_recorded(s.specs, o.out / "runs"))
+               jobs::executor_note());
+    if (const std::size_t n = o.fresh ? 0 : jobs::count_recorded(s.specs, o.out / "runs"))
       fmt::print(stderr, "resumed: {} of {} runs finished earlier (--fresh runs them all again)\n", n,
                  s.specs.size());
   }
-  const auto ran = o.executor
-                       ? o.executor(s.specs, o.out / "runs", launcher, o.jobs, m.timeout)
-                       : std::optional(execute_jobs(s.specs, o.out / "runs", launcher, o.jobs, m.timeout));
+  const auto ran = jobs::execute_jobs(s.specs, o.out / "runs", launcher, o.jobs, m.timeout);
   if (!ran) return std::nullopt;  // an MPI worker rank: rank 0 evaluates
   VerifyResult r;
   for (const auto* c : s.cases) r.items.push_back(evaluate_case(*c, *ran));
@@ -115,9 +110,9 @@ std::optional<VerifyResult> verify(const VerifyOptions& o, const std::filesystem
   ctx.started = started;
   ctx.jobs = o.jobs;
   ctx.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (interruption())
-    ctx.incomplete =
-        fmt::format("interrupted by signal {}; runs not finished are failed or skipped", interruption());
+  if (jobs::interruption())
+    ctx.incomplete = fmt::format("interrupted by signal {}; runs not finished are failed or skipped",
+                                 jobs::interruption());
   r.baseline_file = o.baseline;
   r.update_baseline = o.update_baseline;
   if (baseline_exists) r.baseline = compare_baseline(baseline, o.baseline.string(), r.items);

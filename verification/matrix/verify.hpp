@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include <verification/jobs/execute_jobs.hpp>
 #include <verification/matrix/baseline.hpp>
 #include <verification/matrix/evaluate.hpp>
-#include <verification/matrix/execute_jobs.hpp>
 #include <verification/matrix/reports.hpp>
 
 namespace beamimpact::verification {
@@ -25,9 +25,10 @@ struct VerifyOptions {
   int jobs = 1;                ///< runs in parallel (>= 1)
   int threads = 0;             ///< --threads of every in-process run (0: each run's default)
   std::string command;         ///< the command line written into the reports ("" made from these options)
-  JobExecutor executor;        ///< where the runs go (empty: execute_jobs, threads of this process)
-  std::string executor_note;   ///< appended to the plan line on stderr (", 2 MPI ranks")
-  bool quiet = false;          ///< no plan line (an MPI worker rank)
+  /// @brief The beamimpact program each run is a process of (isolation); empty: every run goes
+  /// in this process (jobs/execute_jobs.hpp).
+  std::filesystem::path exe;
+  bool quiet = false;  ///< no plan line (an MPI worker rank)
   /// @brief Run everything again; otherwise a run recorded as finished under out/runs with the
   /// same input (an interrupted verify's) is taken as it is (finished_runs.hpp).
   bool fresh = false;
@@ -56,10 +57,9 @@ struct VerifyResult {
 /// @brief Checks the options (InputError naming the option; a --baseline that does not exist, unless it
 /// is to be written), loads the matrix, runs the selected items' runs into out/runs/ (those finished
 /// earlier taken, unless o.fresh), evaluates them and compares them with the baseline. Returns
-/// nullopt on an MPI rank other than 0 (see JobExecutor). An interruption (interruption()) leaves a result
+/// nullopt on an MPI rank other than 0 (jobs::execute_jobs). An interruption (interruption()) leaves a result
 /// marked incomplete.
-/// @param exe the beamimpact executable the runs start (with --methods for each methods file read)
-std::optional<VerifyResult> verify(const VerifyOptions& o, const std::filesystem::path& exe);
+std::optional<VerifyResult> verify(const VerifyOptions& o);
 
 /// @brief Writes o.out/junit.xml, norms.json and report.md of a result, and with o.update_baseline the
 /// baseline file when the gates passed. Returns the baseline file written ("" none).

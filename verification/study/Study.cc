@@ -13,7 +13,7 @@
 #include <solver/scene/scene_io.hpp>
 #include <solver/util/InputError.hpp>
 #include <verification/compare/compare_runs.hpp>
-#include <verification/matrix/JobSpec.hpp>
+#include <verification/jobs/JobSpec.hpp>
 #include <verification/matrix/sweep.hpp>
 
 namespace beamimpact::study {
@@ -283,7 +283,7 @@ std::vector<std::string> overrides(const Study& s, const Point& pt) {
       switch (p.kind) {
         case Parameter::Kind::kKey: out.push_back(p.target + "=" + number(v)); break;
         case Parameter::Kind::kMesh: {
-          const auto m = verification::mesh_overrides(s.scene, static_cast<int>(v));
+          const auto m = jobs::mesh_overrides(s.scene, static_cast<int>(v));
           out.insert(out.end(), m.begin(), m.end());
           break;
         }

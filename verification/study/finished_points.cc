@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include <solver/util/sha256.hpp>
-#include <verification/matrix/finished_runs.hpp>
+#include <verification/jobs/finished_runs.hpp>
 
 namespace beamimpact::study {
 namespace {
@@ -35,7 +35,7 @@ bool finite(const PointResult& r) {
 }  // namespace
 
 nlohmann::json study_input(const Study& s) {
-  return {{"program", verification::program_input()},
+  return {{"program", jobs::program_input()},
           {"study_sha256", file_sha256(s.file)},
           {"scene_sha256", file_sha256(s.scene)},
           {"keep_runs", s.keep_runs}};
@@ -45,13 +45,13 @@ void record_point(const fs::path& out, const nlohmann::json& base, std::size_t i
                   const PointResult& r) {
   if (!finite(r)) return;  // it runs again on a restart
   fs::create_directories(out / "points");
-  verification::write_record(record_file(out, index), point_input(base, index, p),
-                             {{"rank", r.rank}, {"point", r.to_json()}});
+  jobs::write_record(record_file(out, index), point_input(base, index, p),
+                     {{"rank", r.rank}, {"point", r.to_json()}});
 }
 
 std::optional<PointResult> recorded_point(const fs::path& out, const nlohmann::json& base, std::size_t index,
                                           const Point& p) {
-  const auto j = verification::read_record(record_file(out, index), point_input(base, index, p));
+  const auto j = jobs::read_record(record_file(out, index), point_input(base, index, p));
   if (!j) return std::nullopt;
   try {
     PointResult r = PointResult::from_json(j->at("point"));

@@ -16,14 +16,14 @@ namespace beamimpact::study {
 namespace {
 
 namespace fs = std::filesystem;
-using verification::StoredRun;
+using verification::RunView;
 
 /// Runs one method; the run in memory when it finished, else status and message set. The run
 /// directory is written only when the study keeps its runs (or the scene asks for fields).
-std::optional<StoredRun> run_one(const Study& s, const std::vector<std::string>& set,
-                                 const std::string& method, const fs::path& dir, CaseResult& c) {
+std::optional<RunView> run_one(const Study& s, const std::vector<std::string>& set, const std::string& method,
+                               const fs::path& dir, CaseResult& c) {
   const auto start = std::chrono::steady_clock::now();
-  std::optional<StoredRun> out;
+  std::optional<RunView> out;
   try {
     const Scene scene = load_scene(s.scene, set);
     RunOptions options;
@@ -31,7 +31,7 @@ std::optional<StoredRun> run_one(const Study& s, const std::vector<std::string>&
     const SimulationResult r = beamimpact::run(scene, method, options);
     c.steps = r.steps;
     c.dt = r.dt;
-    out = StoredRun::from_result(scene, r, dir.string());
+    out = RunView::from_result(scene, r, dir.string());
     c.status = "ok";
   } catch (const InputError& e) {
     c.status = "error";
@@ -76,14 +76,14 @@ PointResult run_point(const Study& s, const Point& p, std::size_t index, const f
   ref_set.insert(ref_set.end(), s.reference.set.begin(), s.reference.set.end());
   const fs::path ref_dir = runs_dir / fmt::format("{}.reference", index);
   CaseResult ref;
-  const std::optional<StoredRun> reference = run_one(s, ref_set, s.reference.method, ref_dir, ref);
+  const std::optional<RunView> reference = run_one(s, ref_set, s.reference.method, ref_dir, ref);
   pr.reference_status = ref.status;
   pr.reference_message = ref.message;
   pr.reference_seconds = ref.seconds;
   for (const auto& m : s.methods) {
     CaseResult c = blank_case(s, m);
     const fs::path dir = runs_dir / fmt::format("{}.{}", index, m);
-    const std::optional<StoredRun> run = run_one(s, set, m, dir, c);
+    const std::optional<RunView> run = run_one(s, set, m, dir, c);
     if (run) {
       const verification::Comparison health = verification::check_run(*run);
       if (const auto* g = health.find("energy_growth")) c.energy_growth = g->value;

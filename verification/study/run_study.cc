@@ -11,9 +11,9 @@
 #include <beamimpact/version.hpp>
 #include <solver/util/Progress.hpp>
 #include <solver/util/write_file_atomic.hpp>
-#include <verification/matrix/Table.hpp>
+#include <verification/jobs/Table.hpp>
+#include <verification/jobs/task_farm.hpp>
 #include <verification/study/finished_points.hpp>
-#include <verification/study/task_farm.hpp>
 
 namespace beamimpact::study {
 namespace {
@@ -71,13 +71,13 @@ std::optional<StudyResult> execute_study(const Study& s, const fs::path& out, bo
   const auto start = std::chrono::steady_clock::now();
   StudyResult r;
   r.points = design_points(s);
-  r.ranks = World::size();
+  r.ranks = jobs::World::size();
   const std::size_t n = r.points.size();
   r.results.resize(n);
   std::vector<double> cost(n);
   std::size_t finished = 0;  // points done, those of an earlier, interrupted study included
   nlohmann::json base;
-  if (World::rank() == 0) {
+  if (jobs::World::rank() == 0) {
     base = study_input(s);
     finished = r.resumed = take_finished(s, out, base, fresh, r, cost);
     fmt::print(stderr, "study {}: {} point(s) x {} method(s), reference {}, {} rank(s)\n", s.name, n,
@@ -92,7 +92,7 @@ std::optional<StudyResult> execute_study(const Study& s, const fs::path& out, bo
   // One line per point instead of the methods' own progress; the caller's setting comes back.
   const Progress::Silence quiet;
   bool warned = false;
-  const bool root = farm(
+  const bool root = jobs::farm(
       cost, [&](std::size_t i) { return run_point(s, r.points[i], i, runs).to_json().dump(); },
       [&](std::size_t i, const std::string& payload, int rank) {
         PointResult p = PointResult::from_json(nlohmann::json::parse(payload));
@@ -125,7 +125,7 @@ namespace {
 
 /// What the study's outputs tabulate, filled in one pass over the cases.
 struct StudyTables {
-  verification::Table csv, timing, broken;         ///< study.csv, timing.csv, study.md's breakdowns
+  jobs::Table csv, timing, broken;                 ///< study.csv, timing.csv, study.md's breakdowns
   nlohmann::json cases = nlohmann::json::array();  ///< study.json's cases
   std::map<std::string, int> counts;               ///< cases by "method status"
   std::size_t n_cases = 0, n_broken = 0;
@@ -140,9 +140,9 @@ StudyTables empty_tables(const Study& s) {
   std::vector<std::string> broken_head{"#", "point", "method", "status"};
   for (const auto& rule : s.breaks) broken_head.push_back(rule.metric);
   broken_head.push_back("message");
-  StudyTables t{verification::Table(head),
-                verification::Table({"index", "method", "rank", "seconds", "reference_seconds"}),
-                verification::Table(broken_head),
+  StudyTables t{jobs::Table(head),
+                jobs::Table({"index", "method", "rank", "seconds", "reference_seconds"}),
+                jobs::Table(broken_head),
                 nlohmann::json::array(),
                 {},
                 0,
@@ -227,7 +227,7 @@ std::string study_markdown(const Study& s, const StudyResult& r, const StudyTabl
       s.name, s.description, command, version, s.scene.filename().string(), fmt::join(s.set, "`, `"),
       s.reference.method, fmt::join(s.reference.set, " "), r.points.size(),
       s.design == Study::Design::kGrid ? "grid" : "Latin hypercube", t.n_cases);
-  verification::Table outcomes({"method status", "cases"});
+  jobs::Table outcomes({"method status", "cases"});
   for (const auto& [k, v] : t.counts) outcomes.add({k, fmt::format("{}", v)});
   md += outcomes.markdown();
   md += fmt::format(
@@ -237,14 +237,24 @@ std::string study_markdown(const Study& s, const StudyResult& r, const StudyTabl
   return md + t.broken.markdown();
 }
 
+/// Every table of the study's results, in design order.
+StudyTables tables_of(const Study& s, const StudyResult& r) {
+  StudyTables t = empty_tables(s);
+  for (std::size_t i = 0; i < r.points.size(); ++i)
+    for (const auto& c : r.results[i].cases) add_case(s, i, r.points[i], r.results[i], c, t);
+  return t;
+}
+
 }  // namespace
+
+nlohmann::json study_json(const StudyResult& r, const std::string& version) {
+  return study_json(r.study, version, tables_of(r.study, r).cases);
+}
 
 StudyCounts write_study(const Study& s, const StudyResult& r, const fs::path& out, const std::string& command,
                         const std::string& version) {
   fs::create_directories(out);
-  StudyTables t = empty_tables(s);
-  for (std::size_t i = 0; i < r.points.size(); ++i)
-    for (const auto& c : r.results[i].cases) add_case(s, i, r.points[i], r.results[i], c, t);
+  StudyTables t = tables_of(s, r);
   const std::size_t run_now = t.n_cases - r.resumed * s.methods.size();
   const double rate = r.wall_seconds > 0 ? static_cast<double>(run_now) / r.wall_seconds : 0.0;
   const nlohmann::json timing{

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include <verification/study/Study.hpp>
 #include <verification/study/run_point.hpp>
 
@@ -67,6 +69,12 @@ struct StudyCounts {
 /// @return the counts the tables state
 StudyCounts write_study(const Study& s, const StudyResult& r, const std::filesystem::path& out,
                         const std::string& command, const std::string& version);
+
+/// @brief study.json's document of run_study()'s result: the study's definition and every case
+/// (no timing field; the same on every run and rank count).
+/// @param r the result, its `study` set (run_study())
+/// @param version `beamimpact --version`
+nlohmann::json study_json(const StudyResult& r, const std::string& version);
 
 /// @brief The tables of run_study()'s result in o.out (write_study() with its study, command and
 /// this build's version).

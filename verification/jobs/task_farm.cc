@@ -1,4 +1,4 @@
-#include <verification/study/task_farm.hpp>
+#include <verification/jobs/task_farm.hpp>
 
 #include <signal.h>
 #include <unistd.h>
@@ -19,7 +19,7 @@
 #include <mpi.h>
 #endif
 
-namespace beamimpact::study {
+namespace beamimpact::jobs {
 namespace {
 
 int g_rank = 0, g_size = 1;
@@ -195,6 +195,18 @@ void World::abort(int code) {
   std::exit(code);
 }
 
+std::string World::broadcast(std::string text) {
+#ifdef BEAMIMPACT_HAVE_MPI
+  if (g_size > 1) {
+    std::uint64_t n = text.size();
+    MPI_Bcast(&n, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+    text.resize(n);
+    MPI_Bcast(text.data(), static_cast<int>(n), MPI_CHAR, 0, MPI_COMM_WORLD);
+  }
+#endif
+  return text;
+}
+
 std::vector<std::size_t> longest_first(const std::vector<double>& cost) {
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < cost.size(); ++i)
@@ -229,4 +241,4 @@ bool farm(const std::vector<double>& cost, const std::function<std::string(std::
   return true;
 }
 
-}  // namespace beamimpact::study
+}  // namespace beamimpact::jobs

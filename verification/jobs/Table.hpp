@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace beamimpact::verification {
+namespace beamimpact::jobs {
 
 /// @brief Rows of text cells under a header.
 class Table {
@@ -45,4 +45,4 @@ class Table {
   std::set<std::size_t> quoted_;
 };
 
-}  // namespace beamimpact::verification
+}  // namespace beamimpact::jobs

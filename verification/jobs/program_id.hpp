@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <string>
 
-namespace beamimpact::verification {
+namespace beamimpact::jobs {
 
 /// @brief The file holding the code of this process that calls it: the mapping of this
 /// function's own address in /proc/self/maps (the executable the libraries are linked into, or
@@ -22,4 +22,4 @@ std::filesystem::path program_code_file();
 /// its records are then never taken by another.
 const std::string& program_sha256();
 
-}  // namespace beamimpact::verification
+}  // namespace beamimpact::jobs

@@ -1,12 +1,12 @@
 // The table model's two renderings on hand-made tables whose text follows from the formats
 // (GitHub Markdown pipe tables; RFC 4180 CSV).
-#include <verification/matrix/Table.hpp>
+#include <verification/jobs/Table.hpp>
 
 #include <stdexcept>
 
 #include <gtest/gtest.h>
 
-namespace beamimpact::verification {
+namespace beamimpact::jobs {
 namespace {
 
 TEST(Table, MarkdownEscapesPipes) {
@@ -31,4 +31,4 @@ TEST(Table, RowOfTheWrongWidthIsRefused) {
 }
 
 }  // namespace
-}  // namespace beamimpact::verification
+}  // namespace beamimpact::jobs

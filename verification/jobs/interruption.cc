@@ -1,11 +1,11 @@
-#include <verification/matrix/interruption.hpp>
+#include <verification/jobs/interruption.hpp>
 
 #include <api/child_process.hpp>
 
-namespace beamimpact::verification {
+namespace beamimpact::jobs {
 
 void forward_interruptions() { catch_interruptions(); }
 
 int interruption() { return caught_signal(); }
 
-}  // namespace beamimpact::verification
+}  // namespace beamimpact::jobs

@@ -1,4 +1,4 @@
-#include <verification/matrix/finished_runs.hpp>
+#include <verification/jobs/finished_runs.hpp>
 
 #include <cstdio>
 #include <fstream>
@@ -10,9 +10,9 @@
 #include <beamimpact/version.hpp>
 #include <solver/util/sha256.hpp>
 #include <solver/util/write_file_atomic.hpp>
-#include <verification/matrix/program_id.hpp>
+#include <verification/jobs/program_id.hpp>
 
-namespace beamimpact::verification {
+namespace beamimpact::jobs {
 
 namespace fs = std::filesystem;
 
@@ -47,8 +47,7 @@ nlohmann::json run_input(const JobSpec& spec) {
           {"method", spec.method},
           {"dt", spec.dt ? nlohmann::json(*spec.dt) : nlohmann::json(nullptr)},
           {"mesh", spec.mesh},
-          {"set", spec.set},
-          {"args", spec.args}};
+          {"set", spec.set}};
 }
 
 void record_run(const JobOutcome& o, const nlohmann::json& input) {
@@ -82,4 +81,4 @@ std::size_t count_recorded(const std::vector<JobSpec>& specs, const fs::path& ru
   return n;
 }
 
-}  // namespace beamimpact::verification
+}  // namespace beamimpact::jobs

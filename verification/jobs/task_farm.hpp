@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace beamimpact::study {
+namespace beamimpact::jobs {
 
 /// @brief The MPI job this process belongs to. MPI is initialised only when this build has MPI
 /// and the process was started by mpirun (its environment says so); otherwise one rank.
@@ -25,6 +25,8 @@ class World {
   static int rank();
   /// @brief The number of ranks (1 without MPI).
   static int size();
+  /// @brief Rank 0's `text` on every rank (every rank must call it; one rank: `text` itself).
+  static std::string broadcast(std::string text);
   /// @brief Ends every rank of the job with this exit code (after an error on one rank).
   [[noreturn]] static void abort(int code);
 };
@@ -48,4 +50,4 @@ bool farm(const std::vector<double>& cost, const std::function<std::string(std::
 /// negative cost left out.
 std::vector<std::size_t> longest_first(const std::vector<double>& cost);
 
-}  // namespace beamimpact::study
+}  // namespace beamimpact::jobs

@@ -1,8 +1,8 @@
-#include <verification/matrix/Table.hpp>
+#include <verification/jobs/Table.hpp>
 
 #include <stdexcept>
 
-namespace beamimpact::verification {
+namespace beamimpact::jobs {
 namespace {
 
 std::string markdown_line(const std::vector<std::string>& cells) {
@@ -53,4 +53,4 @@ std::string Table::csv() const {
   return out;
 }
 
-}  // namespace beamimpact::verification
+}  // namespace beamimpact::jobs

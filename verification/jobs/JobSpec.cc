@@ -1,4 +1,4 @@
-#include <verification/matrix/JobSpec.hpp>
+#include <verification/jobs/JobSpec.hpp>
 
 #include <algorithm>
 #include <cstdlib>
@@ -6,11 +6,12 @@
 #include <fmt/format.h>
 
 #include <api/accepts.hpp>
+#include <api/methods_file.hpp>
 #include <api/registry.hpp>
 #include <solver/scene/scene_io.hpp>
 #include <solver/util/InputError.hpp>
 
-namespace beamimpact::verification {
+namespace beamimpact::jobs {
 namespace {
 
 std::string safe(std::string s) {
@@ -28,7 +29,6 @@ std::string JobSpec::settings_label() const {
   if (dt) s += fmt::format(" dt={:g}", *dt);
   if (!mesh.empty()) s += " mesh=" + mesh;
   for (const auto& o : set) s += " " + o;
-  for (const auto& a : args) s += " " + a;
   return s;
 }
 
@@ -37,7 +37,6 @@ std::string JobSpec::key() const {
   if (dt) k += fmt::format(".dt{:g}", *dt);
   if (!mesh.empty()) k += ".mesh" + mesh;
   for (const auto& o : set) k += "." + o;
-  for (const auto& a : args) k += "." + a;
   return safe(k);
 }
 
@@ -55,9 +54,22 @@ std::string Launcher::unavailable(const JobSpec& spec) const {
   return beamimpact::unavailable(*m);
 }
 
-std::vector<std::string> Launcher::argv(const JobSpec& spec, const std::filesystem::path& out_dir) const {
+void Launcher::check(const JobSpec& spec) const {
   const Method& m = method(spec.method, spec.scene.string(), "method");
   if (!spec.mesh.empty() && m.accepts.mesh_factor) (void)mesh_factor(spec.mesh, spec.scene.string(), m.name);
+}
+
+Launcher launcher_for(const std::filesystem::path& exe, int threads) {
+  Launcher l;
+  l.exe = exe;
+  if (!exe.empty()) l.methods_files = loaded_methods_files();
+  l.threads = threads;
+  return l;
+}
+
+std::vector<std::string> Launcher::argv(const JobSpec& spec, const std::filesystem::path& out_dir) const {
+  check(spec);
+  const Method& m = method(spec.method, spec.scene.string(), "method");
   std::vector<std::string> a = {exe.string(),     "run",      spec.scene.string(), "--out",
                                 out_dir.string(), "--method", spec.method,         "--quiet"};
   for (const auto& f : methods_files) a.insert(a.end(), {"--methods", f.string()});
@@ -65,8 +77,20 @@ std::vector<std::string> Launcher::argv(const JobSpec& spec, const std::filesyst
   if (!spec.mesh.empty()) a.insert(a.end(), {"--mesh", spec.mesh});
   if (threads > 0 && m.in_process()) a.insert(a.end(), {"--threads", std::to_string(threads)});
   for (const auto& s : spec.set) a.insert(a.end(), {"--set", s});
-  a.insert(a.end(), spec.args.begin(), spec.args.end());
+  a.insert(a.end(), {"--refusal", (out_dir / kRefusalFile).string()});
   return a;
 }
 
-}  // namespace beamimpact::verification
+RunOptions Launcher::run_options(const JobSpec& spec, const std::filesystem::path& out_dir) const {
+  check(spec);
+  const Method& m = method(spec.method, spec.scene.string(), "method");
+  RunOptions o;
+  o.set = spec.set;
+  o.out = out_dir;
+  o.dt = spec.dt;
+  o.mesh = spec.mesh;
+  if (threads > 0 && m.in_process()) o.threads = threads;
+  return o;
+}
+
+}  // namespace beamimpact::jobs

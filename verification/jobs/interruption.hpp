@@ -5,7 +5,7 @@
 /// process group) are then ended by the handler and spawn_and_wait,
 /// no new run starts, and the command writes its report marked incomplete and exits non-zero.
 
-namespace beamimpact::verification {
+namespace beamimpact::jobs {
 
 /// @brief Installs the SIGINT, SIGTERM and SIGHUP handlers (they end the children and record the
 /// signal). Call once, before the first child starts.
@@ -18,4 +18,4 @@ int interruption();
 /// shell's convention.
 inline int interrupted_exit_code() { return 128 + interruption(); }
 
-}  // namespace beamimpact::verification
+}  // namespace beamimpact::jobs

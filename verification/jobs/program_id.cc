@@ -1,4 +1,4 @@
-#include <verification/matrix/program_id.hpp>
+#include <verification/jobs/program_id.hpp>
 
 #include <unistd.h>
 
@@ -11,7 +11,7 @@
 
 #include <solver/util/sha256.hpp>
 
-namespace beamimpact::verification {
+namespace beamimpact::jobs {
 
 namespace fs = std::filesystem;
 
@@ -50,4 +50,4 @@ const std::string& program_sha256() {
   return id;
 }
 
-}  // namespace beamimpact::verification
+}  // namespace beamimpact::jobs

@@ -1,8 +1,8 @@
 // A finished run is taken again only from the same program, known by its bytes, not by its
 // version string: two builds of an edited tree have the same `-dirty` version, and a verify after
 // a code change must judge the new code on its own runs.
-#include <verification/matrix/finished_runs.hpp>
-#include <verification/matrix/program_id.hpp>
+#include <verification/jobs/finished_runs.hpp>
+#include <verification/jobs/program_id.hpp>
 
 #include <cstdlib>
 #include <filesystem>
@@ -15,7 +15,7 @@
 #include <solver/testing/test_scenes.hpp>
 #include <solver/util/sha256.hpp>
 
-namespace beamimpact::verification {
+namespace beamimpact::jobs {
 namespace {
 
 namespace fs = std::filesystem;
@@ -78,4 +78,4 @@ TEST(FinishedRuns, AnotherBuildWithTheSameVersionRunsAgain) {
 }
 
 }  // namespace
-}  // namespace beamimpact::verification
+}  // namespace beamimpact::jobs

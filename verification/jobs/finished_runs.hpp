@@ -16,9 +16,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include <verification/matrix/execute_jobs.hpp>
+#include <verification/jobs/execute_jobs.hpp>
 
-namespace beamimpact::verification {
+namespace beamimpact::jobs {
 
 /// @brief What every result depends on: {"version": `beamimpact --version`, "program_sha256":
 /// the SHA-256 of the program's own bytes (program_id.hpp: the build, not only its version
@@ -57,4 +57,4 @@ std::optional<JobOutcome> recorded_run(const JobSpec& spec, const std::filesyste
 /// @brief How many of specs have a run recorded_run() takes, in runs_dir/KEY.
 std::size_t count_recorded(const std::vector<JobSpec>& specs, const std::filesystem::path& runs_dir);
 
-}  // namespace beamimpact::verification
+}  // namespace beamimpact::jobs

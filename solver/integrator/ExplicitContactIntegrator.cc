@@ -352,19 +352,22 @@ void ExplicitContactIntegrator::book_damper_contact_share() {
 }
 
 void ExplicitContactIntegrator::form_velocity() const {
-  if (fused_ && !cmass_) {  // M^-1 diagonal: V_i = Vbar_i + dt/2 (M^-1 f_c)_i, entry by entry on the team
-    const Eigen::VectorXd& inv = minv_.inverse_diagonal();
-    const double h = 0.5 * dt_;
-    run_ranges(team_.get(), static_cast<int>(V_.size()), [&](long long first, long long last) {
-      const long long n = last - first;
-      V_.segment(first, n) =
-          Vbar_.segment(first, n) + h * inv.segment(first, n).cwiseProduct(fc_.segment(first, n));
-    });
+  if (fused_ && !cmass_) {  // M^-1 diagonal: entry by entry on the team
+    run_ranges(team_.get(), static_cast<int>(V_.size()),
+               [&](long long first, long long last) { form_velocity_range(first, last); });
   } else {
     apply_Minv(fc_, vwork_);
     V_.noalias() = Vbar_ + (0.5 * dt_) * vwork_;
   }
   v_stale_ = false;
+}
+
+void ExplicitContactIntegrator::form_velocity_range(long long first, long long last) const {
+  // V_i = Vbar_i + dt/2 (M^-1 f_c)_i, as velocity_along() forms one entry.
+  const long long n = last - first;
+  V_.segment(first, n) =
+      Vbar_.segment(first, n) +
+      (0.5 * dt_) * minv_.inverse_diagonal().segment(first, n).cwiseProduct(fc_.segment(first, n));
 }
 
 void ExplicitContactIntegrator::gather_contact_force() {
@@ -375,8 +378,9 @@ void ExplicitContactIntegrator::gather_contact_force() {
   fc_dofs_.erase(std::unique(fc_dofs_.begin(), fc_dofs_.end()), fc_dofs_.end());
 }
 
-double ExplicitContactIntegrator::kinetic_terms(long long first, long long last) const {
-  const auto vs = V().segment(first, last - first);
+double ExplicitContactIntegrator::kinetic_terms(const Eigen::VectorXd& v, long long first,
+                                                long long last) const {
+  const auto vs = v.segment(first, last - first);
   return vs.dot(model_.lumped_mass().segment(first, last - first).cwiseProduct(vs));
 }
 
@@ -387,18 +391,19 @@ double ExplicitContactIntegrator::strain_terms(long long first, long long last) 
   return s;
 }
 
-double ExplicitContactIntegrator::momentum_terms(int b, int c, long long first, long long last) const {
+double ExplicitContactIntegrator::momentum_terms(const Eigen::VectorXd& v, int b, int c, long long first,
+                                                 long long last) const {
   const long long lo = std::max(first, momentum_support_[2 * b + c][0]);
   const long long hi = std::min(last, momentum_support_[2 * b + c][1]);
   if (hi <= lo) return 0.0;
-  return model_.momentum_covector(b, c).segment(lo, hi - lo).dot(V().segment(lo, hi - lo));
+  return model_.momentum_covector(b, c).segment(lo, hi - lo).dot(v.segment(lo, hi - lo));
 }
 
 double ExplicitContactIntegrator::kinetic_energy() const {
   const Eigen::VectorXd& v = V();
   if (!model_.lumped()) return 0.5 * v.dot(mass() * v);
   return 0.5 * ordered_sum(team_.get(), v.size(), sum_chunks_,
-                           [&](long long first, long long last) { return kinetic_terms(first, last); });
+                           [&](long long first, long long last) { return kinetic_terms(v, first, last); });
 }
 
 double ExplicitContactIntegrator::velocity_along(const std::vector<DofTerm>& row) const {
@@ -426,7 +431,7 @@ double ExplicitContactIntegrator::momentum(int b, int c) const {
   // The chunks of every sum over the equations (not of the support alone): row_sums() gives the
   // same bits.
   return ordered_sum(team_.get(), v.size(), sum_chunks_,
-                     [&](long long first, long long last) { return momentum_terms(b, c, first, last); });
+                     [&](long long first, long long last) { return momentum_terms(v, b, c, first, last); });
 }
 
 ExplicitContactIntegrator::RowSums ExplicitContactIntegrator::row_sums() const {
@@ -439,16 +444,21 @@ ExplicitContactIntegrator::RowSums ExplicitContactIntegrator::row_sums() const {
       for (int c = 0; c < 2; ++c) r.momentum[c] += momentum(b, c);
     return r;
   }
-  (void)V();  // formed before the pass (on the team), read by every chunk
+  // V^p, when a contact force acts and it is still to be formed, is formed chunk by chunk in the
+  // same pass: each chunk writes its entries, then sums them while they are in cache.
+  const bool form = solver_.any_force() && v_stale_;
+  const Eigen::VectorXd& v = solver_.any_force() ? V_ : Vbar_;
   const int width = 2 + 2 * bodies;
   row_totals_.resize(static_cast<std::size_t>(width));
   ordered_sums(team_.get(), U_.size(), width, sum_chunks_, row_totals_.data(),
                [&](long long first, long long last, double* out) {
-                 out[0] = kinetic_terms(first, last);
+                 if (form) form_velocity_range(first, last);
+                 out[0] = kinetic_terms(v, first, last);
                  out[1] = strain_terms(first, last);
                  for (int b = 0; b < bodies; ++b)
-                   for (int c = 0; c < 2; ++c) out[2 + 2 * b + c] = momentum_terms(b, c, first, last);
+                   for (int c = 0; c < 2; ++c) out[2 + 2 * b + c] = momentum_terms(v, b, c, first, last);
                });
+  if (form) v_stale_ = false;
   r.kinetic = 0.5 * row_totals_[0];
   r.strain = 0.5 * row_totals_[1];
   for (int b = 0; b < bodies; ++b)

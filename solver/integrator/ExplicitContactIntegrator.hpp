@@ -226,11 +226,15 @@ class ExplicitContactIntegrator {
   mutable bool v_stale_ = false;            ///< V_ is still to be formed from Vbar_ and fc_
   mutable std::vector<double> sum_chunks_;  ///< the energies' and momentum's chunk sums
   mutable std::vector<double> row_totals_;  ///< row_sums(): kinetic, strain, then 2 b + c
-  /// The chunk [first, last)'s terms of 2 kinetic energy (fused step: of 2 strain energy too).
-  double kinetic_terms(long long first, long long last) const;
+  /// The chunk [first, last)'s terms of 2 kinetic energy at velocity v (fused step: of 2 strain
+  /// energy too).
+  double kinetic_terms(const Eigen::VectorXd& v, long long first, long long last) const;
   double strain_terms(long long first, long long last) const;
-  /// The chunk [first, last)'s terms of momentum(b, c): its covector's support within the chunk.
-  double momentum_terms(int b, int c, long long first, long long last) const;
+  /// The chunk [first, last)'s terms of momentum(b, c) at velocity v: its covector's support
+  /// within the chunk.
+  double momentum_terms(const Eigen::VectorXd& v, int b, int c, long long first, long long last) const;
+  /// V^p on [first, last) of the fused step (M^-1 diagonal), entry by entry.
+  void form_velocity_range(long long first, long long last) const;
   std::vector<std::array<long long, 2>>
       momentum_support_;  ///< [lo, hi) of each covector's non-zeros, 2 b + c
 };

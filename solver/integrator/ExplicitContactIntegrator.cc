@@ -112,6 +112,8 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
   V_ = Vbar_;
   net_force(U_, fint_U_);
   fused_ = fused_step(model, damped_);
+  // Lumped and undamped, and no consistent mass that follows the rotation: dt^2 H is diagonal.
+  if (fused_ && !cmass_) solver_.set_diagonal_response(&minv_.inverse_diagonal(), dt_ * dt_);
   start_team(threads);
   // Each momentum covector's support: its dot product reads only the equations of its body.
   for (int b = 0; b < model.num_bodies(); ++b)

@@ -42,6 +42,17 @@ ContactSolver::ContactSolver(std::vector<ContactPair>& pairs, std::vector<double
   engaged_.reserve(pairs.size());
 }
 
+void ContactSolver::set_diagonal_response(const Eigen::VectorXd* inv, double dt2) {
+  h_inv_ = inv;
+  h_dt2_ = dt2;
+  hn_eqs_.assign(pairs_.size(), {});
+  ht_eqs_.assign(friction_ ? pairs_.size() : 0, {});
+  for (auto* eqs : {&hn_eqs_, &ht_eqs_})
+    for (std::vector<int>& e : *eqs) e.reserve(32);  // a row's equations: no allocation while stepping
+  scratch_.setZero();
+  std::fill(fresh_.begin(), fresh_.end(), 0);
+}
+
 void ContactSolver::refresh_response(int c) {
   if (fresh_[c]) return;
   auto column = [&](const std::vector<DofTerm>& row, Eigen::VectorXd& out) {
@@ -50,8 +61,26 @@ void ContactSolver::refresh_response(int c) {
     if (out.size() != scratch_.size()) out.setZero(scratch_.size());
     apply_H_(scratch_, out);
   };
-  column(pairs_[c].normal_row(), hn_[c]);
-  if (friction_) column(pairs_[c].tangent_row(), ht_[c]);
+  // Diagonal H: only the row's equations are non-zero; the column's earlier ones are cleared.
+  // Each entry is (inv_i f_i) dt^2 with f_i summed in row order, as apply_H forms it.
+  auto sparse_column = [&](const std::vector<DofTerm>& row, Eigen::VectorXd& out, std::vector<int>& eqs) {
+    if (out.size() != scratch_.size()) out.setZero(scratch_.size());
+    for (int i : eqs) out[i] = 0.0;
+    eqs.clear();
+    for (const DofTerm& t : row) {
+      scratch_(t.eq) += t.coeff;
+      eqs.push_back(t.eq);
+    }
+    for (int i : eqs) out[i] = ((*h_inv_)[i] * scratch_(i)) * h_dt2_;
+    for (int i : eqs) scratch_(i) = 0.0;  // scratch_ stays zero between columns
+  };
+  if (h_inv_) {
+    sparse_column(pairs_[c].normal_row(), hn_[c], hn_eqs_[c]);
+    if (friction_) sparse_column(pairs_[c].tangent_row(), ht_[c], ht_eqs_[c]);
+  } else {
+    column(pairs_[c].normal_row(), hn_[c]);
+    if (friction_) column(pairs_[c].tangent_row(), ht_[c]);
+  }
   fresh_[c] = 1;
 }
 

@@ -44,6 +44,13 @@ class ContactSolver {
   ContactSolver(std::vector<ContactPair>& pairs, std::vector<double> mu, bool friction, int n,
                 std::vector<double> gap_tol, ApplyH apply_H);
 
+  /// @brief Declares dt^2 H diagonal (a lumped, undamped model): (dt^2 H f)_i = (inv_i f_i) dt2.
+  /// A response column is then formed on its row's equations alone, O(row) instead of O(n) (a
+  /// sliding contact re-forms its columns every step), with apply_H's bits. Call before the
+  /// first solve; `inv` must outlive the solver.
+  /// @param inv the diagonal of M^-1; @param dt2 dt * dt (s^2)
+  void set_diagonal_response(const Eigen::VectorXd* inv, double dt2);
+
   /// @brief Solves for Ubar (predicted U^{p+1}) and U (current U^p). Re-locates sliding points.
   /// @param Ubar the contact-free prediction of U^{p+1}
   /// @param U the displacement U^p
@@ -101,8 +108,11 @@ class ContactSolver {
   std::vector<double> tol_;
   ApplyH apply_H_;
   std::vector<ContactForce> out_;
-  std::vector<Eigen::VectorXd> hn_, ht_;  ///< dt^2 H G_n, dt^2 H G_t per contact
-  std::vector<char> fresh_;               ///< response columns match the current rows
+  std::vector<Eigen::VectorXd> hn_, ht_;           ///< dt^2 H G_n, dt^2 H G_t per contact
+  std::vector<char> fresh_;                        ///< response columns match the current rows
+  const Eigen::VectorXd* h_inv_ = nullptr;         ///< set_diagonal_response: M^-1's diagonal, else null
+  double h_dt2_ = 0.0;                             ///< s^2, dt * dt of set_diagonal_response
+  std::vector<std::vector<int>> hn_eqs_, ht_eqs_;  ///< diagonal H: the equations each column holds
   Eigen::VectorXd scratch_;
   std::vector<double> gbar_, sbar_;  ///< predicted violations per contact (sized once)
   std::vector<char> active_;

@@ -112,6 +112,8 @@ ExplicitContactIntegrator::ExplicitContactIntegrator(const Model& model, const S
   V_ = Vbar_;
   net_force(U_, fint_U_);
   fused_ = fused_step(model, damped_);
+  // Lumped and undamped, and no consistent mass that follows the rotation: dt^2 H is diagonal.
+  if (fused_ && !cmass_) solver_.set_diagonal_response(&minv_.inverse_diagonal(), dt_ * dt_);
   start_team(threads);
   // Each momentum covector's support: its dot product reads only the equations of its body.
   for (int b = 0; b < model.num_bodies(); ++b)
@@ -352,9 +354,22 @@ void ExplicitContactIntegrator::book_damper_contact_share() {
 }
 
 void ExplicitContactIntegrator::form_velocity() const {
-  apply_Minv(fc_, vwork_);
-  V_.noalias() = Vbar_ + (0.5 * dt_) * vwork_;
+  if (fused_ && !cmass_) {  // M^-1 diagonal: entry by entry on the team
+    run_ranges(team_.get(), static_cast<int>(V_.size()),
+               [&](long long first, long long last) { form_velocity_range(first, last); });
+  } else {
+    apply_Minv(fc_, vwork_);
+    V_.noalias() = Vbar_ + (0.5 * dt_) * vwork_;
+  }
   v_stale_ = false;
+}
+
+void ExplicitContactIntegrator::form_velocity_range(long long first, long long last) const {
+  // V_i = Vbar_i + dt/2 (M^-1 f_c)_i, as velocity_along() forms one entry.
+  const long long n = last - first;
+  V_.segment(first, n) =
+      Vbar_.segment(first, n) +
+      (0.5 * dt_) * minv_.inverse_diagonal().segment(first, n).cwiseProduct(fc_.segment(first, n));
 }
 
 void ExplicitContactIntegrator::gather_contact_force() {
@@ -365,14 +380,32 @@ void ExplicitContactIntegrator::gather_contact_force() {
   fc_dofs_.erase(std::unique(fc_dofs_.begin(), fc_dofs_.end()), fc_dofs_.end());
 }
 
+double ExplicitContactIntegrator::kinetic_terms(const Eigen::VectorXd& v, long long first,
+                                                long long last) const {
+  const auto vs = v.segment(first, last - first);
+  return vs.dot(model_.lumped_mass().segment(first, last - first).cwiseProduct(vs));
+}
+
+double ExplicitContactIntegrator::strain_terms(long long first, long long last) const {
+  const auto u = U_.segment(first, last - first);
+  double s = u.dot(fint_U_.segment(first, last - first));
+  if (load_.size()) s += u.dot(load_.segment(first, last - first));
+  return s;
+}
+
+double ExplicitContactIntegrator::momentum_terms(const Eigen::VectorXd& v, int b, int c, long long first,
+                                                 long long last) const {
+  const long long lo = std::max(first, momentum_support_[2 * b + c][0]);
+  const long long hi = std::min(last, momentum_support_[2 * b + c][1]);
+  if (hi <= lo) return 0.0;
+  return model_.momentum_covector(b, c).segment(lo, hi - lo).dot(v.segment(lo, hi - lo));
+}
+
 double ExplicitContactIntegrator::kinetic_energy() const {
   const Eigen::VectorXd& v = V();
   if (!model_.lumped()) return 0.5 * v.dot(mass() * v);
-  const Eigen::VectorXd& m = model_.lumped_mass();
-  return 0.5 * ordered_sum(team_.get(), v.size(), sum_chunks_, [&](long long first, long long last) {
-           const auto vs = v.segment(first, last - first);
-           return vs.dot(m.segment(first, last - first).cwiseProduct(vs));
-         });
+  return 0.5 * ordered_sum(team_.get(), v.size(), sum_chunks_,
+                           [&](long long first, long long last) { return kinetic_terms(v, first, last); });
 }
 
 double ExplicitContactIntegrator::velocity_along(const std::vector<DofTerm>& row) const {
@@ -390,23 +423,49 @@ double ExplicitContactIntegrator::strain_energy() const {
   if (!fused_ || fint_.nonlinear()) return fint_.strain_energy(U_);
   // Linear elements: the step has formed f_int(U^p) - F^P already (fint_U_), so 1/2 U^T K U is a
   // dot product with it, not a second product with K.
-  const Eigen::VectorXd& U = U_;
-  return 0.5 * ordered_sum(team_.get(), U.size(), sum_chunks_, [&](long long first, long long last) {
-           const auto u = U.segment(first, last - first);
-           double s = u.dot(fint_U_.segment(first, last - first));
-           if (load_.size()) s += u.dot(load_.segment(first, last - first));
-           return s;
-         });
+  return 0.5 * ordered_sum(team_.get(), U_.size(), sum_chunks_,
+                           [&](long long first, long long last) { return strain_terms(first, last); });
 }
 
 double ExplicitContactIntegrator::momentum(int b, int c) const {
   const Eigen::VectorXd& v = V();
   if (cmass_) return cmass_->momentum(b, c, v);
-  const Eigen::VectorXd& p = model_.momentum_covector(b, c);
-  const long long lo = momentum_support_[2 * b + c][0], hi = momentum_support_[2 * b + c][1];
-  return ordered_sum(team_.get(), hi - lo, sum_chunks_, [&](long long first, long long last) {
-    return p.segment(lo + first, last - first).dot(v.segment(lo + first, last - first));
-  });
+  // The chunks of every sum over the equations (not of the support alone): row_sums() gives the
+  // same bits.
+  return ordered_sum(team_.get(), v.size(), sum_chunks_,
+                     [&](long long first, long long last) { return momentum_terms(v, b, c, first, last); });
+}
+
+ExplicitContactIntegrator::RowSums ExplicitContactIntegrator::row_sums() const {
+  RowSums r;
+  const int bodies = model_.num_bodies();
+  if (!fused_ || cmass_ || fint_.nonlinear()) {
+    r.kinetic = kinetic_energy();
+    r.strain = strain_energy();
+    for (int b = 0; b < bodies; ++b)
+      for (int c = 0; c < 2; ++c) r.momentum[c] += momentum(b, c);
+    return r;
+  }
+  // V^p, when a contact force acts and it is still to be formed, is formed chunk by chunk in the
+  // same pass: each chunk writes its entries, then sums them while they are in cache.
+  const bool form = solver_.any_force() && v_stale_;
+  const Eigen::VectorXd& v = solver_.any_force() ? V_ : Vbar_;
+  const int width = 2 + 2 * bodies;
+  row_totals_.resize(static_cast<std::size_t>(width));
+  ordered_sums(team_.get(), U_.size(), width, sum_chunks_, row_totals_.data(),
+               [&](long long first, long long last, double* out) {
+                 if (form) form_velocity_range(first, last);
+                 out[0] = kinetic_terms(v, first, last);
+                 out[1] = strain_terms(first, last);
+                 for (int b = 0; b < bodies; ++b)
+                   for (int c = 0; c < 2; ++c) out[2 + 2 * b + c] = momentum_terms(v, b, c, first, last);
+               });
+  if (form) v_stale_ = false;
+  r.kinetic = 0.5 * row_totals_[0];
+  r.strain = 0.5 * row_totals_[1];
+  for (int b = 0; b < bodies; ++b)
+    for (int c = 0; c < 2; ++c) r.momentum[c] += row_totals_[2 + 2 * b + c];
+  return r;
 }
 
 }  // namespace beamimpact::paper

@@ -133,6 +133,16 @@ class ExplicitContactIntegrator {
   double contact_energy() const { return hertz_energy_; }
   /// @brief Linear momentum of body b along global axis c (0 = x, 1 = y) at step p (N s).
   double momentum(int b, int c) const;
+  /// @brief What an output row sums over the equations at step p.
+  struct RowSums {
+    double kinetic = 0.0;  ///< J, as kinetic_energy()
+    double strain = 0.0;   ///< J, as strain_energy()
+    Vec2 momentum{0, 0};   ///< N s, the sum over the bodies, in body order, of momentum(b, c)
+  };
+  /// @brief kinetic_energy(), strain_energy() and every body's momentum(b, c) with their bits, in
+  /// one pass over the equations shared by the step's threads (one hand-over, not one per sum)
+  /// on the fused step with linear elements; otherwise the separate sums.
+  RowSums row_sums() const;
   /// @brief The current mass: the model's, or M_A(t) when a rotating body has consistent mass.
   const SparseMatrix& mass() const { return cmass_ ? cmass_->M() : model_.M(); }
   /// @brief Cumulative energy removed by contact forces (closures, friction) and damping (J).
@@ -215,6 +225,16 @@ class ExplicitContactIntegrator {
   std::string threads_note_;
   mutable bool v_stale_ = false;            ///< V_ is still to be formed from Vbar_ and fc_
   mutable std::vector<double> sum_chunks_;  ///< the energies' and momentum's chunk sums
+  mutable std::vector<double> row_totals_;  ///< row_sums(): kinetic, strain, then 2 b + c
+  /// The chunk [first, last)'s terms of 2 kinetic energy at velocity v (fused step: of 2 strain
+  /// energy too).
+  double kinetic_terms(const Eigen::VectorXd& v, long long first, long long last) const;
+  double strain_terms(long long first, long long last) const;
+  /// The chunk [first, last)'s terms of momentum(b, c) at velocity v: its covector's support
+  /// within the chunk.
+  double momentum_terms(const Eigen::VectorXd& v, int b, int c, long long first, long long last) const;
+  /// V^p on [first, last) of the fused step (M^-1 diagonal), entry by entry.
+  void form_velocity_range(long long first, long long last) const;
   std::vector<std::array<long long, 2>>
       momentum_support_;  ///< [lo, hi) of each covector's non-zeros, 2 b + c
 };

@@ -325,6 +325,19 @@ TEST(Threads, OutputRowSumsGiveTheBitsOfOneThreadAndTheirDefinitions) {
   for (int p = 1; p <= 60; ++p) {
     for (ExplicitContactIntegrator* in : {&one, &two, &three}) in->step();
     contact += one.forces()[0].R > 0.0;
+    // An output row's one pass (V^p formed on the team, as after a step in contact), before the
+    // separate sums: the bits of each separate sum on one thread.
+    std::vector<ExplicitContactIntegrator::RowSums> rows;
+    for (const ExplicitContactIntegrator* in : {&one, &two, &three}) rows.push_back(in->row_sums());
+    Vec2 momentum{0.0, 0.0};
+    for (int b = 0; b < 2; ++b)
+      for (int c = 0; c < 2; ++c) momentum[c] += one.momentum(b, c);
+    for (const auto& r : rows) {
+      ASSERT_EQ(r.kinetic, one.kinetic_energy()) << "step " << p;
+      ASSERT_EQ(r.strain, one.strain_energy()) << "step " << p;
+      ASSERT_EQ(r.momentum[0], momentum[0]) << "step " << p;
+      ASSERT_EQ(r.momentum[1], momentum[1]) << "step " << p;
+    }
     for (const ExplicitContactIntegrator* in : {&two, &three}) {
       ASSERT_EQ(in->kinetic_energy(), one.kinetic_energy()) << "step " << p;
       ASSERT_EQ(in->strain_energy(), one.strain_energy()) << "step " << p;

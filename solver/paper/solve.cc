@@ -134,12 +134,12 @@ HistoryRow make_row(const ExplicitContactIntegrator& in) {
     s.vb = pair.target_vector(in.V());
     row.contacts.push_back(s);
   }
-  row.kinetic = in.kinetic_energy();
-  row.strain = in.strain_energy() + in.contact_energy();  // the Hertz springs' energy is strain too
+  const ExplicitContactIntegrator::RowSums sums = in.row_sums();  // one pass on the step's threads
+  row.kinetic = sums.kinetic;
+  row.strain = sums.strain + in.contact_energy();  // the Hertz springs' energy is strain too
   row.dissipated = in.dissipated();
   row.load_work = in.load_work();
-  for (int b = 0; b < m.num_bodies(); ++b)
-    for (int c = 0; c < 2; ++c) row.momentum[c] += in.momentum(b, c);
+  row.momentum = sums.momentum;
   return row;
 }
 

@@ -110,4 +110,39 @@ double ordered_sum(ThreadTeam* team, long long n, std::vector<double>& partial, 
   return total;
 }
 
+/// @brief `width` ordered sums in one pass over [0, n): sums(first, last, out) writes each
+/// quantity's sum over the chunk [first, last) to out[0 .. width); quantity j's total is its
+/// chunks' sums added in chunk order, the same chunks as ordered_sum(), so its bits are those of
+/// ordered_sum() of that quantity alone, at any thread count. One hand-over to the team and one
+/// pass over memory instead of `width`.
+/// @param team the threads, or null
+/// @param n the length of the range
+/// @param width the number of quantities (>= 1)
+/// @param partial scratch for the chunks' sums (resized; no allocation once it has that size)
+/// @param total the totals, `width` of them (written)
+/// @param sums callable (long long first, long long last, double* out); must not throw
+template <class Sums>
+void ordered_sums(ThreadTeam* team, long long n, int width, std::vector<double>& partial, double* total,
+                  const Sums& sums) {
+  const long long chunks = (n + kSumChunk - 1) / kSumChunk;
+  partial.resize(static_cast<std::size_t>(chunks * width));
+  auto chunk = [&](long long k) {
+    sums(k * kSumChunk, std::min(n, (k + 1) * kSumChunk), &partial[k * width]);
+  };
+  if (!team || chunks < 2) {
+    for (long long k = 0; k < chunks; ++k) chunk(k);
+  } else {
+    const int parts = team->size();
+    auto part = [&](int t) {
+      for (long long k = t; k < chunks; k += parts) chunk(k);
+    };
+    team->run(part);
+  }
+  for (int j = 0; j < width; ++j) {
+    double s = 0.0;
+    for (long long k = 0; k < chunks; ++k) s += partial[k * width + j];
+    total[j] = s;
+  }
+}
+
 }  // namespace beamimpact

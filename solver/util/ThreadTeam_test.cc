@@ -157,5 +157,37 @@ TEST(ThreadTeam, OrderedSumHasTheSameBitsOnEveryTeam) {
   }
 }
 
+// Three sums in one pass (an output row's kinetic energy, strain energy and momentum) give each
+// the bits of its own ordered_sum, on every team: one pass changes the hand-overs, not the numbers.
+TEST(ThreadTeam, OrderedSumsGiveEachSumTheBitsOfItsOwnOrderedSum) {
+  std::vector<double> x(4 * kSumChunk + 5);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    x[i] = std::cos(0.11 * static_cast<double>(i)) + 1e-4 * static_cast<double>(i);
+  const auto term = [&](int j, long long i) {
+    return j == 0 ? x[i] : j == 1 ? x[i] * x[i] : (i % 7 == 0 ? -x[i] : 0.0);
+  };
+  ThreadTeam two(2), three(3);
+  std::vector<double> scratch;
+  const long long n = static_cast<long long>(x.size());
+  for (ThreadTeam* team : {static_cast<ThreadTeam*>(nullptr), &two, &three}) {
+    double total[3] = {0.0, 0.0, 0.0};
+    ordered_sums(team, n, 3, scratch, total, [&](long long first, long long last, double* out) {
+      for (int j = 0; j < 3; ++j) {
+        double s = 0.0;
+        for (long long i = first; i < last; ++i) s += term(j, i);
+        out[j] = s;
+      }
+    });
+    for (int j = 0; j < 3; ++j) {
+      const double alone = ordered_sum(nullptr, n, scratch, [&](long long first, long long last) {
+        double s = 0.0;
+        for (long long i = first; i < last; ++i) s += term(j, i);
+        return s;
+      });
+      EXPECT_EQ(total[j], alone) << "sum " << j << " on " << (team ? team->size() : 1) << " thread(s)";
+    }
+  }
+}
+
 }  // namespace
 }  // namespace beamimpact

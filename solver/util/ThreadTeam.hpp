@@ -92,23 +92,7 @@ inline constexpr long long kSumChunk = 8192;
 ///        it has that size)
 /// @param sum callable (long long first, long long last) -> double; must not throw
 template <class Sum>
-double ordered_sum(ThreadTeam* team, long long n, std::vector<double>& partial, const Sum& sum) {
-  const long long chunks = (n + kSumChunk - 1) / kSumChunk;
-  partial.resize(static_cast<std::size_t>(chunks));
-  auto chunk = [&](long long k) { partial[k] = sum(k * kSumChunk, std::min(n, (k + 1) * kSumChunk)); };
-  if (!team || chunks < 2) {
-    for (long long k = 0; k < chunks; ++k) chunk(k);
-  } else {
-    const int parts = team->size();
-    auto part = [&](int t) {
-      for (long long k = t; k < chunks; k += parts) chunk(k);
-    };
-    team->run(part);
-  }
-  double total = 0.0;
-  for (long long k = 0; k < chunks; ++k) total += partial[k];
-  return total;
-}
+double ordered_sum(ThreadTeam* team, long long n, std::vector<double>& partial, const Sum& sum);
 
 /// @brief `width` ordered sums in one pass over [0, n): sums(first, last, out) writes each
 /// quantity's sum over the chunk [first, last) to out[0 .. width); quantity j's total is its
@@ -143,6 +127,14 @@ void ordered_sums(ThreadTeam* team, long long n, int width, std::vector<double>&
     for (long long k = 0; k < chunks; ++k) s += partial[k * width + j];
     total[j] = s;
   }
+}
+
+template <class Sum>
+double ordered_sum(ThreadTeam* team, long long n, std::vector<double>& partial, const Sum& sum) {
+  double total = 0.0;
+  ordered_sums(team, n, 1, partial, &total,
+               [&](long long first, long long last, double* out) { *out = sum(first, last); });
+  return total;
 }
 
 }  // namespace beamimpact

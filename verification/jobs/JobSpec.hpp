@@ -5,7 +5,6 @@
 /// where isolation is asked for.
 
 #include <filesystem>
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>
